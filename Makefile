@@ -1,0 +1,53 @@
+# Top-level entry points. Everything is built by CMake into $(BUILD); this file
+# only wraps it so that a new user needs two commands: `make sim` and `make test`.
+
+BUILD  ?= build
+JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
+PYTHON ?= /usr/bin/python3
+CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
+
+.PHONY: all deps configure build test sim roms vcd report lint clean help
+
+all: build
+
+help:
+	@echo "make sim     build everything, run the RTL regression (both coefficient policies)"
+	@echo "make test    build everything, run every test with ctest (what CI runs)"
+	@echo "make roms    regenerate the ROM hex files in roms/ from the model"
+	@echo "make vcd     write VCD timing diagrams to $(BUILD)/vcd and draw the 4-pixel one"
+	@echo "make report  measure and write $(BUILD)/report/report.md"
+	@echo "make lint    verilator -Wall lint and Yosys synthesis of rtl/"
+	@echo "make clean   remove $(BUILD)"
+
+# Installs missing Debian packages (no-op when all are present).
+deps:
+	@bash scripts/install-deps.sh
+
+configure: deps
+	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) > /dev/null
+
+build: configure
+	@cmake --build $(BUILD) -j $(JOBS)
+
+test: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+
+sim: build
+	./$(BUILD)/bin/sim_regression
+
+roms: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target romgen
+	./$(BUILD)/bin/romgen --out-dir roms
+
+vcd: build
+	./$(BUILD)/bin/sim_regression --vcd-dir $(BUILD)/vcd --vcd-only
+	$(PYTHON) scripts/plot_vcd.py $(BUILD)/vcd/line_l3.vcd $(BUILD)/vcd/line_l3.svg
+
+report: build
+	$(PYTHON) scripts/make_report.py --build $(BUILD) --out $(BUILD)/report
+
+lint: build
+	cd $(BUILD) && ctest --output-on-failure -R '^rtl_(lint|yosys)'
+
+clean:
+	rm -rf $(BUILD)
