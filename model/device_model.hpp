@@ -54,4 +54,56 @@ struct Registers {
   uint32_t len = 0;    // counter 5: the line has len + 1 pixels
 };
 
+// ---- Host-side quantizers (the only place doubles meet the device formats) ----
+// Round to nearest (ties away from zero). `saturated`, when given, is set to true if the
+// value was clamped (C: negative or >= 2 - 2^-c_frac, angle: outside the signed range)
+// or was NaN (mapped to 0), and to false otherwise.
+uint32_t quantize_c(double c, const Format& f, bool* saturated = nullptr);
+int64_t quantize_angle(double rad, const Format& f, bool* saturated = nullptr);
+// Exact conversions back (every code is exactly representable in a double).
+double c_value(uint32_t code, const Format& f);
+double angle_value(int64_t code, const Format& f);
+// The coefficient a(n) (radians per radian) that ROM 9 word `code` = a * 2/pi * 2^coef_frac
+// stands for.
+double coef_value(uint32_t code, const Format& f);
+
+// Everything multiplier 11 .. multiplier 13 compute for one pixel, for debugging and
+// for the quantization analysis. Fields after the one that zeroed the pixel keep 0.
+struct PixelTrace {
+  int64_t psi = 0;          // reg 8: psi0 + i*dpsi, acc_bits two's complement, angle_frac bits
+  bool far = false;         // |psi| >= 8 rad: pixel 0 without using the multiplier
+  uint64_t abs_psi_t = 0;   // |psi| truncated to 3 integer + psi_mul_frac fraction bits
+  int bank = -1;            // decoder 10; -1: n = 0 or n > max_n (pixel 0)
+  uint32_t coef = 0;        // ROM 9 word at address n
+  uint64_t zeta = 0;        // coef * |psi|_t, coef_frac + psi_mul_frac fraction bits, quarter turns
+  uint64_t addr = 0;        // round-half-up(zeta * 2^cos_addr_bits), before the overflow test
+  bool overflow = false;    // addr >= 2^cos_addr_bits (a|psi| >= pi/2): pixel 0
+  uint32_t cosk = 0;        // ROM 12 word
+  uint32_t intensity = 0;   // multiplier 13 output
+};
+
+// The datapath of the header comment, integer arithmetic only.
+class DeviceModel {
+ public:
+  // coef_rom: coef_rom_depth() words of coef_bits; cos_rom: cos_rom_depth() words of
+  // cos_data_bits. Throws std::invalid_argument on a size, width or format mismatch.
+  DeviceModel(Format f, std::vector<uint32_t> coef_rom, std::vector<uint32_t> cos_rom);
+
+  const Format& format() const { return f_; }
+  // Decoder 10: bank index for n, -1 when n = 0 or n > max_n.
+  int bank_of(uint32_t n) const;
+  uint32_t pixel(const Registers& r, int i) const { return trace(r, i).intensity; }
+  PixelTrace trace(const Registers& r, int i) const;
+  // The l + 1 = len + 1 intensities of one line in pixel order.
+  std::vector<uint32_t> line(const Registers& r) const;
+
+  // Registers as the device latches them: each field cut to its register width
+  // (unsigned fields masked, angles sign-extended from angle_bits).
+  Registers latch(const Registers& r) const;
+
+ private:
+  Format f_;
+  std::vector<uint32_t> coef_rom_, cos_rom_;
+};
+
 }  // namespace specular::device

@@ -1,0 +1,145 @@
+// Bit-accurate golden model of the device datapath; the contract is the header comment
+// of device_model.hpp. Integer arithmetic only between the registers and the output.
+#include "device_model.hpp"
+
+#include <cmath>
+#include <numbers>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+namespace specular::device {
+namespace {
+
+int64_t sign_extend(int64_t v, int bits) {
+  const uint64_t mask = (bits >= 64) ? ~0ULL : ((1ULL << bits) - 1);
+  uint64_t u = static_cast<uint64_t>(v) & mask;
+  if (bits < 64 && (u >> (bits - 1)) & 1U) u |= ~mask;
+  return static_cast<int64_t>(u);
+}
+
+void require(bool ok, const std::string& what) {
+  if (!ok) throw std::invalid_argument("device::Format/ROM: " + what);
+}
+
+}  // namespace
+
+uint32_t quantize_c(double c, const Format& f, bool* saturated) {
+  const double top = std::ldexp(1.0, f.c_bits) - 1.0;
+  bool sat = false;
+  double q = 0.0;
+  if (std::isnan(c)) {
+    sat = true;
+  } else {
+    q = std::round(std::ldexp(c, f.c_frac));
+    if (q < 0.0) { q = 0.0; sat = true; }
+    if (q > top) { q = top; sat = true; }
+  }
+  if (saturated) *saturated = sat;
+  return static_cast<uint32_t>(q);
+}
+
+int64_t quantize_angle(double rad, const Format& f, bool* saturated) {
+  const double hi = std::ldexp(1.0, f.angle_bits - 1) - 1.0;
+  const double lo = -std::ldexp(1.0, f.angle_bits - 1);
+  bool sat = false;
+  double q = 0.0;
+  if (std::isnan(rad)) {
+    sat = true;
+  } else {
+    q = std::round(std::ldexp(rad, f.angle_frac));
+    if (q < lo) { q = lo; sat = true; }
+    if (q > hi) { q = hi; sat = true; }
+  }
+  if (saturated) *saturated = sat;
+  return static_cast<int64_t>(q);
+}
+
+double c_value(uint32_t code, const Format& f) { return std::ldexp(static_cast<double>(code), -f.c_frac); }
+double angle_value(int64_t code, const Format& f) { return std::ldexp(static_cast<double>(code), -f.angle_frac); }
+double coef_value(uint32_t code, const Format& f) {
+  return std::ldexp(static_cast<double>(code), -f.coef_frac) * (std::numbers::pi / 2.0);
+}
+
+DeviceModel::DeviceModel(Format f, std::vector<uint32_t> coef_rom, std::vector<uint32_t> cos_rom)
+    : f_(std::move(f)), coef_rom_(std::move(coef_rom)), cos_rom_(std::move(cos_rom)) {
+  // Widths for which the 64-bit products below cannot overflow.
+  require(f_.c_bits >= 1 && f_.c_bits <= 31 && f_.c_frac >= 0 && f_.c_frac <= f_.c_bits, "c_bits/c_frac");
+  require(f_.angle_bits >= 4 && f_.angle_bits <= 48 && f_.angle_frac >= 3 && f_.angle_frac <= f_.angle_bits - 1,
+          "angle_bits/angle_frac");
+  require(f_.acc_bits >= f_.angle_bits && f_.acc_bits <= 62, "acc_bits");
+  require(f_.n_bits >= 1 && f_.n_bits <= 16 && (1 << f_.n_bits) > f_.max_n(), "n_bits must hold max_n");
+  require(f_.len_bits >= 1 && f_.len_bits <= 24, "len_bits");
+  require(f_.coef_bits >= 4 && f_.coef_bits <= 31 && f_.coef_frac >= 3 && f_.coef_frac <= f_.coef_bits,
+          "coef_bits/coef_frac");
+  require(f_.psi_mul_frac >= 0 && f_.psi_mul_frac <= 40 && f_.coef_bits + 3 + f_.psi_mul_frac <= 63,
+          "psi_mul_frac (product must fit 63 bits)");
+  require(f_.cos_addr_bits >= 1 && f_.cos_addr_bits < f_.coef_frac + f_.psi_mul_frac, "cos_addr_bits");
+  require(f_.cos_data_bits >= 1 && f_.cos_data_bits <= 31 && f_.c_bits + f_.cos_data_bits <= 63, "cos_data_bits");
+  require(!f_.banks.empty() && f_.banks.size() == f_.bank_max_n.size(), "banks/bank_max_n sizes");
+  for (size_t j = 0; j < f_.banks.size(); ++j) {
+    require(f_.banks[j] >= 1, "bank k must be >= 1");
+    require(f_.bank_max_n[j] >= 1 && (j == 0 || f_.bank_max_n[j] > f_.bank_max_n[j - 1]),
+            "bank_max_n must increase");
+  }
+  require(f_.bank_max_n.back() == f_.max_n(), "last bank must end at max_n");
+  require(static_cast<int>(coef_rom_.size()) == f_.coef_rom_depth(),
+          "coefficient ROM has " + std::to_string(coef_rom_.size()) + " words, expected " +
+              std::to_string(f_.coef_rom_depth()));
+  require(static_cast<int>(cos_rom_.size()) == f_.cos_rom_depth(),
+          "cos^k ROM has " + std::to_string(cos_rom_.size()) + " words, expected " +
+              std::to_string(f_.cos_rom_depth()));
+  for (uint32_t w : coef_rom_) require((static_cast<uint64_t>(w) >> f_.coef_bits) == 0, "coefficient word too wide");
+  for (uint32_t w : cos_rom_) require((static_cast<uint64_t>(w) >> f_.cos_data_bits) == 0, "cos^k word too wide");
+}
+
+int DeviceModel::bank_of(uint32_t n) const {
+  if (n == 0 || n > static_cast<uint32_t>(f_.max_n())) return -1;
+  for (size_t j = 0; j < f_.bank_max_n.size(); ++j)
+    if (n <= static_cast<uint32_t>(f_.bank_max_n[j])) return static_cast<int>(j);
+  return -1;
+}
+
+Registers DeviceModel::latch(const Registers& r) const {
+  Registers q;
+  q.c = r.c & static_cast<uint32_t>((1ULL << f_.c_bits) - 1);
+  q.dpsi = sign_extend(r.dpsi, f_.angle_bits);
+  q.psi0 = sign_extend(r.psi0, f_.angle_bits);
+  q.n = r.n & static_cast<uint32_t>((1ULL << f_.n_bits) - 1);
+  q.len = r.len & static_cast<uint32_t>((1ULL << f_.len_bits) - 1);
+  return q;
+}
+
+PixelTrace DeviceModel::trace(const Registers& raw, int i) const {
+  const Registers r = latch(raw);
+  PixelTrace t;
+  // Reg 8 after i additions of reg 2 (adder 6), wrapping at acc_bits like the hardware.
+  t.psi = sign_extend(r.psi0 + static_cast<int64_t>(i) * r.dpsi, f_.acc_bits);
+  const uint64_t mag = t.psi < 0 ? static_cast<uint64_t>(-t.psi) : static_cast<uint64_t>(t.psi);
+  // |psi| >= 8 rad is always past pi/2 / a because a >= pi/16 (romgen enforces coef >= 1/8).
+  t.far = (mag >> (f_.angle_frac + 3)) != 0;
+  t.bank = bank_of(r.n);
+  if (t.far || t.bank < 0) return t;
+  t.abs_psi_t = f_.psi_mul_frac <= f_.angle_frac ? mag >> (f_.angle_frac - f_.psi_mul_frac)
+                                                  : mag << (f_.psi_mul_frac - f_.angle_frac);
+  t.coef = coef_rom_[r.n];
+  t.zeta = static_cast<uint64_t>(t.coef) * t.abs_psi_t;  // multiplier 11
+  const int drop = f_.coef_frac + f_.psi_mul_frac - f_.cos_addr_bits;
+  t.addr = (t.zeta + (1ULL << (drop - 1))) >> drop;  // round half up
+  t.overflow = (t.addr >> f_.cos_addr_bits) != 0;
+  if (t.overflow) return t;
+  t.cosk = cos_rom_[(static_cast<size_t>(t.bank) << f_.cos_addr_bits) + t.addr];
+  // Multiplier 13, round half up back to the format of C.
+  const uint64_t p = static_cast<uint64_t>(r.c) * t.cosk;
+  t.intensity = static_cast<uint32_t>((p + (1ULL << (f_.cos_data_bits - 1))) >> f_.cos_data_bits);
+  return t;
+}
+
+std::vector<uint32_t> DeviceModel::line(const Registers& raw) const {
+  const Registers r = latch(raw);
+  std::vector<uint32_t> out(static_cast<size_t>(r.len) + 1);
+  for (uint32_t i = 0; i <= r.len; ++i) out[i] = trace(r, static_cast<int>(i)).intensity;
+  return out;
+}
+
+}  // namespace specular::device

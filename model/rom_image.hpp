@@ -1,0 +1,52 @@
+// ROM images of the device (SPEC section 5): ROM 9 (coefficients a(n), addressed by n)
+// and ROM 12 (cos^k, one bank per k), built from the golden-model formats in
+// device_model.hpp so that the generator, the RTL and the testbench share one definition.
+//
+// Hex file format (what $readmemh in rtl/ reads): one word per line, lowercase hex,
+// zero-padded to ceil(bits/4) digits, no comments, no @addresses, '\n' line ends,
+// exactly `depth` lines. Address 0 is the first line.
+//   ROM 9  word n (0 <= n < 2^n_bits): round(a(n) * 2/pi * 2^coef_frac), a(n) from the
+//          coefficient policy for k = bank k of n; 0 where n = 0 or n > max_n (unused:
+//          decoder 10 forces those pixels to 0).
+//   ROM 12 word bank * 2^cos_addr_bits + addr:
+//          min(round(cos^k(addr * pi/2 / 2^cos_addr_bits) * 2^cos_data_bits), 2^cos_data_bits - 1)
+#pragma once
+
+#include "coefficients.hpp"
+#include "device_model.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace specular {
+
+// Default file names (relative to the repository root), used by rtl/ defaults, romgen and sim/.
+inline constexpr const char* kCoefMaclaurinHex = "roms/coef_maclaurin.hex";
+inline constexpr const char* kCoefMinimaxHex = "roms/coef_minimax.hex";
+inline constexpr const char* kCosHex = "roms/cos_k_1_2_4_16.hex";
+
+// "cos_k_1_2_4_16.hex" for the bank set of `f`.
+std::string cos_rom_file_name(const device::Format& f);
+
+// ROM 9 word for coefficient a: round(a * 2/pi * 2^coef_frac). Throws std::invalid_argument
+// when a*2/pi is not in [1/8, 2^(coef_bits - coef_frac)): below 1/8 the device's
+// "|psi| >= 8 rad -> 0" shortcut would be wrong, above it the word does not fit.
+uint32_t coef_word(double a, const device::Format& f);
+
+// Throws std::invalid_argument (naming n and k) when a policy gives an unusable coefficient.
+std::vector<uint32_t> coef_rom_image(const device::Format& f, const CoefSpec& spec);
+std::vector<uint32_t> cos_rom_image(const device::Format& f);
+
+// Writes to a temporary file next to `path` and renames it, so a failure never leaves a
+// half-written ROM. Throws std::runtime_error on I/O errors or a word wider than `bits`.
+void write_hex(const std::string& path, const std::vector<uint32_t>& image, int bits);
+// Throws std::runtime_error naming the file and line on bad content (not hex, too many
+// digits, word wider than `bits`, empty line, or not exactly `depth` lines).
+std::vector<uint32_t> read_hex(const std::string& path, int bits, int depth);
+
+// Golden model from ROM files (default format paths relative to the working directory).
+device::DeviceModel load_device_model(const device::Format& f, const std::string& coef_hex,
+                                      const std::string& cos_hex);
+
+}  // namespace specular
