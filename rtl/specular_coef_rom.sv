@@ -1,0 +1,39 @@
+// Copyright (c) the specular_device authors.
+//
+// Coefficient ROM, block 9 of patent UA 71489 (the "second ROM"): 2^NBits words addressed
+// by n (register 4). Word n holds round(a(n, k(n)) * 2/pi * 2^CoefFrac), unsigned,
+// CoefBits bits, where k(n) is the decoder's bank for n and a the coefficient of the
+// chosen policy (maclaurin sqrt(n/k), minimax, kutlog:Q). Scaling by 2/pi makes the
+// product of multiplier 11 come out in quarter turns. Words 0 and n > 1000 are 0.
+//
+// Contents: $readmemh(CoefRomFile): one hex word per line, no comments, no @ addresses,
+// word 0 first (format documented in roms/README.md). Synchronous read (registered
+// output, no reset) so synthesis maps it to block RAM; the address n only changes while
+// the device is idle, so the output has settled before the first pixel needs it.
+
+module specular_coef_rom #(
+  parameter int NBits       = 10,
+  parameter int CoefBits    = 18,
+  parameter     CoefRomFile = "roms/coef_minimax.hex"
+) (
+  input  logic                clk_i,
+  input  logic [NBits-1:0]    n_i,
+  output logic [CoefBits-1:0] coef_o
+);
+
+  localparam int Depth = 1 << NBits;
+
+  logic [CoefBits-1:0] mem [Depth];
+  logic [CoefBits-1:0] coef_q;
+
+  initial begin
+    $readmemh(CoefRomFile, mem);
+  end
+
+  always_ff @(posedge clk_i) begin
+    coef_q <= mem[n_i];
+  end
+
+  assign coef_o = coef_q;
+
+endmodule

@@ -1,0 +1,59 @@
+// Copyright (c) the specular_device authors.
+//
+// Down counter, block 5 of patent UA 71489: holds the pixel count l (input 23, write 24),
+// decrements on every count pulse (34) and raises its borrow (35) on the pulse that
+// takes it past zero. A line of l + 1 pixels therefore gets l + 1 count pulses and the
+// borrow comes with the last one.
+//
+// Deviation from the patent, for usability: the written value is also kept in a shadow
+// register and reloaded into the counter by the borrow, so l persists from line to line
+// like the contents of registers 1-4 (the patent reloads the counter before every line;
+// a host that does so sees no difference).
+
+module specular_down_counter #(
+  parameter int LenBits = 11
+) (
+  input  logic               clk_i,
+  input  logic               rst_ni,
+  input  logic               len_we_i,   // write 24, qualified by "idle"
+  input  logic [LenBits-1:0] len_i,      // input 23
+  input  logic               count_i,    // count pulse 34
+  output logic               borrow_o,   // borrow 35: this count pulse passes zero
+  output logic [LenBits-1:0] count_o     // current count (for observation)
+);
+
+  if (LenBits < 1) begin : gen_width_check
+    $error("specular_down_counter: LenBits must be >= 1");
+  end
+
+  logic [LenBits-1:0] len_q;
+  logic [LenBits-1:0] cnt_d, cnt_q;
+
+  assign borrow_o = count_i && (cnt_q == '0);
+
+  always_comb begin
+    cnt_d = cnt_q;
+    if (len_we_i) begin
+      cnt_d = len_i;
+    end else if (borrow_o) begin
+      cnt_d = len_q;               // reload: ready for the next line
+    end else if (count_i) begin
+      cnt_d = cnt_q - 1'b1;
+    end
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      len_q <= '0;
+      cnt_q <= '0;
+    end else begin
+      if (len_we_i) begin
+        len_q <= len_i;
+      end
+      cnt_q <= cnt_d;
+    end
+  end
+
+  assign count_o = cnt_q;
+
+endmodule
