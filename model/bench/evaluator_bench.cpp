@@ -1,0 +1,144 @@
+// evaluator_bench: the speed axis of SPEC section 8. Every evaluator of model/evaluators.hpp
+// and the golden fixed-point device model shade the same scanline of 2048 pixels (l = 2047,
+// the counter maximum) across the highlight lobe, side by side in one run.
+//
+// Fairness: each evaluator gets the input it naturally takes, precomputed outside the timed
+// loop from the same pixel angles psi_i = psi0 + i*dpsi (the device's quantized angles):
+// c_i = cos(psi_i) for pow, exp2poly, lut256, schlick, schlick_mod, lyon16 (a renderer has
+// N.H from a dot product); psi_i for prototype, patent, patent_minimax (the accumulator of
+// the spherical-interpolation setup produces the angle). Per-n state (the LUT, the
+// coefficient a, the ROMs) is built once outside the loop, as per material in a renderer;
+// `lut256_build` times the table rebuild separately.
+//
+// Benchmark names are "<evaluator>/<n>"; items_per_second counts pixels, so
+// ns per pixel = 1e9 / items_per_second. Run with --benchmark_format=json.
+#include "device_model.hpp"
+#include "evaluators.hpp"
+#include "rom_image.hpp"
+
+#include <benchmark/benchmark.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace {
+
+using namespace specular;
+
+constexpr int kLen = 2047;  // pixels 0..2047
+constexpr int kPixels = kLen + 1;
+constexpr double kHalfPi = 1.57079632679489661923;
+
+struct Scanline {
+  device::Registers regs;
+  std::vector<double> psi, cosine;
+};
+
+// The lobe of cos^n is ~1/sqrt(n) wide; the line crosses it through the peak
+// (psi from -end to +end) and stays inside (-pi/2, pi/2).
+Scanline make_scanline(const device::Format& f, int n) {
+  const double end = std::min(0.97 * kHalfPi, 4.0 / std::sqrt(static_cast<double>(n)));
+  Scanline s;
+  s.regs.c = device::quantize_c(1.0, f);
+  s.regs.psi0 = device::quantize_angle(-end, f);
+  s.regs.dpsi = device::quantize_angle(2.0 * end / kLen, f);
+  s.regs.n = static_cast<uint32_t>(n);
+  s.regs.len = kLen;
+  const double p0 = device::angle_value(s.regs.psi0, f), dp = device::angle_value(s.regs.dpsi, f);
+  for (int i = 0; i < kPixels; ++i) {
+    s.psi.push_back(p0 + i * dp);
+    s.cosine.push_back(std::cos(s.psi.back()));
+  }
+  return s;
+}
+
+template <class Eval>
+void run_line(benchmark::State& state, const Eval& eval, const std::vector<double>& in) {
+  std::vector<double> out(in.size());
+  for (auto _ : state) {
+    for (size_t i = 0; i < in.size(); ++i) out[i] = eval(in[i]);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(in.size()));
+}
+
+// "pow/50" (built with append: GCC 12 warns falsely on operator+ of a literal and a string).
+std::string bench_name(const char* evaluator, int n) {
+  std::string s(evaluator);
+  s.append("/").append(std::to_string(n));
+  return s;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<int> ns{5, 50, 500};
+  device::Format f;
+  const device::DeviceModel dm(f, coef_rom_image(f, CoefSpec{CoefPolicy::maclaurin}), cos_rom_image(f));
+  // Scanlines live until main returns; the benchmarks capture them by reference.
+  static std::vector<Scanline> lines;
+  lines.reserve(ns.size());
+  for (int n : ns) lines.push_back(make_scanline(f, n));
+
+  for (size_t j = 0; j < ns.size(); ++j) {
+    const int n = ns[j];
+    const Scanline& s = lines[j];
+    const double dn = n;
+    benchmark::RegisterBenchmark(bench_name("pow", n).c_str(), [&s, dn](benchmark::State& st) {
+      run_line(st, PowEval{dn}, s.cosine);
+    });
+    benchmark::RegisterBenchmark(bench_name("exp2poly", n).c_str(), [&s, dn](benchmark::State& st) {
+      run_line(st, Exp2PolyEval{dn}, s.cosine);
+    });
+    benchmark::RegisterBenchmark(bench_name("lut256", n).c_str(), [&s, dn](benchmark::State& st) {
+      run_line(st, LutEval(dn), s.cosine);
+    });
+    benchmark::RegisterBenchmark(bench_name("schlick", n).c_str(), [&s, dn](benchmark::State& st) {
+      run_line(st, SchlickEval{dn}, s.cosine);
+    });
+    benchmark::RegisterBenchmark(bench_name("schlick_mod", n).c_str(), [&s, dn](benchmark::State& st) {
+      run_line(st, SchlickModEval{dn}, s.cosine);
+    });
+    benchmark::RegisterBenchmark(bench_name("lyon16", n).c_str(), [&s, dn](benchmark::State& st) {
+      run_line(st, LyonEval(dn, 4), s.cosine);
+    });
+    benchmark::RegisterBenchmark(bench_name("prototype", n).c_str(), [&s, dn](benchmark::State& st) {
+      run_line(st, prototype_eval(dn), s.psi);
+    });
+    const CoskEval pat = patent_eval(n, CoefSpec{CoefPolicy::maclaurin});
+    const CoskEval patm = patent_eval(n, CoefSpec{CoefPolicy::minimax});
+    benchmark::RegisterBenchmark(bench_name("patent", n).c_str(), [&s, pat](benchmark::State& st) {
+      run_line(st, pat, s.psi);
+    });
+    benchmark::RegisterBenchmark(bench_name("patent_minimax", n).c_str(), [&s, patm](benchmark::State& st) {
+      run_line(st, patm, s.psi);
+    });
+    // The golden fixed-point model of the device along the same line (its registers hold
+    // the same quantized psi0 and dpsi); output codes, C = 1.
+    benchmark::RegisterBenchmark(bench_name("device", n).c_str(), [&s, &dm](benchmark::State& st) {
+      for (auto _ : st) {
+        std::vector<uint32_t> out = dm.line(s.regs);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+      }
+      st.SetItemsProcessed(st.iterations() * static_cast<int64_t>(kPixels));
+    });
+    benchmark::RegisterBenchmark(bench_name("lut256_build", n).c_str(), [dn](benchmark::State& st) {
+      for (auto _ : st) {
+        LutEval lut(dn);
+        benchmark::DoNotOptimize(lut.table.data());
+        benchmark::ClobberMemory();
+      }
+      st.SetItemsProcessed(st.iterations() * static_cast<int64_t>(LutEval::kEntries));
+    });
+  }
+
+  benchmark::Initialize(&argc, argv);
+  if (benchmark::ReportUnrecognizedArguments(argc, argv)) return 2;
+  benchmark::RunSpecifiedBenchmarks();
+  benchmark::Shutdown();
+  return 0;
+}
