@@ -1,0 +1,102 @@
+// Scenes: meshes, materials, lights, camera and image size, loaded from JSON
+// (format documented in scenes/README.md).
+//
+// Conventions: right-handed world space; the camera looks from `position` towards
+// `look_at`. Screen space has pixel centres at integer coordinates (x, y),
+// x = 0..width-1 to the right, y = 0..height-1 downwards.
+#pragma once
+
+#include <glm/vec3.hpp>
+
+#include <array>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace specular {
+
+// A bad scene file: the message names the file, the field and what was expected.
+class SceneError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+struct Material {
+  std::string name;
+  double n = 1.0;     // specular exponent, [1, 1000]
+  double ks = 1.0;    // specular coefficient, [0, 1]
+  double norm = 1.0;  // normalization s(n) applied through C (1: none)
+};
+
+enum class LightType { directional, point };
+
+struct Light {
+  LightType type = LightType::directional;
+  glm::dvec3 direction{0, 0, 1};  // directional: unit vector from the surface TOWARDS the light
+  glm::dvec3 position{0, 0, 0};   // point light position
+  double intensity = 1.0;         // Is
+
+  // Unit vector from surface point p towards the light.
+  glm::dvec3 to_light(const glm::dvec3& p) const;
+};
+
+enum class CameraType { orthographic, perspective };
+
+struct Camera {
+  CameraType type = CameraType::orthographic;
+  glm::dvec3 position{0, 0, 10};
+  glm::dvec3 look_at{0, 0, 0};
+  glm::dvec3 up{0, 1, 0};
+  double fov_y_deg = 45.0;  // perspective: full vertical field of view
+  double height = 2.0;      // orthographic: world-space height of the view
+  double near = 1e-3;       // perspective: triangles with a vertex closer than this are dropped
+
+  // Orthonormal camera frame (right, true up, forward = towards look_at).
+  glm::dvec3 right() const;
+  glm::dvec3 true_up() const;
+  glm::dvec3 forward() const;
+
+  // Unit vector from surface point p towards the viewer.
+  glm::dvec3 to_viewer(const glm::dvec3& p) const;
+};
+
+struct Mesh {
+  std::string kind;  // "triangles", "sphere", "torus", "plane"
+  std::vector<glm::dvec3> positions;
+  std::vector<glm::dvec3> normals;  // unit, one per position
+  std::vector<std::array<int, 3>> triangles;
+  int material = 0;  // index into Scene::materials
+};
+
+struct Scene {
+  std::string name;  // file stem
+  std::string path;
+  int width = 256, height = 256;
+  Camera camera;
+  std::vector<Material> materials;
+  std::vector<Light> lights;
+  std::vector<Mesh> meshes;
+
+  size_t triangle_count() const;
+};
+
+// Limits enforced by the loader. The span counter of the device has 11 bits
+// (l <= 2047), so an image row may hold at most 2048 pixels.
+inline constexpr int kMaxImageSize = 2048;
+inline constexpr int kMaxTessellation = 1024;
+
+Scene load_scene(const std::string& path);               // throws SceneError
+Scene parse_scene(const std::string& json_text, const std::string& path_for_messages);
+
+// Mesh generators (indexed, seams share vertices so adjacent triangles share
+// exact coordinates: no cracks). Normals are the analytic surface normals.
+// Sphere: 2*t segments in longitude, t rings in latitude, poles on `axis`.
+Mesh make_sphere(const glm::dvec3& center, double radius, int t, const glm::dvec3& axis = {0, 1, 0});
+// Torus around `axis`: 2*t segments around the axis, t around the tube.
+Mesh make_torus(const glm::dvec3& center, double major_radius, double minor_radius, int t,
+                const glm::dvec3& axis = {0, 1, 0});
+// Rectangle of size (su along `tangent`, sv along normal x tangent), t x t cells, normal constant.
+Mesh make_plane(const glm::dvec3& center, const glm::dvec3& normal, const glm::dvec3& tangent,
+                double su, double sv, int t);
+
+}  // namespace specular
