@@ -29,7 +29,17 @@ enum class SetupStatus {
   ok,
   invalid_input,   // NaN / infinite / zero-length vector, n out of range, l < 0: C = 0, all pixels 0
   // other statuses are defined in scanline_setup.cpp's documentation and here
+  undefined_halfway,  // H1 or He has zero length (L = -V, |L+V| = 0): C = 0, all pixels 0.
+                      // Physically right: with L = -V, N.L = -N.V, so the light is behind the
+                      // surface or the surface faces away; there is no specular term.
+  opposite_normals,   // N1 = -N2 (1 + N1.N2 = 0): the rotation N2 -> N1 is not unique; we use the
+                      // half turn about the tangential part of He (H2 = mirror of He through the
+                      // tangent plane of N1). N1.H2 = N2.He still holds. The result is valid.
+  opposite_halfway,   // H2 = -H1 (gamma = pi): the slerp path is not unique; we take the great
+                      // circle through N1 (u = part of N1 orthogonal to H1). The result is valid.
 };
+
+inline constexpr int kMaxLen = 2047;  // counter 5 has 11 bits: l in 0..2047
 
 struct ScanlineSetup {
   double A = 0.0;       // amplitude of N1 . H(t)
@@ -46,5 +56,19 @@ ScanlineSetup scanline_setup(const ScanlineInput& in);
 
 // psi of pixel i (0..l).
 inline double pixel_psi(const ScanlineSetup& s, int i) { return s.psi0 + i * s.dpsi; }
+
+// What the setup promises the device computes: C cos^n(psi_i), 0 where |psi_i| >= pi/2.
+double pixel_blinn(const ScanlineSetup& s, double n, int i);
+
+// Ground truth for the interpolation-model error: per-pixel Phong shading of the span with
+// normalized-lerp normals and the true per-pixel H,
+//   t = i / l (0 when l = 0), N = normalize(lerp(N1, N2, t)), H = normalize(lerp(H1, He, t)),
+//   I = Is * ks * s(n) * max(0, N . H)^n.
+// Inputs are normalized first, as in scanline_setup(). Returns 0 for invalid input, zero-length
+// H1/He, or where a lerp passes through the zero vector (N1 = -N2 at t = 1/2).
+// Throws std::out_of_range unless 0 <= i <= l.
+double phong_truth(const ScanlineInput& in, int i);
+
+std::string to_string(SetupStatus s);
 
 }  // namespace specular

@@ -1,0 +1,364 @@
+// `specular`: command-line front end of the reference model. Its CSV output is a contract
+// (the report and outside scripts parse it): exact headers, numbers with 9 significant
+// digits, errors on stderr with exit code 2 and nothing on stdout.
+#include "brdf.hpp"
+#include "coefficients.hpp"
+#include "metrics.hpp"
+#include "scanline_setup.hpp"
+
+#include <CLI/CLI.hpp>
+#include <glm/vec3.hpp>
+
+#include <cmath>
+#include <cstdio>
+#include <iostream>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+using namespace specular;
+
+namespace {
+
+// A bad command-line argument: reported as "specular <cmd>: <arg>: <what>", exit code 2.
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+[[noreturn]] void bad(const std::string& arg, const std::string& what) { throw UsageError(arg + ": " + what); }
+
+std::string num(double v) {
+  if (std::isnan(v)) return "nan";
+  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
+  char buf[64];
+  std::snprintf(buf, sizeof buf, "%.9g", v);
+  return buf;
+}
+
+std::optional<double> to_double(const std::string& s) {
+  std::size_t used = 0;
+  double v = 0;
+  try {
+    v = std::stod(s, &used);
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+  if (used != s.size()) return std::nullopt;
+  return v;
+}
+
+double parse_real(const std::string& arg, const std::string& s, double lo, double hi, const std::string& range) {
+  const auto v = to_double(s);
+  if (!v || !std::isfinite(*v)) bad(arg, "'" + s + "' is not a number; allowed " + range);
+  if (*v < lo || *v > hi) bad(arg, "'" + s + "' is outside the allowed range " + range);
+  return *v;
+}
+
+int parse_int(const std::string& arg, const std::string& s, int lo, int hi) {
+  const std::string range = std::to_string(lo) + ".." + std::to_string(hi);
+  const auto v = to_double(s);
+  if (!v || !std::isfinite(*v) || *v != std::floor(*v)) bad(arg, "'" + s + "' is not an integer; allowed " + range);
+  if (*v < lo || *v > hi) bad(arg, "'" + s + "' is outside the allowed range " + range);
+  return static_cast<int>(*v);
+}
+
+std::vector<std::string> split(const std::string& s, char sep) {
+  std::vector<std::string> out;
+  std::string cur;
+  std::istringstream in(s);
+  while (std::getline(in, cur, sep)) out.push_back(cur);
+  if (!s.empty() && s.back() == sep) out.push_back("");
+  return out;
+}
+
+// "1..1000", "1,2,7", "1..5,10,20..22"; ranges are integer, single items may be real
+// when `reals` is set.
+std::vector<double> parse_list(const std::string& arg, const std::string& s, int lo, int hi, bool reals) {
+  const std::string range = std::to_string(lo) + ".." + std::to_string(hi);
+  if (s.empty()) bad(arg, "empty list; expected items like 7, 1..1000 or 1,2,7 in " + range);
+  std::vector<double> out;
+  for (const std::string& item : split(s, ',')) {
+    const auto dots = item.find("..");
+    if (dots != std::string::npos) {
+      const int a = parse_int(arg, item.substr(0, dots), lo, hi);
+      const int b = parse_int(arg, item.substr(dots + 2), lo, hi);
+      if (a > b) bad(arg, "range '" + item + "' is empty (first > last); allowed " + range);
+      for (int v = a; v <= b; ++v) out.push_back(v);
+    } else if (reals) {
+      out.push_back(parse_real(arg, item, lo, hi, range));
+    } else {
+      out.push_back(parse_int(arg, item, lo, hi));
+    }
+  }
+  return out;
+}
+
+glm::dvec3 parse_vec(const std::string& arg, const std::string& s) {
+  const auto parts = split(s, ',');
+  if (parts.size() != 3) bad(arg, "'" + s + "' is not a vector; expected X,Y,Z with finite numbers");
+  glm::dvec3 v;
+  for (int i = 0; i < 3; ++i) {
+    const auto d = to_double(parts[i]);
+    if (!d || !std::isfinite(*d)) bad(arg, "'" + s + "' has a non-finite component; expected X,Y,Z with finite numbers");
+    v[i] = *d;
+  }
+  return v;
+}
+
+CoefSpec coef_from(const std::string& coef, const std::string& q_text, bool q_given) {
+  CoefSpec spec;
+  try {
+    spec = parse_coef_spec(coef);
+  } catch (const std::invalid_argument&) {
+    bad("--coef", "'" + coef + "' is not allowed; allowed maclaurin, minimax, kutlog (with --Q) or kutlog:Q, Q in (0, 1)");
+  }
+  if (spec.policy == CoefPolicy::kutlog && coef == "kutlog") {
+    if (!q_given) bad("--Q", "required with --coef kutlog; allowed (0, 1) exclusive");
+    spec.Q = parse_real("--Q", q_text, 1e-300, 1.0 - 1e-16, "(0, 1) exclusive");
+  }
+  return spec;
+}
+
+struct Out {
+  std::string text;
+  void row(const std::vector<std::string>& cells) {
+    for (std::size_t i = 0; i < cells.size(); ++i) text += (i ? "," : "") + cells[i];
+    text += "\n";
+  }
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  CLI::App app{"Reference model of the specular-intensity device (patent UA 71489): error tables, "
+               "decoder design table, albedo, scanline setup. CSV on stdout."};
+  app.require_subcommand(1);
+
+  // --- errors ---
+  auto* err = app.add_subcommand("errors",
+                                 "Shape errors of a model against cos^n: model,n,k,a,max_rel_epicenter,max_abs_lobe "
+                                 "(fractions). k and a describe the cos^k(a x) form (blinn: k = n, a = 1; lyon/f16: "
+                                 "k = m, a = nan; schlick, schlick-mod: nan)");
+  std::string e_model, e_n = "1..1000", e_k, e_coef = "maclaurin", e_q, e_m;
+  err->add_option("--model", e_model, "blinn, patent, prototype, schlick, schlick-mod, lyon, f16, kutlog")->required();
+  err->add_option("--n", e_n, "exponents, e.g. 1..1000 or 1,2,7 (1..1000)");
+  err->add_option("--k", e_k, "patent: bank override (1..64, default: decoder); kutlog: required (1..5)");
+  err->add_option("--coef", e_coef, "patent: maclaurin (default), minimax, kutlog (needs --Q) or kutlog:Q");
+  err->add_option("--Q", e_q, "kutlog: level in (0, 1)");
+  err->add_option("--m", e_m, "lyon: power m = 2^w in 1..1024 (default 16)");
+
+  // --- krange ---
+  auto* kr = app.add_subcommand("krange",
+                                "Decoder design table: for each k, the n in 1..1000 whose max relative epicenter error of "
+                                "cos^k(a x) is <= tol: k,n_min,n_max,count (n_min = n_max = 0 when count = 0)");
+  std::string k_tol, k_k = "1,2,4,16", k_coef = "maclaurin", k_q;
+  kr->add_option("--tol", k_tol, "tolerance as a fraction, (0, 1]")->required();
+  kr->add_option("--k", k_k, "banks to tabulate (1..64), default 1,2,4,16");
+  kr->add_option("--coef", k_coef, "maclaurin (default), minimax, kutlog (needs --Q) or kutlog:Q");
+  kr->add_option("--Q", k_q, "kutlog: level in (0, 1)");
+
+  // --- albedo ---
+  auto* al = app.add_subcommand("albedo",
+                                "Hemispherical albedo 2 pi int F cos sin with light at the normal: model,n,albedo");
+  std::string a_model, a_n = "1..1000", a_conv = "phong", a_norm = "none", a_k, a_q, a_coef = "maclaurin", a_m;
+  al->add_option("--model", a_model, "blinn, patent, prototype, schlick, schlick-mod, lyon, f16, kutlog")->required();
+  al->add_option("--n", a_n, "exponents (1..1000)");
+  al->add_option("--convention", a_conv, "phong (angle = theta, default) or blinn (angle = theta/2)");
+  al->add_option("--norm", a_norm,
+                 "none (default), own (blinn, patent, prototype, schlick, schlick-mod, lyon: (n+8)/(8 pi); "
+                 "f16: (n+6)/24.55; kutlog: exact coef) or fit (kutlog only: the paper's curve fit)");
+  al->add_option("--k", a_k, "patent: bank override (1..64); kutlog: required (1..5)");
+  al->add_option("--Q", a_q, "kutlog: level in (0, 1)");
+  al->add_option("--coef", a_coef, "patent: coefficient policy");
+  al->add_option("--m", a_m, "lyon: power m (default 16)");
+
+  // --- setup ---
+  auto* su = app.add_subcommand("setup",
+                                "Scanline setup (SPEC section 4): A,lambda,gamma,C,psi0,dpsi; with --pixels also "
+                                "i,psi,blinn,device_float,truth");
+  std::string s_n1, s_n2, s_h1, s_he, s_len, s_exp, s_is = "1", s_ks = "1", s_norm = "none", s_coef = "maclaurin", s_q;
+  bool s_pixels = false;
+  su->add_option("--n1", s_n1, "unit normal at the first pixel, X,Y,Z")->required();
+  su->add_option("--n2", s_n2, "unit normal at the last pixel, X,Y,Z")->required();
+  su->add_option("--h1", s_h1, "halfway vector at the first pixel, X,Y,Z")->required();
+  su->add_option("--he", s_he, "halfway vector at the last pixel (default --h1)");
+  su->add_option("--len", s_len, "l = X_end - X_start, 0..2047 (l + 1 pixels)")->required();
+  su->add_option("--exp", s_exp, "specular exponent n, [1, 1000]")->required();
+  su->add_option("--is", s_is, "light intensity Is >= 0 (default 1)");
+  su->add_option("--ks", s_ks, "specular coefficient ks >= 0 (default 1)");
+  su->add_option("--norm", s_norm, "none (default) or own (Blinn-Phong (n+8)/(8 pi))");
+  su->add_option("--coef", s_coef, "coefficient policy of device_float (default maclaurin)");
+  su->add_option("--Q", s_q, "kutlog: level in (0, 1)");
+  su->add_flag("--pixels", s_pixels, "also print the per-pixel table");
+
+  // Name an unknown command instead of CLI11's generic "a subcommand is required".
+  if (argc > 1 && argv[1][0] != '-') {
+    const std::string c = argv[1];
+    if (c != "errors" && c != "krange" && c != "albedo" && c != "setup") {
+      std::cerr << "specular: error: '" << c << "' is not a command; allowed errors, krange, albedo, setup\n";
+      return 2;
+    }
+  }
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::CallForAllHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "specular: error: " << e.what() << "\nRun 'specular --help' (or 'specular <command> --help').\n";
+    return 2;
+  }
+
+  std::string cmd = "specular";
+  Out out;
+  try {
+    if (*err) {
+      cmd += " errors";
+      const auto model = parse_model(e_model);
+      if (!model || *model == Model::phong)
+        bad("--model", "'" + e_model + "' is not allowed; allowed blinn, patent, prototype, schlick, schlick-mod, lyon, f16, kutlog");
+      const auto ns = parse_list("--n", e_n, 1, 1000, true);
+      ModelParams p;
+      const bool is_patent = *model == Model::patent, is_kutlog = *model == Model::kutlog;
+      if (!e_k.empty() && !is_patent && !is_kutlog) bad("--k", "applies to --model patent or kutlog only");
+      if (err->count("--coef") && !is_patent) bad("--coef", "applies to --model patent only");
+      if (!e_q.empty() && !is_kutlog && !(is_patent && e_coef == "kutlog"))
+        bad("--Q", "applies to --model kutlog or --coef kutlog only");
+      if (!e_m.empty() && *model != Model::lyon) bad("--m", "applies to --model lyon only");
+      if (is_patent) {
+        if (!e_k.empty()) p.k = parse_int("--k", e_k, 1, 64);
+        p.coef = coef_from(e_coef, e_q, !e_q.empty());
+      }
+      if (is_kutlog) {
+        if (e_k.empty()) bad("--k", "required for --model kutlog; allowed 1..5");
+        if (e_q.empty()) bad("--Q", "required for --model kutlog; allowed (0, 1) exclusive");
+        p.k = parse_int("--k", e_k, 1, 5);
+        p.Q = parse_real("--Q", e_q, 1e-300, 1.0 - 1e-16, "(0, 1) exclusive");
+      }
+      if (*model == Model::lyon && !e_m.empty()) {
+        p.m = parse_int("--m", e_m, 1, 1024);
+        if ((p.m & (p.m - 1)) != 0) bad("--m", "'" + e_m + "' is not a power of two; allowed 1, 2, 4, ..., 1024");
+      }
+      out.row({"model", "n", "k", "a", "max_rel_epicenter", "max_abs_lobe"});
+      for (double n : ns) {
+        p.n = n;
+        const Evaluator ev = make_evaluator(*model, p);
+        const ShapeError se = shape_error(ev, n);
+        std::string k = ev.k > 0 ? std::to_string(ev.k) : "nan";
+        if (*model == Model::blinn) k = num(n);
+        out.row({e_model, num(n), k, num(ev.a), num(se.max_rel_epicenter), num(se.max_abs_lobe)});
+      }
+    } else if (*kr) {
+      cmd += " krange";
+      const double tol = parse_real("--tol", k_tol, 1e-300, 1.0, "(0, 1]");
+      const auto ks = parse_list("--k", k_k, 1, 64, false);
+      if (!k_q.empty() && k_coef != "kutlog") bad("--Q", "applies to --coef kutlog only");
+      const CoefSpec spec = coef_from(k_coef, k_q, !k_q.empty());
+      out.row({"k", "n_min", "n_max", "count"});
+      for (double kd : ks) {
+        const int k = static_cast<int>(kd);
+        int n_min = 0, n_max = 0, count = 0;
+        for (int n = 1; n <= 1000; ++n) {
+          const double a = coefficient(n, k, spec);
+          const double e = max_rel_epicenter([&](double x) { return cosk_shape(x, k, a); }, n);
+          if (e <= tol) {
+            if (count == 0) n_min = n;
+            n_max = n;
+            ++count;
+          }
+        }
+        out.row({std::to_string(k), std::to_string(n_min), std::to_string(n_max), std::to_string(count)});
+      }
+    } else if (*al) {
+      cmd += " albedo";
+      const auto model = parse_model(a_model);
+      if (!model || *model == Model::phong)
+        bad("--model", "'" + a_model + "' is not allowed; allowed blinn, patent, prototype, schlick, schlick-mod, lyon, f16, kutlog");
+      const auto ns = parse_list("--n", a_n, 1, 1000, true);
+      if (a_conv != "phong" && a_conv != "blinn") bad("--convention", "'" + a_conv + "' is not allowed; allowed phong, blinn");
+      if (a_norm != "none" && a_norm != "own" && a_norm != "fit")
+        bad("--norm", "'" + a_norm + "' is not allowed; allowed none, own, fit");
+      const bool is_patent = *model == Model::patent, is_kutlog = *model == Model::kutlog;
+      if (a_norm == "fit" && !is_kutlog) bad("--norm", "fit applies to --model kutlog only; allowed none, own");
+      if (!a_k.empty() && !is_patent && !is_kutlog) bad("--k", "applies to --model patent or kutlog only");
+      if (al->count("--coef") && !is_patent) bad("--coef", "applies to --model patent only");
+      if (!a_q.empty() && !is_kutlog && !(is_patent && a_coef == "kutlog"))
+        bad("--Q", "applies to --model kutlog or --coef kutlog only");
+      if (!a_m.empty() && *model != Model::lyon) bad("--m", "applies to --model lyon only");
+      ModelParams p;
+      if (is_patent) {
+        if (!a_k.empty()) p.k = parse_int("--k", a_k, 1, 64);
+        p.coef = coef_from(a_coef, a_q, !a_q.empty());
+      }
+      if (is_kutlog) {
+        if (a_k.empty()) bad("--k", "required for --model kutlog; allowed 1..5");
+        if (a_q.empty()) bad("--Q", "required for --model kutlog; allowed (0, 1) exclusive");
+        p.k = parse_int("--k", a_k, 1, 5);
+        const bool fit = a_norm == "fit";
+        p.Q = fit ? parse_real("--Q", a_q, 0.1, 0.9, "[0.1, 0.4] or [0.5, 0.9] with --norm fit")
+                  : parse_real("--Q", a_q, 1e-300, 1.0 - 1e-16, "(0, 1) exclusive");
+        if (fit && p.Q > 0.4 && p.Q < 0.5) bad("--Q", "'" + a_q + "' is between the fits' ranges; allowed [0.1, 0.4] or [0.5, 0.9] with --norm fit");
+      }
+      if (*model == Model::lyon && !a_m.empty()) {
+        p.m = parse_int("--m", a_m, 1, 1024);
+        if ((p.m & (p.m - 1)) != 0) bad("--m", "'" + a_m + "' is not a power of two; allowed 1, 2, 4, ..., 1024");
+      }
+      const Convention conv = a_conv == "phong" ? Convention::phong : Convention::blinn;
+      out.row({"model", "n", "albedo"});
+      for (double n : ns) {
+        p.n = n;
+        const Evaluator ev = make_evaluator(*model, p);
+        const double raw = albedo(ev, conv, n);
+        double s = 1.0;
+        if (a_norm == "own") s = *model == Model::kutlog ? 1.0 / albedo(ev, Convention::phong, n) : ev.own_norm();
+        if (a_norm == "fit") s = kutlog_coef_fit(n, p.k, p.Q);
+        out.row({a_model, num(n), num(s * raw)});
+      }
+    } else if (*su) {
+      cmd += " setup";
+      ScanlineInput in;
+      in.n1 = parse_vec("--n1", s_n1);
+      in.n2 = parse_vec("--n2", s_n2);
+      in.h1 = parse_vec("--h1", s_h1);
+      in.he = s_he.empty() ? in.h1 : parse_vec("--he", s_he);
+      auto zero = [](const glm::dvec3& v) { return v.x == 0 && v.y == 0 && v.z == 0; };
+      if (zero(in.n1)) bad("--n1", "is the zero vector; a normal must have nonzero length");
+      if (zero(in.n2)) bad("--n2", "is the zero vector; a normal must have nonzero length");
+      in.l = parse_int("--len", s_len, 0, kMaxLen);
+      in.n = parse_real("--exp", s_exp, 1.0, 1000.0, "[1, 1000]");
+      in.is = parse_real("--is", s_is, 0.0, 1e300, "[0, 1e300]");
+      in.ks = parse_real("--ks", s_ks, 0.0, 1e300, "[0, 1e300]");
+      if (s_norm != "none" && s_norm != "own") bad("--norm", "'" + s_norm + "' is not allowed; allowed none, own");
+      in.norm = s_norm == "own" ? blinn_phong_norm(in.n) : 1.0;
+      if (!s_q.empty() && s_coef != "kutlog") bad("--Q", "applies to --coef kutlog only");
+      const CoefSpec spec = coef_from(s_coef, s_q, !s_q.empty());
+      const ScanlineSetup s = scanline_setup(in);
+      if (s.status == SetupStatus::invalid_input) bad("setup", s.note);
+      if (!s.note.empty()) std::cerr << cmd << ": note (" << to_string(s.status) << "): " << s.note << "\n";
+      out.row({"A", "lambda", "gamma", "C", "psi0", "dpsi"});
+      out.row({num(s.A), num(s.lambda), num(s.gamma), num(s.C), num(s.psi0), num(s.dpsi)});
+      if (s_pixels) {
+        const int k = decoder_k_real(in.n);
+        const double a = coefficient(in.n, k, spec);
+        out.text += "\n";
+        out.row({"i", "psi", "blinn", "device_float", "truth"});
+        for (int i = 0; i <= in.l; ++i) {
+          const double psi = pixel_psi(s, i);
+          out.row({std::to_string(i), num(psi), num(pixel_blinn(s, in.n, i)), num(s.C * cosk_shape(psi, k, a)),
+                   num(phong_truth(in, i))});
+        }
+      }
+    }
+  } catch (const UsageError& e) {
+    std::cerr << cmd << ": error: " << e.what() << "\n";
+    return 2;
+  } catch (const std::exception& e) {
+    std::cerr << cmd << ": error: " << e.what() << "\n";
+    return 2;
+  }
+  std::fwrite(out.text.data(), 1, out.text.size(), stdout);
+  return 0;
+}
