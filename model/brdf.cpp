@@ -78,6 +78,18 @@ double kutlog_coef_fit(double n, int k, double Q) {
   throw std::invalid_argument("kutlog_coef_fit: Q must be in [0.1, 0.4] or [0.5, 0.9] (the fits' ranges)");
 }
 
+double kutlog_fit_error(int k, double Q, int* n_at) {
+  double worst = -1.0;
+  int at = 0;
+  for (int n = k + 1; n <= 1000; ++n) {
+    // coef_fit * 2 pi Int = coef_fit / coef_exact
+    const double e = std::abs(kutlog_coef_fit(n, k, Q) / kutlog_coef_exact(n, k, Q) - 1.0);
+    if (e > worst) worst = e, at = n;
+  }
+  if (n_at) *n_at = at;
+  return worst;
+}
+
 const std::vector<std::string>& model_names() {
   static const std::vector<std::string> names{"blinn", "patent", "prototype", "schlick",
                                               "schlick-mod", "lyon", "f16", "kutlog"};

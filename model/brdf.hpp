@@ -41,6 +41,9 @@ double kutlog_coef_exact(double n, int k, double Q);
 // The paper's symbolic-regression fits (SPEC section 7); Q in [0.1, 0.4] or [0.5, 0.9],
 // otherwise std::invalid_argument.
 double kutlog_coef_fit(double n, int k, double Q);
+// Worst absolute error of the fit, max |coef_fit * 2 pi Int - 1| over integer n in [k+1, 1000]
+// (SPEC section 7); *n_at gets the n where it occurs.
+double kutlog_fit_error(int k, double Q, int* n_at = nullptr);
 
 // --- a model described by name, evaluable at an angle ------------------------------
 enum class Model { blinn, phong, patent, prototype, schlick, schlick_mod, lyon, f16, kutlog };

@@ -94,6 +94,25 @@ TEST_CASE("kutlog exact coef against a closed-form integral (k = 2)", "[brdf]") 
   CHECK_THAT(kutlog_coef_exact(n, 2, Q), WithinRel(1.0 / (2 * kPi * integral), 1e-9));
 }
 
+TEST_CASE("kutlog fit error against the closed-form integral (k = 2)", "[brdf]") {
+  const double Q = GENERATE(0.3, 0.7);
+  auto closed = [&](double n) {  // |fit * 2 pi Int - 1| with Int in closed form (see above)
+    const double a = std::acos(std::pow(Q, 0.5)) / std::acos(std::pow(Q, 1.0 / n));
+    const double g = std::min(kPi / 2, kPi / (2 * a));
+    auto F = [&](double t) {
+      return 0.25 * (-std::cos(2 * t) / 2 +
+                     0.5 * (-std::cos((2 * a + 2) * t) / (2 * a + 2) + std::cos((2 * a - 2) * t) / (2 * a - 2)));
+    };
+    return std::abs(kutlog_coef_fit(n, 2, Q) * 2 * kPi * (F(g) - F(0.0)) - 1);
+  };
+  int at = 0;
+  const double worst = kutlog_fit_error(2, Q, &at);
+  REQUIRE(at >= 3);
+  REQUIRE(at <= 1000);
+  CHECK_THAT(worst, WithinRel(closed(at), 1e-6));
+  for (double n : {3.0, 10.0, 100.0, 1000.0}) CHECK(closed(n) <= worst * (1 + 1e-6));
+}
+
 TEST_CASE("make_evaluator rejects bad parameters", "[brdf]") {
   ModelParams p;
   p.n = 0.5;
