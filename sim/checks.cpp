@@ -1,0 +1,205 @@
+#include "checks.hpp"
+
+#include "metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+#include <sstream>
+
+namespace specular::sim {
+namespace {
+
+constexpr double kHalfPi = std::numbers::pi / 2.0;
+
+void note(PolicyStats& st, const std::string& what) {
+  if (st.failures.size() < 12) st.failures.push_back(what);
+}
+
+void keep_max(Extreme& e, double v, const Scanline& sl, int i, double psi, double c) {
+  if (v > e.value) e = {v, sl.reg.n, psi, c, sl.reg.len, i, sl.kind};
+}
+
+nlohmann::json ext_json(const Extreme& e) {
+  return {{"value", e.value}, {"n", e.n}, {"psi", e.psi}, {"C", e.c}, {"l", e.len}, {"pixel", e.pixel},
+          {"kind", e.kind}};
+}
+
+}  // namespace
+
+nlohmann::json PolicyStats::to_json() const {
+  nlohmann::json lat = nlohmann::json::object();
+  for (const auto& [l, cnt] : latency) lat[std::to_string(l)] = cnt;
+  return {{"policy", policy},
+          {"ok", ok()},
+          {"budget", {{"rel_epicenter", budget.rel_epicenter}, {"abs_lobe", budget.abs_lobe}}},
+          {"lines", lines},
+          {"pixels", pixels},
+          {"deterministic_lines", det_lines},
+          {"deterministic_pixels", det_pixels},
+          {"random_lines", rnd_lines},
+          {"random_pixels", rnd_pixels},
+          {"mismatches", mismatches},
+          {"protocol_errors", protocol_errors},
+          {"quant_violations", quant_violations},
+          {"rel_violations", rel_violations},
+          {"abs_violations", abs_violations},
+          {"epicenter_pixels", epicenter_pixels},
+          {"lobe_pixels", lobe_pixels},
+          {"c_saturated_lines", c_saturated_lines},
+          {"quant_max_lsb", ext_json(quant_lsb)},
+          {"quant_max_over_bound", ext_json(quant_excess)},
+          {"rel_epicenter_raw", ext_json(rel_raw)},
+          {"rel_epicenter_raw_ref_ge_half", ext_json(rel_raw_big)},
+          {"rel_epicenter_with_lsb", ext_json(rel_allow)},
+          {"rel_epicenter_n1_with_lsb", ext_json(rel_allow_n1)},
+          {"n1_pixels_over_rel_budget", n1_rel_over_budget},
+          {"n1_rel_budget_holds_for_abs_psi_below", n1_budget_holds_below},
+          {"abs_lobe_raw", ext_json(abs_raw)},
+          {"abs_lobe_with_lsb", ext_json(abs_allow)},
+          {"abs_outside_lobe_with_lsb", ext_json(abs_outside)},
+          {"latency", lat},
+          {"cycles", cycles},
+          {"cycles_per_pixel", pixels ? static_cast<double>(cycles) / pixels : 0.0},
+          {"cycles_per_pixel_long_lines",
+           long_line_pixels ? static_cast<double>(long_line_cycles) / long_line_pixels : 0.0},
+          {"seconds", seconds},
+          {"sim_seconds", sim_seconds},
+          {"simulated_pixels_per_second", sim_seconds > 0 ? pixels / sim_seconds : 0.0},
+          {"checked_pixels_per_second", seconds > 0 ? pixels / seconds : 0.0},
+          {"failures", failures}};
+}
+
+Checker::Checker(const device::DeviceModel& model, std::vector<double> a_exact, Budget budget)
+    : model_(model), a_(std::move(a_exact)), budget_(budget) {
+  // max over x of |k cos^(k-1) x sin x|: at sin^2 x = 1/k (k > 1), 1 for k = 1.
+  for (int k : model_.format().banks) {
+    if (k == 1) {
+      dk_.push_back(1.0);
+    } else {
+      const double s2 = 1.0 / k;
+      dk_.push_back(k * std::pow(1.0 - s2, (k - 1) / 2.0) * std::sqrt(s2));
+    }
+  }
+}
+
+void Checker::check_line(const Scanline& sl, const LineRun& run, bool random, PolicyStats& st) const {
+  const auto& f = model_.format();
+  const device::Registers r = model_.latch(sl.reg);
+  const double lsb = std::ldexp(1.0, -f.c_frac);
+  const double c = device::c_value(r.c, f);
+  const int bank = model_.bank_of(r.n);
+  const bool n_ok = bank >= 0;
+  const int k = n_ok ? f.banks[bank] : 0;
+  const double a = n_ok ? a_[r.n] : 0.0;
+  const double xe = n_ok ? epicenter_end(static_cast<double>(r.n)) : 0.0;
+  // (b) first-order budget of the formats: half a ROM 12 address step, the rounding of a(n)
+  // to coef_frac bits times |psi|, the truncation of |psi| to psi_mul_frac bits times a,
+  // all through the steepest slope of cos^k; plus one ROM 12 LSB (saturation of cos^0) and
+  // half an output LSB.
+  const double half_step = kHalfPi * std::ldexp(1.0, -(f.cos_addr_bits + 1));
+  const double coef_err = kHalfPi * std::ldexp(1.0, -(f.coef_frac + 1));
+  const double trunc = std::ldexp(1.0, -f.psi_mul_frac);
+
+  ++st.lines;
+  (random ? st.rnd_lines : st.det_lines) += 1;
+  if (sl.c_saturated) ++st.c_saturated_lines;
+  if (!run.protocol_error.empty()) {
+    ++st.protocol_errors;
+    note(st, st.policy + " protocol [" + sl.kind + " n=" + std::to_string(r.n) + " l=" + std::to_string(r.len) +
+                 "]: " + run.protocol_error);
+  }
+  if (run.latency >= 0) ++st.latency[run.latency];
+  st.cycles += run.cycles;
+  if (r.len == (1u << f.len_bits) - 1) {
+    st.long_line_cycles += run.cycles;
+    st.long_line_pixels += r.len + 1;
+  }
+
+  const size_t npix = std::min<size_t>(run.pixels.size(), static_cast<size_t>(r.len) + 1);
+  st.pixels += npix;
+  (random ? st.rnd_pixels : st.det_pixels) += npix;
+  for (size_t i = 0; i < npix; ++i) {
+    const device::PixelTrace t = model_.trace(r, static_cast<int>(i));
+    const uint32_t got = run.pixels[i];
+    // (a)
+    if (got != t.intensity) {
+      if (st.mismatches < 12) {
+        std::ostringstream m;
+        m << st.policy << " mismatch [" << sl.kind << "] n=" << r.n << " l=" << r.len << " C=0x" << std::hex << r.c
+          << " psi0=0x" << r.psi0 << " dpsi=0x" << r.dpsi << std::dec << " pixel " << i << ": rtl " << got
+          << " golden " << t.intensity << " (psi=" << t.psi << " addr=" << t.addr << " bank=" << t.bank
+          << " cosk=" << t.cosk << ")";
+        note(st, m.str());
+      }
+      ++st.mismatches;
+    }
+    const double psi = device::angle_value(t.psi, f);
+    const double apsi = std::fabs(psi);
+    const double out = got * lsb;
+    // (b)
+    double ref_b = 0.0;
+    if (n_ok && a * apsi < kHalfPi) ref_b = c * std::pow(std::cos(a * apsi), k);
+    const double err_b = std::fabs(out - ref_b);
+    keep_max(st.quant_lsb, err_b / lsb, sl, static_cast<int>(i), psi, c);
+    if (n_ok) {
+      const double ex = half_step + coef_err * std::min(apsi, 8.0) + a * trunc;
+      const double bound = c * (dk_[bank] * ex + std::ldexp(1.0, -f.cos_data_bits)) + 0.5 * lsb;
+      keep_max(st.quant_excess, err_b / bound, sl, static_cast<int>(i), psi, c);
+      if (err_b > bound) {
+        if (st.quant_violations < 4)
+          note(st, st.policy + " quantization error " + std::to_string(err_b / lsb) + " LSB > bound " +
+                       std::to_string(bound / lsb) + " at n=" + std::to_string(r.n) + " psi=" + std::to_string(psi));
+        ++st.quant_violations;
+      }
+    } else if (got != 0) {
+      ++st.quant_violations;
+      note(st, st.policy + " invalid n=" + std::to_string(r.n) + " gave a nonzero pixel");
+    }
+    // (c)
+    double ref_c = 0.0;
+    if (n_ok && apsi < kHalfPi) ref_c = c * std::pow(std::cos(psi), static_cast<double>(r.n));
+    const double err_c = std::fabs(out - ref_c);
+    const double err_allow = std::max(0.0, err_c - lsb);
+    if (n_ok && apsi <= xe && ref_c > 0.0) {
+      ++st.epicenter_pixels;
+      keep_max(st.rel_raw, err_c / ref_c, sl, static_cast<int>(i), psi, c);
+      if (ref_c >= 0.5) keep_max(st.rel_raw_big, err_c / ref_c, sl, static_cast<int>(i), psi, c);
+      const bool over = err_c > budget_.rel_epicenter * ref_c + lsb;
+      if (r.n == 1) {
+        keep_max(st.rel_allow_n1, err_allow / ref_c, sl, static_cast<int>(i), psi, c);
+        if (over) {
+          ++st.n1_rel_over_budget;
+          st.n1_budget_holds_below = std::min(st.n1_budget_holds_below, apsi);
+        }
+      } else {
+        keep_max(st.rel_allow, err_allow / ref_c, sl, static_cast<int>(i), psi, c);
+      }
+      if (over && r.n != 1) {
+        if (st.rel_violations < 4)
+          note(st, st.policy + " epicenter error " + std::to_string(100 * err_c / ref_c) + "% at n=" +
+                       std::to_string(r.n) + " psi=" + std::to_string(psi) + " C=" + std::to_string(c));
+        ++st.rel_violations;
+        ++st.rel_violations_by_n[r.n];
+      }
+    }
+    if (c > 0.0) {
+      if (apsi <= kHalfPi) {
+        ++st.lobe_pixels;
+        keep_max(st.abs_raw, err_c / c, sl, static_cast<int>(i), psi, c);
+        keep_max(st.abs_allow, err_allow / c, sl, static_cast<int>(i), psi, c);
+      } else {
+        keep_max(st.abs_outside, err_allow / c, sl, static_cast<int>(i), psi, c);
+      }
+    }
+    // The absolute budget also holds past the lobe (reference 0 there).
+    if (err_c > budget_.abs_lobe * c + lsb) {
+      if (st.abs_violations < 4)
+        note(st, st.policy + " absolute error " + std::to_string(err_c / std::max(c, lsb)) + " C at n=" +
+                     std::to_string(r.n) + " psi=" + std::to_string(psi) + " C=" + std::to_string(c));
+      ++st.abs_violations;
+    }
+  }
+}
+
+}  // namespace specular::sim

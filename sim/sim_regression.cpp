@@ -1,0 +1,305 @@
+// sim_regression: rtl/specular_unit (Verilator) against the golden model and the double
+// references, for both coefficient policies. Run from the repository root (ROM paths are
+// relative). Exit 0 when every check passes, 1 on any failure, 2 on bad arguments.
+//   sim_regression                          full regression, both policies, summary table
+//   sim_regression --seed S --random N --policy minimax|maclaurin|both --json FILE
+//   sim_regression --vcd-dir DIR --vcd-only DIR/line_l3.vcd (l = 3) and DIR/line_long.vcd
+#include "Vspecular_unit_maclaurin.h"
+#include "Vspecular_unit_minimax.h"
+#include "checks.hpp"
+#include "coefficients.hpp"
+#include "harness.hpp"
+#include "rom_image.hpp"
+#include "scanline_setup.hpp"
+#include "scanlines.hpp"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <string>
+#include <vector>
+
+namespace {
+
+using specular::device::Format;
+using namespace specular::sim;
+
+// The formats the RTL was verilated with (sim/CMakeLists.txt) must be Format{}.
+bool format_matches_build(const Format& f, std::string& why) {
+  const std::vector<int> banks SIM_FMT_BANKS;
+  const std::vector<int> bank_max SIM_FMT_BANK_MAX_N;
+  struct Item { const char* name; int model, rtl; };
+  const Item items[] = {
+      {"c_bits", f.c_bits, SIM_FMT_C_BITS},           {"c_frac", f.c_frac, SIM_FMT_C_FRAC},
+      {"angle_bits", f.angle_bits, SIM_FMT_ANGLE_BITS}, {"angle_frac", f.angle_frac, SIM_FMT_ANGLE_FRAC},
+      {"acc_bits", f.acc_bits, SIM_FMT_ACC_BITS},     {"n_bits", f.n_bits, SIM_FMT_N_BITS},
+      {"len_bits", f.len_bits, SIM_FMT_LEN_BITS},     {"coef_bits", f.coef_bits, SIM_FMT_COEF_BITS},
+      {"coef_frac", f.coef_frac, SIM_FMT_COEF_FRAC},  {"psi_mul_frac", f.psi_mul_frac, SIM_FMT_PSI_MUL_FRAC},
+      {"cos_addr_bits", f.cos_addr_bits, SIM_FMT_COS_ADDR_BITS},
+      {"cos_data_bits", f.cos_data_bits, SIM_FMT_COS_DATA_BITS}};
+  for (const auto& it : items)
+    if (it.model != it.rtl) {
+      why = std::string(it.name) + ": Format has " + std::to_string(it.model) + ", RTL built with " +
+            std::to_string(it.rtl);
+      return false;
+    }
+  if (banks != f.banks || bank_max != f.bank_max_n) {
+    why = "bank set / decoder table differ between Format and the RTL build";
+    return false;
+  }
+  return true;
+}
+
+specular::device::Registers vcd_line(const Format& f, int l) {
+  // A highlight peak inside the span, n = 16 (bank k = 16): the intensity rises and falls.
+  specular::ScanlineInput in;
+  in.n1 = in.n2 = {0, 0, 1};
+  in.h1 = {std::sin(-0.3), 0, std::cos(-0.3)};
+  in.he = {std::sin(0.3), 0, std::cos(0.3)};
+  in.n = 16;
+  in.l = l;
+  const auto s = specular::scanline_setup(in);
+  return {specular::device::quantize_c(s.C, f), specular::device::quantize_angle(s.dpsi, f),
+          specular::device::quantize_angle(s.psi0, f), 16u, static_cast<uint32_t>(l)};
+}
+
+template <class V>
+int write_vcds(const Format& f, const std::string& dir, const std::string& coef_hex) {
+  std::filesystem::create_directories(dir);
+  Harness<V> h("specular_unit", specular::load_device_model(f, coef_hex, specular::kCosHex));
+  std::mt19937_64 rng(1);
+  for (auto [name, l] : {std::pair<const char*, int>{"line_l3.vcd", 3}, {"line_long.vcd", 40}}) {
+    const std::string path = (std::filesystem::path(dir) / name).string();
+    h.open_vcd(path);
+    h.idle(2);
+    const auto regs = vcd_line(f, l);
+    const LineRun run = h.run_line(regs, WriteMode::before_start, 0.0, 3, rng);
+    h.close_vcd();
+    const auto expect = h.model().line(regs);
+    if (!run.protocol_error.empty() || run.pixels != expect) {
+      std::cerr << "sim_regression: " << path << ": line does not match the golden model"
+                << (run.protocol_error.empty() ? "" : " (" + run.protocol_error + ")") << "\n";
+      return 1;
+    }
+    std::cout << "wrote " << path << " (l = " << l << ", latency " << run.latency << " cycles)\n";
+  }
+  return 0;
+}
+
+template <class V>
+PolicyStats run_policy(const Format& f, const std::string& policy, const std::string& coef_hex, Budget budget,
+                       const std::vector<Scanline>& det, const std::vector<Scanline>& rnd, uint64_t seed) {
+  PolicyStats st;
+  st.policy = policy;
+  st.budget = budget;
+  const auto t0 = std::chrono::steady_clock::now();
+  Harness<V> h("specular_unit", specular::load_device_model(f, coef_hex, specular::kCosHex));
+  const specular::CoefSpec spec = specular::parse_coef_spec(policy);
+  std::vector<double> a(f.coef_rom_depth(), 0.0);
+  for (int n = 1; n <= f.max_n(); ++n) a[n] = specular::coefficient(n, f.banks[h.model().bank_of(n)], spec);
+  const Checker checker(h.model(), a, budget);
+  std::mt19937_64 rng(seed ^ 0x5eed);
+  double sim_s = 0.0;
+  auto run = [&](const Scanline& sl, WriteMode mode, double poke, int gap, bool random) {
+    const auto s0 = std::chrono::steady_clock::now();
+    const LineRun r = h.run_line(sl.reg, mode, poke, gap, rng);
+    sim_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
+    checker.check_line(sl, r, random, st);
+  };
+  size_t idx = 0;
+  for (const auto* set : {&det, &rnd}) {
+    const bool random = set == &rnd;
+    for (const Scanline& sl : *set) {
+      ++idx;
+      const WriteMode mode = idx % 2 ? WriteMode::before_start : WriteMode::with_start;
+      const int gap = idx % 5 == 0 ? 2 : 0;  // mostly back to back: a start in the first idle cycle
+      if (idx % 16 == 0) {
+        // Garbage writes and starts while busy, then the same line again without writing:
+        // both must equal the golden line for the registers written before.
+        run(sl, mode, 0.3, gap, random);
+        run(sl, WriteMode::none, 0.0, gap, random);
+      } else {
+        run(sl, mode, 0.0, gap, random);
+      }
+    }
+  }
+  st.sim_seconds = sim_s;
+  st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  return st;
+}
+
+std::string pct(double v) {
+  char b[64];
+  std::snprintf(b, sizeof b, "%.4f%%", 100 * v);
+  return b;
+}
+std::string num(double v, const char* fmt = "%.3g") {
+  char b[64];
+  std::snprintf(b, sizeof b, fmt, v);
+  return b;
+}
+std::string where(const Extreme& e) {
+  char b[128];
+  std::snprintf(b, sizeof b, "n=%u psi=%+.5f C=%.4f", e.n, e.psi, e.c);
+  return b;
+}
+
+void print_table(const std::vector<PolicyStats>& all) {
+  std::vector<std::pair<std::string, std::vector<std::string>>> rows;
+  auto row = [&](const std::string& name, auto fn) {
+    std::vector<std::string> cells;
+    for (const auto& s : all) cells.push_back(fn(s));
+    rows.emplace_back(name, cells);
+  };
+  row("scanlines (det + random)", [](const PolicyStats& s) {
+    return std::to_string(s.lines) + " (" + std::to_string(s.det_lines) + " + " + std::to_string(s.rnd_lines) + ")";
+  });
+  row("pixels (det + random)", [](const PolicyStats& s) {
+    return std::to_string(s.pixels) + " (" + std::to_string(s.det_pixels) + " + " + std::to_string(s.rnd_pixels) + ")";
+  });
+  row("lines with C saturated", [](const PolicyStats& s) { return std::to_string(s.c_saturated_lines); });
+  row("(a) golden mismatches", [](const PolicyStats& s) { return std::to_string(s.mismatches); });
+  row("(b) max quantization err [LSB]", [](const PolicyStats& s) { return num(s.quant_lsb.value, "%.2f"); });
+  row("(b) max err / format bound", [](const PolicyStats& s) { return num(s.quant_excess.value, "%.3f"); });
+  row("(b) bound violations", [](const PolicyStats& s) { return std::to_string(s.quant_violations); });
+  row("(c) budget rel / abs", [](const PolicyStats& s) {
+    return pct(s.budget.rel_epicenter) + " / " + num(s.budget.abs_lobe, "%.3f") + " C";
+  });
+  row("(c) epicenter pixels", [](const PolicyStats& s) { return std::to_string(s.epicenter_pixels); });
+  row("(c) max rel epi, +1 LSB, n >= 2", [](const PolicyStats& s) { return pct(s.rel_allow.value); });
+  row("    at", [](const PolicyStats& s) { return where(s.rel_allow); });
+  row("(c) max rel epi, no allowance", [](const PolicyStats& s) { return pct(s.rel_raw.value); });
+  row("    at", [](const PolicyStats& s) { return where(s.rel_raw); });
+  row("(c) same, only ref >= 0.5", [](const PolicyStats& s) { return pct(s.rel_raw_big.value); });
+  row("    at", [](const PolicyStats& s) { return where(s.rel_raw_big); });
+  row("(c) n = 1: max rel epi, +1 LSB", [](const PolicyStats& s) { return pct(s.rel_allow_n1.value); });
+  row("    at", [](const PolicyStats& s) { return where(s.rel_allow_n1); });
+  row("(c) n = 1: budget holds for |psi| <", [](const PolicyStats& s) {
+    return s.n1_rel_over_budget ? num(s.n1_budget_holds_below, "%.4f") + " (" + std::to_string(s.n1_rel_over_budget) + " px over)"
+                                : std::string("pi/2 (everywhere)");
+  });
+  row("(c) max abs lobe / C, +1 LSB", [](const PolicyStats& s) { return num(s.abs_allow.value, "%.5f"); });
+  row("    at", [](const PolicyStats& s) { return where(s.abs_allow); });
+  row("(c) max abs lobe / C, no allow.", [](const PolicyStats& s) { return num(s.abs_raw.value, "%.5f"); });
+  row("(c) max abs past pi/2 / C, +1 LSB", [](const PolicyStats& s) { return num(s.abs_outside.value, "%.5f"); });
+  row("(c) rel / abs violations", [](const PolicyStats& s) {
+    return std::to_string(s.rel_violations) + " / " + std::to_string(s.abs_violations);
+  });
+  row("(d) protocol errors", [](const PolicyStats& s) { return std::to_string(s.protocol_errors); });
+  row("latency start->1st pixel [cyc]", [](const PolicyStats& s) {
+    std::string t;
+    for (const auto& [l, c] : s.latency) t += (t.empty() ? "" : ", ") + std::to_string(l) + " (" + std::to_string(c) + " lines)";
+    return t;
+  });
+  row("cycles / pixel (all lines)", [](const PolicyStats& s) { return num(double(s.cycles) / s.pixels, "%.4f"); });
+  row("cycles / pixel (l = 2047)", [](const PolicyStats& s) {
+    return num(s.long_line_pixels ? double(s.long_line_cycles) / s.long_line_pixels : 0.0, "%.4f");
+  });
+  row("simulated pixels / s (RTL only)", [](const PolicyStats& s) { return num(s.pixels / s.sim_seconds, "%.3e"); });
+  row("checked pixels / s (all checks)", [](const PolicyStats& s) { return num(s.pixels / s.seconds, "%.3e"); });
+  row("result", [](const PolicyStats& s) { return std::string(s.ok() ? "PASS" : "FAIL"); });
+
+  size_t w0 = 0;
+  std::vector<size_t> w(all.size(), 0);
+  for (const auto& [name, cells] : rows) {
+    w0 = std::max(w0, name.size());
+    for (size_t j = 0; j < cells.size(); ++j) w[j] = std::max(w[j], cells[j].size());
+  }
+  for (size_t j = 0; j < all.size(); ++j) w[j] = std::max(w[j], all[j].policy.size());
+  auto line = [&](const std::string& name, const std::vector<std::string>& cells) {
+    std::printf("| %-*s |", static_cast<int>(w0), name.c_str());
+    for (size_t j = 0; j < cells.size(); ++j) std::printf(" %-*s |", static_cast<int>(w[j]), cells[j].c_str());
+    std::printf("\n");
+  };
+  std::vector<std::string> head;
+  for (const auto& s : all) head.push_back(s.policy);
+  line("policy", head);
+  std::printf("|%s|", std::string(w0 + 2, '-').c_str());
+  for (size_t j = 0; j < all.size(); ++j) std::printf("%s|", std::string(w[j] + 2, '-').c_str());
+  std::printf("\n");
+  for (const auto& [name, cells] : rows) line(name, cells);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const Format f;
+  uint64_t seed = 20260522;
+  int random_lines = 100000;
+  std::string policy = "both", vcd_dir, json_path;
+  bool vcd_only = false;
+
+  CLI::App app{"Verilator regression of specular_unit against the golden model"};
+  app.add_option("--seed", seed, "seed of the random scanlines")->capture_default_str();
+  app.add_option("--random", random_lines, "random scanlines per policy")
+      ->check(CLI::Range(0, 10000000))
+      ->capture_default_str();
+  app.add_option("--policy", policy, "coefficient policy to simulate")
+      ->check(CLI::IsMember({"minimax", "maclaurin", "both"}))
+      ->capture_default_str();
+  app.add_option("--vcd-dir", vcd_dir, "write line_l3.vcd and line_long.vcd (minimax build) into DIR");
+  app.add_flag("--vcd-only", vcd_only, "only write the VCD files, no regression")->needs("--vcd-dir");
+  app.add_option("--json", json_path, "also write the summary as JSON to FILE");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::CallForHelp& e) {
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    std::cerr << "sim_regression: " << e.what() << "\n";
+    return 2;
+  }
+
+  std::string why;
+  if (!format_matches_build(f, why)) {
+    std::cerr << "sim_regression: the RTL was verilated with other formats than device::Format: " << why << "\n";
+    return 1;
+  }
+  try {
+    if (!vcd_dir.empty()) {
+      const int rc = write_vcds<Vspecular_unit_minimax>(f, vcd_dir, specular::kCoefMinimaxHex);
+      if (rc != 0 || vcd_only) return rc;
+    }
+
+    std::cout << "seed: " << seed << " (override with --seed), random scanlines per policy: " << random_lines << "\n";
+    const auto det = deterministic_scanlines(f);
+    const auto rnd = random_scanlines(f, seed, random_lines);
+    std::vector<PolicyStats> all;
+    if (policy == "minimax" || policy == "both")
+      all.push_back(run_policy<Vspecular_unit_minimax>(f, "minimax", specular::kCoefMinimaxHex, {0.0025, 0.02}, det,
+                                                       rnd, seed));
+    if (policy == "maclaurin" || policy == "both")
+      all.push_back(run_policy<Vspecular_unit_maclaurin>(f, "maclaurin", specular::kCoefMaclaurinHex,
+                                                         {0.012, 0.025}, det, rnd, seed));
+    print_table(all);
+    bool ok = true;
+    for (const auto& s : all) {
+      ok = ok && s.ok();
+      for (const auto& msg : s.failures) std::cout << "FAIL " << msg << "\n";
+      for (const auto& [n, cnt] : s.rel_violations_by_n)
+        std::cout << "FAIL " << s.policy << ": " << cnt << " epicenter pixels over budget at n = " << n << "\n";
+      if (s.latency.size() > 1) std::cout << "FAIL " << s.policy << ": latency not constant\n";
+    }
+    if (!json_path.empty()) {
+      nlohmann::json j = {{"seed", seed}, {"random_lines_per_policy", random_lines}, {"ok", ok}};
+      for (const auto& s : all) j["policies"][s.policy] = s.to_json();
+      const std::string tmp = json_path + ".tmp";
+      {
+        std::ofstream out(tmp);
+        out << j.dump(2) << "\n";
+        if (!out) throw std::runtime_error("cannot write " + tmp);
+      }
+      std::filesystem::rename(tmp, json_path);
+      std::cout << "wrote " << json_path << "\n";
+    }
+    std::cout << (ok ? "sim_regression: PASS" : "sim_regression: FAIL") << "\n";
+    return ok ? 0 : 1;
+  } catch (const std::exception& e) {
+    std::cerr << "sim_regression: " << e.what() << "\n";
+    return 1;
+  }
+}
