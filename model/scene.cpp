@@ -379,7 +379,7 @@ Mesh parse_mesh(const Reader& rd, const json& m, const std::string& f, const std
     rd.only_keys(m, f, {"type", "material", "vertices", "normals", "triangles"});
     mesh.kind = "triangles";
     const json& vs = rd.array(m, "vertices", f + ".vertices", 3);
-    const json& ns = rd.array(m, "normals", f + ".normals", 3);
+    const json& ns = rd.array(m, "normals", f + ".normals", 1);
     if (ns.size() != vs.size())
       rd.fail(f + ".normals", "one normal per vertex (" + std::to_string(vs.size()) + " normals)", &ns);
     for (size_t i = 0; i < vs.size(); ++i) {

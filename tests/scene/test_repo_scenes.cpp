@@ -1,0 +1,160 @@
+// Every repository scene loads and rasterizes into sane spans; scene-specific
+// properties (short spans, long spans, sphere silhouettes) against geometry.
+#include "image.hpp"
+#include "raster.hpp"
+#include "scanline_setup.hpp"
+#include "scene.hpp"
+
+#include <catch2/catch.hpp>
+#include <glm/geometric.hpp>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <numbers>
+
+using namespace specular;
+using Catch::Matchers::WithinAbs;
+using Catch::Matchers::WithinRel;
+
+namespace {
+
+const char* kScenes[] = {"spheres", "torus_point", "grazing_plane", "dense_mesh", "wide_glint"};
+
+struct Loaded {
+  Scene scene;
+  Raster raster;
+};
+
+// Each scene is loaded and rasterized once per test run.
+const Loaded& loaded(const std::string& name) {
+  static std::map<std::string, Loaded> cache;
+  auto it = cache.find(name);
+  if (it == cache.end()) {
+    Loaded l;
+    l.scene = load_scene("scenes/" + name + ".json");
+    l.raster = rasterize(l.scene);
+    it = cache.emplace(name, std::move(l)).first;
+  }
+  return it->second;
+}
+const Scene& scene_of(const std::string& name) { return loaded(name).scene; }
+const Raster& raster_of(const std::string& name) { return loaded(name).raster; }
+
+}  // namespace
+
+TEST_CASE("the required scene files exist", "[scene][repo]") {
+  for (const char* n : kScenes) CHECK(std::filesystem::exists(std::string("scenes/") + n + ".json"));
+  CHECK(std::filesystem::exists("scenes/README.md"));
+}
+
+TEST_CASE("repository scenes rasterize into non-overlapping spans inside the image", "[scene][repo]") {
+  const std::string name = GENERATE(from_range(std::begin(kScenes), std::end(kScenes)));
+  INFO(name);
+  const Scene& s = scene_of(name);
+  const Raster& r = raster_of(name);
+  CHECK(r.stats.triangles == s.triangle_count());
+  CHECK(r.stats.triangles_dropped == 0);
+  REQUIRE(r.spans.size() > 0);
+  CHECK(r.stats.spans == r.spans.size());
+  std::vector<int> count(static_cast<size_t>(s.width) * s.height * s.lights.size(), 0);
+  size_t shaded = 0;
+  for (const Span& sp : r.spans) {
+    REQUIRE(sp.y >= 0);
+    REQUIRE(sp.y < s.height);
+    REQUIRE(sp.x_start >= 0);
+    REQUIRE(sp.x_end < s.width);
+    REQUIRE(sp.x_start <= sp.x_end);
+    REQUIRE(sp.setup_in.l == sp.x_end - sp.x_start);
+    REQUIRE(sp.setup_in.l <= kMaxLen);
+    for (int x = sp.x_start; x <= sp.x_end; ++x)
+      ++count[(static_cast<size_t>(sp.light) * s.height + sp.y) * s.width + x];
+    shaded += sp.pixels();
+  }
+  CHECK(*std::max_element(count.begin(), count.end()) == 1);
+  CHECK(shaded == r.stats.shaded_pixels);
+  CHECK(shaded == r.stats.covered_pixels * s.lights.size());
+}
+
+TEST_CASE("spheres: four silhouettes of area pi r^2, normals match the analytic sphere", "[scene][repo]") {
+  const Scene& s = scene_of("spheres");
+  const Raster& r = raster_of("spheres");
+  REQUIRE(s.meshes.size() == 4);
+  const double px_per_unit = s.height / s.camera.height;
+  for (int m = 0; m < 4; ++m) {
+    long pixels = 0;
+    for (const Span& sp : r.spans)
+      if (sp.mesh == m) pixels += sp.pixels();
+    const double rad = 0.95 * px_per_unit;
+    // The tessellated outline is inscribed: slightly below pi r^2.
+    CHECK(pixels < std::numbers::pi * rad * rad * 1.005);
+    CHECK(pixels > std::numbers::pi * rad * rad * 0.98);
+  }
+  // Orthographic view along -z: the visible point of pixel (x, y) of sphere (c, R) has the
+  // analytic normal ((x_w - cx), (y_w - cy), sqrt(R^2 - ...)) / R.
+  const double half_w = 0.5 * s.camera.height * s.width / s.height;
+  double worst = 0;
+  for (const Span& sp : r.spans) {
+    const glm::dvec3 c = glm::dvec3(-3.0 + 2.0 * sp.mesh, 0, 0);
+    const double xw = (sp.x_start + 0.5) / s.width * 2 * half_w - half_w;
+    const double yw = s.camera.height / 2 - (sp.y + 0.5) / s.height * s.camera.height;
+    const double d2 = (xw - c.x) * (xw - c.x) + (yw - c.y) * (yw - c.y);
+    if (d2 > 0.8 * 0.95 * 0.95) continue;  // stay off the silhouette
+    const glm::dvec3 n{(xw - c.x) / 0.95, (yw - c.y) / 0.95, std::sqrt(0.95 * 0.95 - d2) / 0.95};
+    worst = std::max(worst, std::acos(std::min(1.0, glm::dot(n, sp.setup_in.n1))));
+  }
+  CHECK(worst < 0.02);  // tessellation 24: facets of 7.5 degrees, smooth normals far closer
+  CHECK(worst > 0.0);
+}
+
+TEST_CASE("dense mesh: many spans of one and two pixels", "[scene][repo]") {
+  const Raster& r = raster_of("dense_mesh");
+  CHECK(r.stats.spans_l0 > 1000);
+  CHECK(r.stats.spans_l1 > 100);
+  // Many triangles per scanline: far more spans than rows.
+  CHECK(r.stats.spans > 20u * static_cast<size_t>(r.height));
+}
+
+TEST_CASE("grazing plane: one full-width span per row, tiny nonzero dpsi", "[scene][repo]") {
+  const Scene& s = scene_of("grazing_plane");
+  const Raster& r = raster_of("grazing_plane");
+  // The plane covers the whole view and the view lies inside one of its two triangles.
+  CHECK(r.stats.spans == static_cast<size_t>(s.height));
+  CHECK(r.stats.max_l == s.width - 1);
+  for (const Span& sp : r.spans) CHECK(sp.length() == s.width - 1);
+  // H changes by a few degrees over 511 pixels: dpsi is tiny but not zero.
+  double max_dpsi = 0, min_dpsi = 1;
+  for (const Span& sp : r.spans) {
+    const ScanlineSetup st = scanline_setup(sp.setup_in);
+    max_dpsi = std::max(max_dpsi, std::abs(st.dpsi));
+    min_dpsi = std::min(min_dpsi, std::abs(st.dpsi));
+  }
+  CHECK(max_dpsi < 2e-4);
+  CHECK(min_dpsi > 1e-6);
+}
+
+TEST_CASE("torus with a point light: H differs between the ends of long spans", "[scene][repo]") {
+  const Raster& r = raster_of("torus_point");
+  size_t varying = 0;
+  for (const Span& sp : r.spans)
+    if (sp.length() > 20 && glm::length(sp.setup_in.h1 - sp.setup_in.he) > 1e-3) ++varying;
+  CHECK(varying > 50);
+}
+
+TEST_CASE("interpolation-model error is small where the model should hold", "[scene][repo]") {
+  // Directional light and orthographic camera (spheres, dense mesh): the only error left is
+  // slerp versus normalized lerp of the normal over short spans; for a span of angle g the
+  // cosine differs by O(g^2 / 8), far below 1e-2 for facets of a few degrees.
+  for (const char* name : {"spheres", "dense_mesh"}) {
+    INFO(name);
+    const Scene& s = scene_of(name);
+    const Raster& r = raster_of(name);
+    const Image truth = render(r, phong_evaluator(s));
+    const Image model = render(r, float_model_evaluator());
+    const ImageErrorStats e = error_stats(difference(model, truth));
+    CHECK(e.pixels == r.stats.covered_pixels);
+    CHECK(e.max_abs < 1e-2);
+    CHECK(e.max_abs > 0.0);
+  }
+}
