@@ -124,9 +124,9 @@ std::string model_name(Model m) {
   return "?";
 }
 
-Evaluator make_evaluator(Model model, const ModelParams& p) {
+ModelEvaluator make_evaluator(Model model, const ModelParams& p) {
   if (!(p.n >= 1.0) || !std::isfinite(p.n)) throw std::invalid_argument("model: n must be a finite number >= 1");
-  Evaluator e;
+  ModelEvaluator e;
   e.model = model;
   e.n = p.n;
   e.Q = p.Q;
@@ -169,7 +169,7 @@ Evaluator make_evaluator(Model model, const ModelParams& p) {
   return e;
 }
 
-double Evaluator::shape(double x) const {
+double ModelEvaluator::shape(double x) const {
   // Past pi/2 the halfway vector is below the surface: every model is 0 there (the
   // cos^k(a x) family alone is only cut at a x = pi/2, which lies beyond pi/2 when a < 1).
   if (std::abs(x) >= kHalfPi) return 0.0;
@@ -187,7 +187,7 @@ double Evaluator::shape(double x) const {
   return 0.0;
 }
 
-double Evaluator::own_norm() const {
+double ModelEvaluator::own_norm() const {
   switch (model) {
     case Model::phong: return phong_norm(n);
     case Model::f16: return f16_norm(n);

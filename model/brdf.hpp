@@ -5,7 +5,7 @@
 // c = cos x. Every shape is 0 for x >= pi/2 (c <= 0: light below the surface), except the
 // cos^k(a x) family (cosk_shape, patent, prototype, kutlog_shape), which follows the ROM's
 // rule (0 for a|x| >= pi/2) and so is nonzero slightly past pi/2 when a < 1 (n < k).
-// Evaluator::shape cuts every model at pi/2.
+// ModelEvaluator::shape cuts every model at pi/2.
 #pragma once
 
 #include "coefficients.hpp"
@@ -64,7 +64,7 @@ struct ModelParams {
 // own_norm() is the model's normalization: blinn, patent, prototype, schlick,
 // schlick-mod and lyon stand in for cos^n in a Blinn-Phong pipeline and use
 // (n+8)/(8 pi); phong uses (n+2)/(2 pi); f16 (n+6)/24.55; kutlog its exact coef.
-struct Evaluator {
+struct ModelEvaluator {
   Model model = Model::blinn;
   double n = 1.0;
   int k = 0;          // exponent of the cos^k(a x) family (blinn: none, 0), lyon: m
@@ -79,6 +79,6 @@ struct Evaluator {
 };
 
 // Throws std::invalid_argument on bad parameters (n < 1, kutlog without k, ...).
-Evaluator make_evaluator(Model model, const ModelParams& p);
+ModelEvaluator make_evaluator(Model model, const ModelParams& p);
 
 }  // namespace specular

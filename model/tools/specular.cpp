@@ -245,7 +245,7 @@ int main(int argc, char** argv) {
       out.row({"model", "n", "k", "a", "max_rel_epicenter", "max_abs_lobe"});
       for (double n : ns) {
         p.n = n;
-        const Evaluator ev = make_evaluator(*model, p);
+        const ModelEvaluator ev = make_evaluator(*model, p);
         const ShapeError se = shape_error(ev, n);
         std::string k = ev.k > 0 ? std::to_string(ev.k) : "nan";
         if (*model == Model::blinn) k = num(n);
@@ -310,7 +310,7 @@ int main(int argc, char** argv) {
       out.row({"model", "n", "albedo"});
       for (double n : ns) {
         p.n = n;
-        const Evaluator ev = make_evaluator(*model, p);
+        const ModelEvaluator ev = make_evaluator(*model, p);
         const double raw = albedo(ev, conv, n);
         double s = 1.0;
         if (a_norm == "own") s = *model == Model::kutlog ? 1.0 / albedo(ev, Convention::phong, n) : ev.own_norm();

@@ -16,7 +16,7 @@ TEST_CASE("every shape is 1 at x = 0 and 0 past pi/2", "[brdf]") {
     p.n = n;
     p.k = name == "kutlog" ? 3 : 0;
     p.Q = 0.4;
-    const Evaluator ev = make_evaluator(*parse_model(name), p);
+    const ModelEvaluator ev = make_evaluator(*parse_model(name), p);
     INFO(name << " n=" << n);
     CHECK_THAT(ev(0.0), WithinAbs(1.0, 1e-15));
     CHECK(ev(1.6) == 0.0);

@@ -110,7 +110,7 @@ TEST_CASE("every metric agrees with a brute-force long double sweep", "[metrics]
   for (const auto& cs : cases) {
     ModelParams p;
     p.n = n;
-    Evaluator ev;
+    ModelEvaluator ev;
     const std::string nm = cs.name;
     if (nm == "patent-minimax") {
       p.coef.policy = CoefPolicy::minimax;
@@ -134,7 +134,7 @@ TEST_CASE("albedo agrees with a long double midpoint sum", "[metrics]") {
   for (const char* nm : {"schlick", "lyon", "prototype"}) {
     ModelParams p;
     p.n = n;
-    const Evaluator ev = make_evaluator(*parse_model(nm), p);
+    const ModelEvaluator ev = make_evaluator(*parse_model(nm), p);
     for (Convention conv : {Convention::phong, Convention::blinn}) {
       const double s = conv == Convention::phong ? 1.0 : 0.5;
       const int N = 200000;
