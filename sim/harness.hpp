@@ -60,7 +60,7 @@ class Harness {
     vcd_ = std::make_unique<VerilatedVcdC>();
     top_->trace(vcd_.get(), 99);
     vcd_->open(path.c_str());
-    dump(0);
+    vcd_base_ = cycle_;  // the file starts at time 0
   }
   void close_vcd() {
     if (vcd_) {
@@ -206,10 +206,10 @@ class Harness {
     sampled_busy_ = top_->busy_o;
     sampled_valid_ = top_->valid_o;
     sampled_intensity_ = top_->intensity_o;
-    dump(10 * cycle_);
+    dump(10 * (cycle_ - vcd_base_));
     top_->clk_i = 1;
     top_->eval();
-    dump(10 * cycle_ + 5);
+    dump(10 * (cycle_ - vcd_base_) + 5);
     ++cycle_;
   }
   void dump(uint64_t t) {
@@ -221,7 +221,7 @@ class Harness {
   std::unique_ptr<VerilatedContext> ctx_;
   std::unique_ptr<V> top_;
   std::unique_ptr<VerilatedVcdC> vcd_;
-  uint64_t cycle_ = 0;
+  uint64_t cycle_ = 0, vcd_base_ = 0;
   bool sampled_busy_ = false, sampled_valid_ = false;
   uint32_t sampled_intensity_ = 0;
 };
