@@ -44,6 +44,24 @@ Evaluator float_model_evaluator() {
   };
 }
 
+device::Registers span_registers(const Span& span, const device::Format& f, bool* c_saturated) {
+  const ScanlineSetup st = scanline_setup(span.setup_in);
+  device::Registers r;
+  r.c = device::quantize_c(st.C, f, c_saturated);
+  r.psi0 = device::quantize_angle(st.psi0, f);
+  r.dpsi = device::quantize_angle(st.dpsi, f);
+  r.n = static_cast<uint32_t>(std::clamp(std::lround(span.setup_in.n), 1L, static_cast<long>(f.max_n())));
+  r.len = static_cast<uint32_t>(span.length());
+  return r;
+}
+
+Evaluator golden_evaluator(const device::DeviceModel& dm) {
+  return [&dm](const Span& s, std::span<double> out) {
+    const std::vector<uint32_t> line = dm.line(span_registers(s, dm.format()));
+    for (size_t i = 0; i < out.size() && i < line.size(); ++i) out[i] = device::c_value(line[i], dm.format());
+  };
+}
+
 Image difference(const Image& a, const Image& b) {
   if (a.width != b.width || a.height != b.height) throw std::invalid_argument("difference: image sizes differ");
   Image d(a.width, a.height);

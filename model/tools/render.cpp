@@ -4,9 +4,13 @@
 //
 // Writes <out>/<scene>_phong.png, <scene>_float.png, <scene>_interp_error.png
 // (heatmap of float - phong) and prints one CSV line of statistics on stdout.
+// With --golden also <scene>_golden.png (bit-accurate device model fed with the
+// quantized span registers) and <scene>_device_error.png (golden - float), and four
+// more CSV columns. An RTL image is one more evaluator (see image.hpp).
 // Exit codes: 0 ok, 2 bad arguments or bad scene file, 1 I/O failure.
 #include "image.hpp"
 #include "raster.hpp"
+#include "rom_image.hpp"
 #include "scene.hpp"
 
 #include <CLI/CLI.hpp>
@@ -15,6 +19,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <optional>
 #include <system_error>
 
 namespace {
@@ -32,10 +37,15 @@ int main(int argc, char** argv) {
   std::string scene_path, out_dir;
   double scale = 0.0;
   bool csv_header = false;
+  bool golden = false;
+  std::string coef_rom = specular::kCoefMinimaxHex, cos_rom = specular::kCosHex;
   app.add_option("--scene", scene_path, "scene JSON file (format: scenes/README.md)")->required();
   app.add_option("--out-dir", out_dir, "directory for the PNG images (created if missing)")->required();
   app.add_option("--scale", scale, "intensity multiplier for the grey images, (0, 1000]; default: 1 / peak of the Phong image");
   app.add_flag("--csv-header", csv_header, "print the CSV header line before the statistics");
+  app.add_flag("--golden", golden, "also render the bit-accurate device model and the device-error heatmap");
+  app.add_option("--coef-rom", coef_rom, "ROM 9 hex file for --golden (coefficient policy)")->capture_default_str();
+  app.add_option("--cos-rom", cos_rom, "ROM 12 hex file for --golden")->capture_default_str();
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -57,6 +67,17 @@ int main(int argc, char** argv) {
     return 2;
   }
 
+  std::optional<specular::device::DeviceModel> dm;
+  if (golden) {
+    try {
+      dm.emplace(specular::load_device_model(specular::device::Format{}, coef_rom, cos_rom));
+    } catch (const std::exception& e) {
+      std::cerr << "render: --coef-rom " << coef_rom << " / --cos-rom " << cos_rom
+                << ": expected readable ROM hex files of the default device format: " << e.what() << "\n";
+      return 2;
+    }
+  }
+
   const auto t0 = Clock::now();
   const specular::Raster raster = specular::rasterize(scene);
   const double raster_ms = ms_since(t0);
@@ -68,6 +89,22 @@ int main(int argc, char** argv) {
   const double float_ms = ms_since(t2);
   const specular::Image err = specular::difference(flt, phong);
   const specular::ImageErrorStats es = specular::error_stats(err);
+  specular::Image gold, dev_err;
+  specular::ImageErrorStats ds;
+  double golden_ms = 0;
+  size_t saturated = 0;
+  if (dm) {
+    const auto t3 = Clock::now();
+    gold = specular::render(raster, specular::golden_evaluator(*dm));
+    golden_ms = ms_since(t3);
+    dev_err = specular::difference(gold, flt);
+    ds = specular::error_stats(dev_err);
+    for (const auto& sp : raster.spans) {
+      bool sat = false;
+      specular::span_registers(sp, dm->format(), &sat);
+      saturated += sat;
+    }
+  }
 
   double peak = 0;
   for (double v : phong.value) peak = std::max(peak, v);
@@ -84,12 +121,20 @@ int main(int argc, char** argv) {
     return 1;
   }
   const fs::path base = fs::path(out_dir) / scene.name;
-  const std::string names[3] = {base.string() + "_phong.png", base.string() + "_float.png",
-                                base.string() + "_interp_error.png"};
+  std::vector<std::string> names = {base.string() + "_phong.png", base.string() + "_float.png",
+                                    base.string() + "_interp_error.png"};
+  if (dm) {
+    names.push_back(base.string() + "_golden.png");
+    names.push_back(base.string() + "_device_error.png");
+  }
   try {
     specular::write_png(names[0] + ".tmp", phong, scale);
     specular::write_png(names[1] + ".tmp", flt, scale);
     specular::write_heatmap_png(names[2] + ".tmp", err, "FLOAT - PHONG");
+    if (dm) {
+      specular::write_png(names[3] + ".tmp", gold, scale);
+      specular::write_heatmap_png(names[4] + ".tmp", dev_err, "GOLDEN - FLOAT");
+    }
     for (const auto& n : names) fs::rename(n + ".tmp", n);
   } catch (const std::exception& e) {
     for (const auto& n : names) fs::remove(n + ".tmp", ec);
@@ -101,9 +146,12 @@ int main(int argc, char** argv) {
   if (csv_header)
     std::printf(
         "scene,width,height,triangles,spans,covered_pixels,shaded_pixels,max_l,spans_l0,spans_l1,"
-        "max_abs_interp_error,rms_interp_error,peak_phong,image_scale,raster_ms,phong_ms,float_ms\n");
-  std::printf("%s,%d,%d,%zu,%zu,%zu,%zu,%d,%zu,%zu,%.6e,%.6e,%.6f,%.4g,%.2f,%.2f,%.2f\n", scene.name.c_str(), scene.width,
+        "max_abs_interp_error,rms_interp_error,peak_phong,image_scale,raster_ms,phong_ms,float_ms%s\n",
+        dm ? ",max_abs_device_error,rms_device_error,c_saturated_spans,golden_ms" : "");
+  std::printf("%s,%d,%d,%zu,%zu,%zu,%zu,%d,%zu,%zu,%.6e,%.6e,%.6f,%.4g,%.2f,%.2f,%.2f", scene.name.c_str(), scene.width,
               scene.height, st.triangles, st.spans, st.covered_pixels, st.shaded_pixels, st.max_l, st.spans_l0,
               st.spans_l1, es.max_abs, es.rms, peak, scale, raster_ms, phong_ms, float_ms);
+  if (dm) std::printf(",%.6e,%.6e,%zu,%.2f", ds.max_abs, ds.rms, saturated, golden_ms);
+  std::printf("\n");
   return 0;
 }

@@ -1,6 +1,7 @@
 // Every repository scene loads and rasterizes into sane spans; scene-specific
 // properties (short spans, long spans, sphere silhouettes) against geometry.
 #include "image.hpp"
+#include "rom_image.hpp"
 #include "raster.hpp"
 #include "scanline_setup.hpp"
 #include "scene.hpp"
@@ -157,4 +158,39 @@ TEST_CASE("interpolation-model error is small where the model should hold", "[sc
     CHECK(e.max_abs < 1e-2);
     CHECK(e.max_abs > 0.0);
   }
+}
+
+TEST_CASE("span registers: the scanline setup rounded to the device formats", "[scene][repo][device]") {
+  const Raster& r = raster_of("torus_point");
+  const device::Format f;
+  size_t checked = 0;
+  for (size_t k = 0; k < r.spans.size(); k += 97) {
+    const Span& sp = r.spans[k];
+    const ScanlineSetup st = scanline_setup(sp.setup_in);
+    if (!(st.C < 1.9)) continue;  // keep clear of saturation here
+    const device::Registers reg = span_registers(sp, f);
+    // Independent rounding: C has 15 fraction bits, angles 28.
+    CHECK(reg.c == static_cast<uint32_t>(std::llround(st.C * 32768.0)));
+    CHECK(reg.psi0 == std::llround(st.psi0 * 268435456.0));
+    CHECK(reg.dpsi == std::llround(st.dpsi * 268435456.0));
+    CHECK(reg.n == 40u);
+    CHECK(reg.len == static_cast<uint32_t>(sp.length()));
+    ++checked;
+  }
+  CHECK(checked > 20);
+}
+
+TEST_CASE("golden device image stays within the device error budget of the float model", "[scene][repo][device]") {
+  // spheres: directional light, n = 1, 5, 50, 500, C <= 0.9. The device approximates cos^n
+  // by cos^k(a psi) (k = 1, 4, 16, 16 here); its absolute lobe error is below about 1% of C,
+  // and the 16-bit formats add ~1e-4. A wrong register format or ROM would give O(C) errors.
+  const Raster& r = raster_of("spheres");
+  const device::DeviceModel dm = load_device_model(device::Format{}, kCoefMinimaxHex, kCosHex);
+  const Image flt = render(r, float_model_evaluator());
+  const Image gold = render(r, golden_evaluator(dm));
+  const ImageErrorStats e = error_stats(difference(gold, flt));
+  CHECK(e.pixels == r.stats.covered_pixels);
+  CHECK(e.max_abs < 0.02);
+  CHECK(e.max_abs > 0.0);
+  for (size_t k = 0; k < gold.value.size(); ++k) CHECK(gold.value[k] >= 0.0);
 }
