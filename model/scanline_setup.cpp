@@ -10,9 +10,11 @@
 //    The limit N2 -> -N1 depends on the direction of approach, so no rule can be continuous
 //    there; away from exact opposition the rotation is computed stably (below).
 //  * gamma = 0 (H2 = H1): u is undefined, we set N1.u = 0, so lambda = 0 (or pi) and dpsi = 0.
-//    The only threshold is exact equality: for tiny gamma u is computed from H2 - H1 without
-//    cancellation, and whatever lambda results, A cos(lambda) = N1.H1 and dpsi ~ gamma, so every
-//    pixel is continuous as gamma -> 0.
+//    The only threshold is the rounding-noise floor of the chord |H2 - H1| (16 ulp, gamma ~
+//    3.6e-15): below it the chord's direction is noise, so gamma is set to 0. Above it u is
+//    computed from H2 - H1 without cancellation and re-orthogonalized against H1; whatever
+//    lambda results, A cos(lambda) = N1.H1 and dpsi ~ gamma, so every pixel is continuous
+//    across the floor (the change is O(1e-15)).
 //  * gamma = pi (H2 = -H1): opposite_halfway, great circle through N1.
 //  * cos t1 <= 0, psi beyond +-pi/2: no special case; lambda is in (-pi, pi] and the pixel
 //    clamp (|psi| >= pi/2 gives 0) handles it. A = 0 gives C = 0.
@@ -23,6 +25,7 @@
 #include <glm/geometric.hpp>
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace specular {
@@ -136,8 +139,13 @@ ScanlineSetup scanline_setup(const ScanlineInput& in) {
 
   // 3. u: unit vector in the plane of H1, H2, orthogonal to H1, towards H2.
   //    d + (|d|^2 / 2) H1 is exactly H2 - (H1.H2) H1, computed without cancellation.
+  //    A chord of a few ulp is rounding noise of step 1 (rotation, normalization): its
+  //    direction means nothing, and taking u from it gave A > 1 (C saturated) for N1 = N2,
+  //    H1 = He. Below kChordNoise gamma is 0; pixel values change by O(kChordNoise) there.
+  constexpr double kChordNoise = 16.0 * std::numeric_limits<double>::epsilon();
   double nu = 0.0;
-  if (ld == 0.0) {
+  if (ld <= kChordNoise) {
+    s.gamma = 0.0;
     nu = 0.0;  // gamma = 0: u undefined and irrelevant (dpsi = 0, A cos(lambda) = cos t1)
   } else if (lhs <= 1e-12) {
     s.status = SetupStatus::opposite_halfway;
@@ -147,7 +155,9 @@ ScanlineSetup scanline_setup(const ScanlineInput& in) {
     u = lu > 1e-12 ? u / lu : any_perpendicular(v.h1);
     nu = glm::dot(v.n1, u);
   } else {
-    const dvec3 u = glm::normalize(d + (0.5 * ld * ld) * v.h1);
+    // Re-orthogonalize against H1: |H2| = 1 only to rounding, so d carries a radial part.
+    const dvec3 w = d + (0.5 * ld * ld) * v.h1;
+    const dvec3 u = glm::normalize(w - glm::dot(w, v.h1) * v.h1);
     nu = glm::dot(v.n1, u);
   }
   s.A = std::hypot(cos_t1, nu);
