@@ -47,24 +47,29 @@
 //   CosRomFile   NumBanks * 2^CosAddrBits words of CosDataBits bits: word
 //                bank * 2^CosAddrBits + i = min(round(cos^k_bank(i * pi/2 / 2^CosAddrBits)
 //                * 2^CosDataBits), 2^CosDataBits - 1)
-// The numeric parameter defaults equal struct specular::device::Format.
+// The numeric parameter defaults equal struct specular::device::Format; the k of each ROM 12
+// bank (default 1, 2, 4, 16) lives only in CosRomFile, the hardware does not need it.
+// The numeric parameters are /*verilator public*/: a Verilator testbench reads them as
+// static constants V<prefix>_specular_unit::CBits, ... (header V<prefix>_specular_unit.h),
+// e.g. to refuse to run when they differ from Format.
 
 module specular_unit #(
-  parameter int CBits /*verilator public*/        = 16,  // Format::c_bits
-  parameter int CFrac /*verilator public*/        = 15,  // Format::c_frac (documentary)
-  parameter int AngleBits /*verilator public*/    = 32,  // Format::angle_bits
-  parameter int AngleFrac /*verilator public*/    = 28,  // Format::angle_frac
-  parameter int AccBits /*verilator public*/      = 44,  // Format::acc_bits
-  parameter int NBits /*verilator public*/        = 10,  // Format::n_bits
-  parameter int LenBits /*verilator public*/      = 11,  // Format::len_bits
-  parameter int CoefBits /*verilator public*/     = 18,  // Format::coef_bits
-  parameter int CoefFrac /*verilator public*/     = 15,  // Format::coef_frac
-  parameter int PsiMulFrac /*verilator public*/   = 20,  // Format::psi_mul_frac
-  parameter int CosAddrBits /*verilator public*/  = 12,  // Format::cos_addr_bits
-  parameter int CosDataBits /*verilator public*/  = 16,  // Format::cos_data_bits
-  parameter int NumBanks /*verilator public*/     = 4,  // Format::banks.size()
+  parameter int CBits       /*verilator public*/ = 16,  // Format::c_bits
+  parameter int CFrac       /*verilator public*/ = 15,  // Format::c_frac (documentary)
+  parameter int AngleBits   /*verilator public*/ = 32,  // Format::angle_bits
+  parameter int AngleFrac   /*verilator public*/ = 28,  // Format::angle_frac
+  parameter int AccBits     /*verilator public*/ = 44,  // Format::acc_bits
+  parameter int NBits       /*verilator public*/ = 10,  // Format::n_bits
+  parameter int LenBits     /*verilator public*/ = 11,  // Format::len_bits
+  parameter int CoefBits    /*verilator public*/ = 18,  // Format::coef_bits
+  parameter int CoefFrac    /*verilator public*/ = 15,  // Format::coef_frac
+  parameter int PsiMulFrac  /*verilator public*/ = 20,  // Format::psi_mul_frac
+  parameter int CosAddrBits /*verilator public*/ = 12,  // Format::cos_addr_bits
+  parameter int CosDataBits /*verilator public*/ = 16,  // Format::cos_data_bits
+  parameter int NumBanks    /*verilator public*/ = 4,   // Format::banks.size()
   // Format::bank_max_n, NBits bits per bank, bank 0 in the least significant bits.
-  parameter logic [NumBanks*NBits-1:0] BankMaxN /*verilator public*/ = {10'd1000, 10'd6, 10'd2, 10'd1},
+  parameter logic [NumBanks*NBits-1:0] BankMaxN /*verilator public*/ =
+      {10'd1000, 10'd6, 10'd2, 10'd1},
   parameter     CoefRomFile  = "roms/coef_minimax.hex",
   parameter     CosRomFile   = "roms/cos_k_1_2_4_16.hex"
 ) (
