@@ -109,9 +109,10 @@ json section_curves() {
 }
 
 json section_albedo() {
-  std::vector<int> ns;
-  for (int n = 1; n <= 1000; n = n < 10 ? n + 1 : int(std::ceil(n * 1.15))) ns.push_back(n);
-  if (ns.back() != 1000) ns.push_back(1000);
+  // 1..10, then ~15 % steps, plus the round values the report's table quotes.
+  std::set<int> grid{20, 50, 100, 200, 500, 1000};
+  for (int n = 1; n <= 1000; n = n < 10 ? n + 1 : int(std::ceil(n * 1.15))) grid.insert(n);
+  const std::vector<int> ns(grid.begin(), grid.end());
   struct Series {
     std::string name;
     std::function<ShapeFn(int)> f;

@@ -1,0 +1,642 @@
+#!/usr/bin/python3
+"""Speed-against-error report (SPEC section 8): `make report`.
+
+Runs this build's measurement programs and writes OUT/report.md with PNG plots beside it.
+Every figure in the text is taken from the outputs of this run:
+  BUILD/bin/evaluator_bench   Google Benchmark timing of the C++ evaluators (ns per pixel)
+  BUILD/bin/report_data       errors (SPEC section 3), albedo, device error of RTL
+                              configurations (golden model), SPEC section 4 hard cases
+  BUILD/bin/romgen + yosys    ROM images and ice40 cell counts per RTL configuration
+  BUILD/bin/sim_regression    Verilator regression throughput (reduced random count)
+Missing programs are reported in the text, not silently skipped.
+
+usage: scripts/make_report.py --build build --out build/report [--random N] [--jobs J]
+"""
+import argparse
+import concurrent.futures
+import datetime
+import glob
+import hashlib
+import json
+import math
+import os
+import platform
+import subprocess
+import sys
+import time
+
+import matplotlib
+
+matplotlib.use("Agg")
+import matplotlib.pyplot as plt  # noqa: E402
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BENCH_NS = [5, 50, 500]
+BANDS = [(1, 6), (7, 100), (101, 1000)]
+# Evaluators in table order: key, label, how it is fed.
+EVALUATORS = [
+    ("pow", "exact std::pow", "c = N.H"),
+    ("exp2poly", "exp2(n log2 c), own polynomials", "c"),
+    ("lut256", "256-entry LUT, linear interpolation", "c"),
+    ("schlick", "Schlick", "c"),
+    ("schlick_mod", "modified Schlick", "c"),
+    ("lyon16", "lyon-16", "c"),
+    ("prototype", "prototype cos^2(ax)", "angle"),
+    ("patent", "patent, float (maclaurin a)", "angle"),
+    ("patent_minimax", "patent, float, minimax a", "angle"),
+    ("device", "golden fixed-point device model, maclaurin ROM", "registers"),
+    ("device_minimax", "golden fixed-point device model, minimax ROM", "registers"),
+]
+COLORS = {key: plt.get_cmap("tab20")(2 * i % 20 + (i >= 10)) for i, (key, _, _) in enumerate(EVALUATORS)}
+TOLERANCE = 0.0025  # the "within 0.25 % epicenter error" headline
+
+
+def fnum(v):
+    """JSON numbers from report_data: non-finite ones arrive as strings."""
+    return float(v) if not isinstance(v, (int, float)) else float(v)
+
+
+def fmt_err(v, pct=True):
+    if v is None:
+        return "n/a"
+    if math.isinf(v):
+        return "unbounded"
+    if math.isnan(v):
+        return "nan"
+    return f"{100 * v:.3g} %" if pct else f"{v:.3g}"
+
+
+def run(cmd, log, timeout=600, cwd=ROOT):
+    t0 = time.time()
+    with open(log, "w") as lf:
+        lf.write("$ " + " ".join(cmd) + "\n")
+        lf.flush()
+        p = subprocess.run(cmd, cwd=cwd, stdout=lf, stderr=subprocess.STDOUT, timeout=timeout)
+    return p.returncode, time.time() - t0
+
+
+class Report:
+    def __init__(self, args):
+        self.args = args
+        self.build = os.path.abspath(args.build)
+        self.out = os.path.abspath(args.out)
+        self.bin = os.path.join(self.build, "bin")
+        self.logs = os.path.join(self.out, "logs")
+        os.makedirs(self.logs, exist_ok=True)
+        self.missing = []  # what could not be measured, quoted in the report
+        self.timings = {}
+
+    def exe(self, name):
+        path = os.path.join(self.bin, name)
+        return path if os.access(path, os.X_OK) else None
+
+    # ---------------------------------------------------------------- measurements
+    def bench(self):
+        exe = self.exe("evaluator_bench")
+        if not exe:
+            self.missing.append("evaluator_bench was not built: no timings")
+            return {}
+        path = os.path.join(self.out, "bench.json")
+        rc, secs = run([exe, "--benchmark_format=json", f"--benchmark_out={path}", "--benchmark_out_format=json",
+                        "--benchmark_min_time=0.05", "--benchmark_repetitions=3",
+                        "--benchmark_report_aggregates_only=true"], os.path.join(self.logs, "bench.log"))
+        self.timings["evaluator_bench"] = secs
+        if rc != 0:
+            self.missing.append(f"evaluator_bench failed (exit {rc}), see logs/bench.log")
+            return {}
+        data = json.load(open(path))
+        self.bench_context = data.get("context", {})
+        ns = {}
+        for b in data["benchmarks"]:
+            if b.get("aggregate_name") != "median":
+                continue
+            name, n = b["run_name"].split("/")
+            ns.setdefault(name, {})[int(n)] = 1e9 / b["items_per_second"]
+        ns["device_minimax"] = ns.get("device", {})  # same datapath, other ROM 9 contents
+        return ns
+
+    def model_data(self):
+        exe = self.exe("report_data")
+        if not exe:
+            self.missing.append("report_data was not built: no errors, albedo or hard cases")
+            return {}
+        path = os.path.join(self.out, "report_data.json")
+        rc, secs = run([exe, "--out", path, "--n-step", str(self.args.n_step)], os.path.join(self.logs, "report_data.log"))
+        self.timings["report_data"] = secs
+        if rc != 0:
+            self.missing.append(f"report_data failed (exit {rc}), see logs/report_data.log")
+            return {}
+        return json.load(open(path))
+
+    def synth_one(self, cfg):
+        """romgen + Yosys synth_ice40 of specular_unit for one configuration."""
+        romgen = self.exe("romgen")
+        d = os.path.join(self.out, "roms", cfg["name"])
+        os.makedirs(d, exist_ok=True)
+        log = os.path.join(self.logs, f"synth_{cfg['name']}.log")
+        cmd = [romgen, "--out-dir", d, "--policy", cfg["policy"], "--cos-addr-bits", str(cfg["cos_addr_bits"]),
+               "--cos-data-bits", str(cfg["cos_data_bits"]), "--banks", ",".join(map(str, cfg["banks"])),
+               "--bank-max-n", ",".join(map(str, cfg["bank_max_n"])), "--quiet"]
+        rc, _ = run(cmd, log + ".romgen")
+        if rc != 0:
+            return {"error": f"romgen exit {rc} (logs/{os.path.basename(log)}.romgen)"}
+        coef = glob.glob(os.path.join(d, "coef_*.hex"))
+        cos = glob.glob(os.path.join(d, "cos_k_*.hex"))
+        if len(coef) != 1 or len(cos) != 1:
+            return {"error": "romgen did not write one coef and one cos ROM"}
+        nb = len(cfg["banks"])
+        # BankMaxN is {bank_max_n[nb-1], ..., bank_max_n[0]}, 10 bits each.
+        packed = sum(v << (10 * j) for j, v in enumerate(cfg["bank_max_n"]))
+        stat = os.path.join(d, "stat_ice40.txt")
+        sources = " ".join(sorted(glob.glob(os.path.join(ROOT, "rtl", "*.sv"))))
+        script = os.path.join(d, "synth.ys")
+        with open(script, "w") as f:
+            f.write(f"read_verilog -sv {sources}\n"
+                    f"chparam -set CosAddrBits {cfg['cos_addr_bits']} -set CosDataBits {cfg['cos_data_bits']} "
+                    f"-set NumBanks {nb} -set BankMaxN {10 * nb}'h{packed:x} "
+                    f"-set CoefRomFile \"{coef[0]}\" -set CosRomFile \"{cos[0]}\" specular_unit\n"
+                    "hierarchy -check -top specular_unit\n"
+                    "synth_ice40 -top specular_unit\n"
+                    f"tee -q -o {stat} stat\n")
+        # Synthesis is deterministic: with identical RTL, ROM contents, script and Yosys the
+        # previous run's netlist statistics are this run's, so they are reused (and marked).
+        h = hashlib.sha256()
+        for path in sorted(glob.glob(os.path.join(ROOT, "rtl", "*.sv"))) + [coef[0], cos[0]]:
+            h.update(open(path, "rb").read())
+        h.update(open(script, "rb").read())
+        h.update(subprocess.run(["yosys", "-V"], capture_output=True, text=True).stdout.encode())
+        key = h.hexdigest()
+        key_file = os.path.join(d, "synth.key")
+        t0 = time.time()
+        reused = (not self.args.fresh_synth and os.path.exists(stat) and os.path.exists(key_file)
+                  and open(key_file).read().strip() == key)
+        if not reused:
+            for f in (stat, key_file):
+                if os.path.exists(f):
+                    os.remove(f)
+            try:
+                rc, _ = run(["yosys", "-q", "-l", log, "-s", script], log + ".stdout", timeout=600)
+            except subprocess.TimeoutExpired:
+                return {"error": "yosys timed out"}
+            if rc != 0:
+                return {"error": f"yosys exit {rc} (logs/{os.path.basename(log)})"}
+            with open(key_file, "w") as f:
+                f.write(key + "\n")
+        cells = {}
+        for line in open(stat):
+            parts = line.split()
+            if len(parts) == 2 and parts[0].startswith("SB_") and parts[1].isdigit():
+                cells[parts[0]] = cells.get(parts[0], 0) + int(parts[1])
+        return {"lut4": cells.get("SB_LUT4", 0),
+                "ff": sum(v for k, v in cells.items() if k.startswith("SB_DFF")),
+                "bram": cells.get("SB_RAM40_4K", 0),
+                "carry": cells.get("SB_CARRY", 0),
+                "reused": reused,
+                "seconds": time.time() - t0}
+
+    def synth(self, configs):
+        if not configs:
+            return {}
+        if not self.exe("romgen"):
+            self.missing.append("romgen was not built: no Yosys cell counts")
+            return {}
+        if not glob.glob(os.path.join(ROOT, "rtl", "specular_unit.sv")):
+            self.missing.append("rtl/specular_unit.sv missing: no Yosys cell counts")
+            return {}
+        t0 = time.time()
+        with concurrent.futures.ThreadPoolExecutor(max_workers=self.args.jobs) as pool:
+            res = dict(zip([c["name"] for c in configs], pool.map(self.synth_one, configs)))
+        self.timings["romgen + yosys (all configurations)"] = time.time() - t0
+        for name, r in res.items():
+            if "error" in r:
+                self.missing.append(f"synthesis of {name}: {r['error']}")
+        return res
+
+    def sim(self):
+        exe = self.exe("sim_regression")
+        if not exe:
+            self.missing.append("sim_regression was not built: no simulation throughput")
+            return {}
+        path = os.path.join(self.out, "sim.json")
+        rc, secs = run([exe, "--random", str(self.args.random), "--json", path], os.path.join(self.logs, "sim.log"))
+        self.timings["sim_regression"] = secs
+        if not os.path.exists(path):
+            self.missing.append(f"sim_regression wrote no JSON (exit {rc}), see logs/sim.log")
+            return {}
+        data = json.load(open(path))
+        data["exit_code"] = rc
+        return data
+
+    # ---------------------------------------------------------------- analysis
+    @staticmethod
+    def worst(ns, vals, lo=1, hi=1000):
+        sel = [fnum(v) for n, v in zip(ns, vals) if lo <= n <= hi]
+        return max(sel) if sel else None
+
+    def error_rows(self, data):
+        """name -> {n, rel, abs} for float evaluators and the two default device configs."""
+        rows = {}
+        for e in data.get("evaluators", []):
+            rows[e["name"]] = {"n": e["n"], "rel": [fnum(v) for v in e["max_rel_epicenter"]],
+                               "abs": [fnum(v) for v in e["max_abs_lobe"]]}
+        for h in data.get("hardware", []):
+            key = {"default-maclaurin": "device", "default-minimax": "device_minimax"}.get(h["name"])
+            if key:
+                rows[key] = {"n": h["n"], "rel": [fnum(v) for v in h["max_rel_epicenter"]],
+                             "abs": [fnum(v) for v in h["max_abs_lobe"]]}
+        return rows
+
+    # ---------------------------------------------------------------- plots
+    def plot_plane(self, rows, speed):
+        fig, axes = plt.subplots(1, 2, figsize=(13, 5.5))
+        for ax, metric, title in ((axes[0], "rel", "max relative error in the epicenter"),
+                                  (axes[1], "abs", "max absolute error over the lobe")):
+            for key, label, _ in EVALUATORS:
+                if key not in rows or key not in speed:
+                    continue
+                t = [speed[key][n] for n in BENCH_NS if n in speed[key]]
+                x = sum(t) / len(t)
+                # n = 1 is excluded from the plotted worst case: its epicenter reaches pi/2 where
+                # relative error is unbounded for every shape that does not vanish there.
+                y = self.worst(rows[key]["n"], rows[key][metric], 2, 1000)
+                if y is None or not math.isfinite(y):
+                    continue
+                floor = 1e-9  # exact to rounding: drawn on the floor so the scale stays readable
+                shown = max(y, floor)
+                ax.scatter([x], [shown], s=50, color=COLORS[key])
+                ax.annotate(key + (" (< 1e-9)" if y < floor else ""), (x, shown), textcoords="offset points",
+                            xytext=(6, -12 if key in ("device", "schlick_mod", "patent_minimax") else 4), fontsize=9)
+            if metric == "rel":
+                ax.axhline(TOLERANCE, color="grey", ls="--", lw=1)
+                ax.text(ax.get_xlim()[0], TOLERANCE * 1.15, " 0.25 %", color="grey", fontsize=8)
+            ax.set_yscale("log")
+            ax.set_xlabel("ns per pixel (mean over n = 5, 50, 500; Google Benchmark, this run)")
+            ax.set_ylabel(f"worst over n = 2..1000: {title}")
+            ax.set_title(title)
+            ax.grid(True, which="both", alpha=0.3)
+        fig.suptitle("Speed against error (SPEC section 8)")
+        fig.tight_layout()
+        fig.savefig(os.path.join(self.out, "plane.png"), dpi=110)
+        plt.close(fig)
+
+    def plot_err_vs_n(self, rows):
+        fig, axes = plt.subplots(1, 2, figsize=(14, 5.5))
+        for key, label, _ in EVALUATORS:
+            if key not in rows:
+                continue
+            r = rows[key]
+            for ax, metric in ((axes[0], "rel"), (axes[1], "abs")):
+                pts = [(n, v) for n, v in zip(r["n"], r[metric]) if math.isfinite(v) and v > 0]
+                if pts:
+                    ax.plot([p[0] for p in pts], [p[1] for p in pts], label=key, lw=1.3, color=COLORS[key],
+                            ls="--" if key.startswith("device") else "-")
+        axes[0].axhline(TOLERANCE, color="grey", ls="--", lw=1)
+        axes[0].axhline(0.01, color="grey", ls=":", lw=1)
+        axes[0].set_ylabel("max relative error in the epicenter")
+        axes[1].set_ylabel("max absolute error over [0, pi/2]")
+        # Exact values (k = n, or the LUT at n = 1) drop to rounding level; clip them.
+        axes[0].set_ylim(1e-6, 2)
+        axes[1].set_ylim(1e-7, 2)
+        for ax in axes:
+            ax.set_xscale("log")
+            ax.set_yscale("log")
+            ax.set_xlabel("n")
+            ax.grid(True, which="both", alpha=0.3)
+        axes[0].legend(fontsize=8, ncol=2)
+        fig.suptitle("Error against n (dashed: 0.25 %, dotted: the patent's 1 %)")
+        fig.tight_layout()
+        fig.savefig(os.path.join(self.out, "error_vs_n.png"), dpi=110)
+        plt.close(fig)
+
+    def plot_err_vs_angle(self, curves):
+        fig, axes = plt.subplots(2, len(curves), figsize=(5 * len(curves), 8.5), squeeze=False)
+        for j, c in enumerate(curves):
+            x = c["x"]
+            ref = c["reference"]
+            top, bot = axes[0][j], axes[1][j]
+            top.plot(x, ref, "k", lw=2.5, label="cos^n (reference)")
+            for key, _, _ in EVALUATORS:
+                if key not in c["series"] or key == "pow":
+                    continue
+                y = [fnum(v) for v in c["series"][key]]
+                top.plot(x, y, lw=1.2, label=key, color=COLORS[key])
+                bot.plot(x, [a - b for a, b in zip(y, ref)], lw=1.2, label=key, color=COLORS[key])
+            for ax in (top, bot):
+                ax.axvline(c["epicenter_end"], color="grey", ls="--", lw=1)
+                ax.grid(True, alpha=0.3)
+                ax.set_xlabel("angle x (rad); dashed: end of the epicenter")
+            top.set_title(f"n = {c['n']}")
+            top.set_ylabel("F(x)")
+            bot.set_ylabel("F(x) - cos^n(x)")
+        axes[0][0].legend(fontsize=8)
+        fig.suptitle("Shapes and their error against the angle")
+        fig.tight_layout()
+        fig.savefig(os.path.join(self.out, "error_vs_angle.png"), dpi=110)
+        plt.close(fig)
+
+    def plot_albedo(self, albedo):
+        fig, axes = plt.subplots(1, 2, figsize=(14, 5.5))
+        for ax, conv in ((axes[0], "phong"), (axes[1], "blinn")):
+            for s in albedo:
+                ls = "--" if "fit" in s["name"] else "-"
+                ax.plot(s["n"], [fnum(v) for v in s[conv]], ls, label=s["name"], lw=1.3)
+            ax.axhline(1.0, color="k", lw=1.5)
+            ax.set_xscale("log")
+            ax.set_xlabel("n")
+            ax.set_ylabel("hemispherical albedo, light at the normal")
+            ax.set_title(f"{conv} convention (angle = {'theta' if conv == 'phong' else 'theta/2'})")
+            ax.grid(True, which="both", alpha=0.3)
+        axes[0].legend(fontsize=8)
+        fig.suptitle("Albedo against n (energy-correct means <= 1)")
+        fig.tight_layout()
+        fig.savefig(os.path.join(self.out, "albedo.png"), dpi=110)
+        plt.close(fig)
+
+    def plot_hardware(self, hw, cells):
+        fig, axes = plt.subplots(1, 2, figsize=(13, 5.5))
+        for h in hw:
+            y = self.worst(h["n"], h["max_rel_epicenter"])
+            bits = h["coef_rom_bits"] + h["cos_rom_bits"]
+            axes[0].scatter([bits / 1024], [y])
+            axes[0].annotate(h["name"], (bits / 1024, y), textcoords="offset points", xytext=(4, 4), fontsize=8)
+            c = cells.get(h["name"], {})
+            if "lut4" in c:
+                axes[1].scatter([c["lut4"]], [y])
+                axes[1].annotate(h["name"], (c["lut4"], y), textcoords="offset points", xytext=(4, 4), fontsize=8)
+        axes[0].set_xlabel("ROM Kbit (ROM 9 + ROM 12)")
+        axes[1].set_xlabel("ice40 LUT4 cells (Yosys synth_ice40)")
+        for ax in axes:
+            ax.set_ylabel("device: worst max relative epicenter error, n = 1..1000")
+            ax.set_yscale("log")
+            ax.grid(True, which="both", alpha=0.3)
+        fig.suptitle("RTL configurations: device error against cost")
+        fig.tight_layout()
+        fig.savefig(os.path.join(self.out, "hardware.png"), dpi=110)
+        plt.close(fig)
+
+    # ---------------------------------------------------------------- text
+    def write(self, speed, data, cells, sim):
+        rows = self.error_rows(data)
+        md = []
+        w = md.append
+        w("# Speed against error: report\n")
+        w(f"Generated {datetime.datetime.now().strftime('%Y-%m-%d %H:%M')} by `scripts/make_report.py` from the "
+          f"build in `{os.path.relpath(self.build, ROOT)}`; every number below comes from this run "
+          "(raw outputs beside this file: `bench.json`, `report_data.json`, `sim.json`, `roms/*/stat_ice40.txt`, `logs/`).")
+        ctx = getattr(self, "bench_context", {})
+        if ctx:
+            w(f"Host: {ctx.get('num_cpus', '?')} CPUs at {ctx.get('mhz_per_cpu', '?')} MHz, {platform.machine()}, "
+              f"load average {ctx.get('load_avg', '?')} (other jobs share the machine; timings are medians of 3 repetitions).")
+        if self.missing:
+            w("\n**Not measured in this run:**\n")
+            for m in self.missing:
+                w(f"- {m}")
+        w("")
+
+        # --- headline and the plane
+        w("## 1. Speed against error of the C++ evaluators\n")
+        w("All evaluators shade the same scanline of 2048 pixels (l = 2047) across the highlight lobe, timed side by side "
+          "with Google Benchmark in one run (`evaluator_bench`). Each gets its natural input precomputed outside the timed "
+          "loop: `c = cos x` (a dot product in a renderer) for pow, exp2poly, lut256, Schlick, modified Schlick and lyon-16; "
+          "the angle x for the cos^k(a x) family (prototype, patent); the device registers for the golden fixed-point model "
+          "(`DeviceModel::line`, integer arithmetic of the RTL). Per-n state (LUT, coefficient, ROMs) is built outside the "
+          "loop, as once per material; the LUT rebuild itself costs "
+          + ", ".join(f"{speed['lut256_build'][n] * 256 / 1000:.2f} us (n = {n})" for n in BENCH_NS
+                      if n in speed.get("lut256_build", {})) + ".\n")
+        w("Errors are the SPEC section 3 metrics, evaluated with `shape_error` (dense sampling plus golden-section "
+          f"refinement) for every n = 1, {1 + data.get('n_step', 1)}, ..., 1000 (step {data.get('n_step', 1)}); the device rows use the golden model over "
+          "2048-pixel scanlines per n (section 4 below). At n = 1 the epicenter reaches pi/2 where cos^n = 0, so the "
+          "relative error there is unbounded for every shape that does not vanish at pi/2 (marked 'unbounded').\n")
+        pow_t = speed.get("pow", {})
+        hdr = "| evaluator | input | " + " | ".join(f"ns/px n={n}" for n in BENCH_NS) + \
+              " | x std::pow | worst rel. epicenter n=1..1000 | " + " | ".join(f"n={a}..{b}" for a, b in BANDS) + \
+              " | worst abs. lobe |"
+        w(hdr)
+        w("|" + "---|" * (hdr.count("|") - 1))
+        best = None
+        for key, label, inp in EVALUATORS:
+            t = speed.get(key, {})
+            times = [t.get(n) for n in BENCH_NS]
+            ratios = [t[n] / pow_t[n] for n in BENCH_NS if n in t and n in pow_t]
+            ratio = sum(ratios) / len(ratios) if ratios else None
+            r = rows.get(key)
+            worst = self.worst(r["n"], r["rel"]) if r else None
+            bands = [self.worst(r["n"], r["rel"], a, b) if r else None for a, b in BANDS]
+            wabs = self.worst(r["n"], r["abs"]) if r else None
+            tcells = " | ".join(f"{x:.2f}" if x else "n/a" for x in times)
+            rtxt = f"{ratio:.2f}" if ratio else "n/a"
+            w(f"| {label} | {inp} | {tcells} | {rtxt} | {fmt_err(worst)} | "
+              + " | ".join(fmt_err(b) for b in bands) + f" | {fmt_err(wabs, False)} |")
+            if worst is not None and worst <= TOLERANCE and ratio is not None and key != "pow":
+                mean_t = sum(x for x in times if x) / len([x for x in times if x])
+                if best is None or mean_t < best[1]:
+                    best = (label, mean_t, ratio, worst)
+        w("")
+        if best:
+            w(f"**Headline:** the fastest evaluator within {100 * TOLERANCE:g} % epicenter error over all n = 1..1000 is "
+              f"**{best[0]}**: {best[1]:.2f} ns per pixel, {best[2]:.2f} x the time of `std::pow` "
+              f"(worst epicenter error {fmt_err(best[3])}).\n")
+        else:
+            w(f"**Headline:** no evaluator other than std::pow stays within {100 * TOLERANCE:g} % epicenter error for all n in this run.\n")
+        w("![speed against error](plane.png)\n")
+        w("![error against n](error_vs_n.png)\n")
+        w("![error against angle](error_vs_angle.png)\n")
+
+        # --- published claims
+        w("## 2. Published claims, re-measured\n")
+
+        def wr(key, lo=1, hi=1000, metric="rel"):
+            r = rows.get(key)
+            return self.worst(r["n"], r[metric], lo, hi) if r else None
+
+        claims = []
+        p = wr("patent")
+        if p is not None:
+            claims.append(f"Patent (k in {{1,2,4,16}}, maclaurin a, float): claimed <= 1 % epicenter error; measured worst "
+                          f"{fmt_err(p)} over n = 1..1000 -> {'holds' if p <= 0.01 else 'does NOT hold'}. With minimax a: "
+                          f"{fmt_err(wr('patent_minimax'))}.")
+        p = wr("prototype", 2, 1000)
+        if p is not None:
+            claims.append(f"Prototype cos^2(ax): claimed > 10 %; measured worst {fmt_err(p)} over n = 2..1000 -> "
+                          f"{'consistent' if p > 0.1 else 'contradicted'}.")
+        p = wr("schlick", 2, 1000)
+        if p is not None:
+            claims.append(f"Schlick: claimed up to 10 % in the epicenter; measured worst {fmt_err(p)} over n = 2..1000 -> "
+                          f"{'consistent' if p <= 0.1 * 1.05 else 'larger than claimed'}.")
+        alb = {s["name"]: s for s in data.get("albedo", [])}
+        for name in ("lyon16 (n+8)/(8 pi)", "f16 (n+6)/24.55"):
+            s = alb.get(name)
+            if not s:
+                continue
+            for conv in ("blinn", "phong"):
+                vals = [fnum(v) for v in s[conv]]
+                over = [n for n, v in zip(s["n"], vals) if v > 1.0]
+                claims.append(f"{name}, {conv} convention: albedo range {min(vals):.3f}..{max(vals):.3f}; above 1 for "
+                              + (f"{len(over)} of the {len(vals)} sampled n (n = {over[0]}..{over[-1]})" if over else "no sampled n")
+                              + ".")
+        for c in claims:
+            w(f"- {c}")
+        w("\nThe energy-correct-BRDF paper claims lyon-16 is not energy-correct for small n and that (n+6)/24.55 fixes it "
+          "for all n in 1..1000; the albedo lines above and the figure below are the measurement (the paper uses the blinn "
+          "convention).\n")
+
+        # --- albedo
+        w("## 3. Albedo against n\n")
+        w("Hemispherical albedo with the light at the normal, both conventions of SPEC section 3 (phong: angle = theta; "
+          "blinn: angle = theta/2), for Blinn-Phong with (n+8)/(8 pi), lyon-16 with the same factor, f16 = (n+6)/24.55 "
+          "lyon-16, and kutlog (k = 2, Q = 0.3 and Q = 0.7, one in each range of the paper's fits) with the exact "
+          "(integrated) coef and with the paper's fits, n = k+1..1000. Energy-correct means <= 1 (black line).\n")
+        w("![albedo](albedo.png)\n")
+        pick = [1, 2, 5, 10, 20, 50, 100, 200, 500, 1000]
+        if alb:
+            w("| series | convention | " + " | ".join(f"n={n}" for n in pick) + " |")
+            w("|---|---|" + "---|" * len(pick))
+            for s in data["albedo"]:
+                for conv in ("phong", "blinn"):
+                    m = dict(zip(s["n"], s[conv]))
+                    w(f"| {s['name']} | {conv} | " + " | ".join(
+                        f"{fnum(m[n]):.3f}" if n in m else "" for n in pick) + " |")
+            w("")
+
+        # --- hardware
+        hw = data.get("hardware", [])
+        w("## 4. Hardware configurations\n")
+        w("Device error: the golden fixed-point model (bit-exact with the RTL, as the Verilator regression verifies for the "
+          "default configurations -- see section 5; other configurations use the same parameterized datapath and ROM "
+          "generator) run over three scanlines of 2048 pixels for every n = 1..1000: psi in [0, x_e(n)] for the "
+          "relative epicenter error, [0, min(pi/2, 12/sqrt n)] and [0, pi/2] for the absolute lobe error, reference "
+          "C cos^n(psi_i) at the exact quantized pixel angles, C = 1. For n = 1 the relative error is taken over "
+          "[0, pi/3] (cos >= 1/2): a fixed-point output has unbounded relative error where cos^n -> 0. The error includes "
+          "the output quantization (1 LSB = 2^-15). Decoder tables of other bank sets are derived in `report_data`: bank "
+          "j+1 takes over at the first n where its float error is not larger (this reproduces the patent's "
+          "1 | 2 | 3..6 | 7..1000 for {1,2,4,16}). Cells: Yosys `synth_ice40` of `specular_unit` with `chparam` for the "
+          "configuration and ROMs generated by `romgen` into `roms/<config>/`; multipliers are LUT logic (no DSP). "
+          "(r): Yosys was not re-run because the RTL sources, both ROM files, the script and the Yosys version hash to "
+          "the same key as the run that produced `roms/<config>/stat_ice40.txt` (synthesis is deterministic; "
+          "`--fresh-synth` forces it).\n")
+        hdr = ("| config | ROM 12 addr/data bits | policy | banks (decoder max n) | ROM bits (coef + cos) | worst rel. epicenter | "
+               + " | ".join(f"n={a}..{b}" for a, b in BANDS) + " | worst abs. lobe | LUT4 | FF | SB_RAM40_4K | SB_CARRY |")
+        w(hdr)
+        w("|" + "---|" * (hdr.count("|") - 1))
+        for h in hw:
+            c = cells.get(h["name"], {})
+            rel = [fnum(v) for v in h["max_rel_epicenter"]]
+            ab = [fnum(v) for v in h["max_abs_lobe"]]
+            cc = " | ".join(str(c.get(k, "n/a")) for k in ("lut4", "ff", "bram", "carry")) if "lut4" in c else \
+                " | ".join(["n/a"] * 4)
+            if c.get("reused"):
+                cc += " (r)"
+            w(f"| {h['name']} | {h['cos_addr_bits']}/{h['cos_data_bits']} | {h['policy']} | "
+              f"{{{','.join(map(str, h['banks']))}}} ({','.join(map(str, h['bank_max_n']))}) | "
+              f"{h['coef_rom_bits'] + h['cos_rom_bits']} ({h['coef_rom_bits']} + {h['cos_rom_bits']}) | "
+              f"{fmt_err(self.worst(h['n'], rel))} | "
+              + " | ".join(fmt_err(self.worst(h["n"], rel, a, b)) for a, b in BANDS)
+              + f" | {fmt_err(self.worst(h['n'], ab), False)} | {cc} |")
+        w("\nCycles per pixel: 1 for every configuration (the datapath is pipelined; measured by the regression for the "
+          "default ones, section 5). Clock frequency after place and route is not part of this report.\n")
+        if hw:
+            w("![hardware](hardware.png)\n")
+
+        # --- simulation
+        w("## 5. Simulation throughput\n")
+        if sim:
+            w(f"`sim_regression --random {self.args.random} --json sim.json` (exit code {sim.get('exit_code')}, "
+              f"overall {'PASS' if sim.get('ok') else 'FAIL'}):\n")
+            w("| policy | lines | pixels | mismatches vs golden model | cycles/pixel | wall s | RTL (Verilator) s | "
+              "RTL share | other (golden model, reference, checks) share | simulated pixels/s | checked pixels/s |")
+            w("|---|---|---|---|---|---|---|---|---|---|---|")
+            for name, p in sim.get("policies", {}).items():
+                tot = p.get("seconds", 0) or 0
+                rtl = p.get("sim_seconds", 0) or 0
+                gold = p.get("golden_seconds")
+                ref = p.get("reference_seconds")
+                other = (f"golden {100 * gold / tot:.0f} %, reference {100 * ref / tot:.0f} %"
+                         if gold is not None and ref is not None and tot else
+                         (f"{100 * (tot - rtl) / tot:.0f} %" if tot else "n/a"))
+                w(f"| {name} | {p.get('lines')} | {p.get('pixels')} | {p.get('mismatches')} | "
+                  f"{p.get('cycles_per_pixel', 0):.3f} | {tot:.2f} | {rtl:.2f} | "
+                  f"{(100 * rtl / tot if tot else 0):.0f} % | {other} | {p.get('simulated_pixels_per_second', 0):.3g} | "
+                  f"{p.get('checked_pixels_per_second', 0):.3g} |")
+            if not any("golden_seconds" in p for p in sim.get("policies", {}).values()):
+                w("\nThe regression's JSON reports the time inside the Verilator model (`sim_seconds`) and the total; the "
+                  "golden model and the floating-point reference are not timed separately, so their shares are given "
+                  "together.\n")
+        else:
+            w("No simulation measurement in this run (see the list at the top).\n")
+
+        # --- hard cases
+        w("## 6. Numerical hard cases of SPEC section 4\n")
+        w("Each through `scanline_setup`, then the golden model (minimax ROM) on the quantized registers; 'device err' is "
+          "the largest |device - C cos^n(psi_i)| over the line.\n")
+        w("| case | n | l | status | A | gamma | C | psi0 | dpsi | finite | device peak | device err | note |")
+        w("|---|---|---|---|---|---|---|---|---|---|---|---|---|")
+
+        def g(v):
+            v = fnum(v)
+            return f"{v:.6g}"
+        for c in data.get("hardcases", []):
+            w(f"| {c['case']} | {c['n']:g} | {c['l']} | {c['status']} | {g(c['A'])} | {g(c['gamma'])} | {g(c['C'])} | "
+              f"{g(c['psi0'])} | {g(c['dpsi'])} | {'yes' if c['finite'] else 'NO'} | {c['device_peak']:.5f} | "
+              f"{c['device_max_abs_error']:.2e} | {c['note'].replace('|', '/')} |")
+        w("")
+
+        # --- run
+        w("## 7. This run\n")
+        for k, v in self.timings.items():
+            w(f"- {k}: {v:.1f} s")
+        for k, v in data.get("seconds", {}).items():
+            w(f"- report_data section {k}: {v:.2f} s")
+        w("")
+        with open(os.path.join(self.out, "report.md.tmp"), "w") as f:
+            f.write("\n".join(md) + "\n")
+        os.replace(os.path.join(self.out, "report.md.tmp"), os.path.join(self.out, "report.md"))
+
+    def main(self):
+        t0 = time.time()
+        speed = self.bench()
+        data = self.model_data()
+        cells = self.synth(data.get("hardware", []))
+        sim = self.sim() if not self.args.no_sim else {}
+        rows = self.error_rows(data)
+        if rows and speed:
+            self.plot_plane(rows, speed)
+        if rows:
+            self.plot_err_vs_n(rows)
+        if data.get("curves"):
+            self.plot_err_vs_angle(data["curves"])
+        if data.get("albedo"):
+            self.plot_albedo(data["albedo"])
+        if data.get("hardware"):
+            self.plot_hardware(data["hardware"], cells)
+        self.timings["whole report"] = time.time() - t0
+        self.write(speed, data, cells, sim)
+        print(f"wrote {os.path.join(self.out, 'report.md')} ({time.time() - t0:.0f} s)")
+        return 0
+
+
+def parse_args(argv):
+    ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    ap.add_argument("--build", default="build", help="CMake build directory (binaries in BUILD/bin)")
+    ap.add_argument("--out", default=None, help="output directory (default BUILD/report)")
+    ap.add_argument("--random", type=int, default=2000, help="random scanlines per policy for sim_regression (0..1000000)")
+    ap.add_argument("--jobs", type=int, default=2, help="parallel Yosys runs (1..16)")
+    ap.add_argument("--n-step", type=int, default=1, help="sample n = 1, 1+S, ..., 1000 for the error sweeps (1..999)")
+    ap.add_argument("--fresh-synth", action="store_true",
+                    help="re-run Yosys even when RTL, ROMs and script are unchanged since the last run")
+    ap.add_argument("--no-sim", action="store_true", help="skip the Verilator regression")
+    args = ap.parse_args(argv)
+    for name, lo, hi in (("--random", 0, 1000000), ("--jobs", 1, 16), ("--n-step", 1, 999)):
+        v = getattr(args, name[2:].replace("-", "_"))
+        if not lo <= v <= hi:
+            print(f"make_report.py: {name} must be in {lo}..{hi} (got {v})", file=sys.stderr)
+            sys.exit(2)
+    if not os.path.isdir(args.build):
+        print(f"make_report.py: --build '{args.build}' is not a directory (run `make build` first)", file=sys.stderr)
+        sys.exit(2)
+    if args.out is None:
+        args.out = os.path.join(args.build, "report")
+    return args
+
+
+if __name__ == "__main__":
+    sys.exit(Report(parse_args(sys.argv[1:])).main())
