@@ -156,7 +156,7 @@ void print_table(const std::vector<PolicyStats>& all) {
     for (const auto& s : all) cells.push_back(fn(s));
     rows.emplace_back(name, cells);
   };
-  row("scanlines (det + random)", [](const PolicyStats& s) {
+  row("line runs (det + random)", [](const PolicyStats& s) {
     return std::to_string(s.lines) + " (" + std::to_string(s.det_lines) + " + " + std::to_string(s.rnd_lines) + ")";
   });
   row("pixels (det + random)", [](const PolicyStats& s) {
@@ -173,7 +173,7 @@ void print_table(const std::vector<PolicyStats>& all) {
   row("(c) epicenter pixels", [](const PolicyStats& s) { return std::to_string(s.epicenter_pixels); });
   row("(c) max rel epi, +1 LSB, n >= 2", [](const PolicyStats& s) { return pct(s.rel_allow.value); });
   row("    at", [](const PolicyStats& s) { return where(s.rel_allow); });
-  row("(c) max rel epi, no allowance", [](const PolicyStats& s) { return pct(s.rel_raw.value); });
+  row("(c) max rel epi, no allowance, all n", [](const PolicyStats& s) { return pct(s.rel_raw.value); });
   row("    at", [](const PolicyStats& s) { return where(s.rel_raw); });
   row("(c) same, only ref >= 0.5", [](const PolicyStats& s) { return pct(s.rel_raw_big.value); });
   row("    at", [](const PolicyStats& s) { return where(s.rel_raw_big); });
