@@ -88,13 +88,15 @@ std::vector<Scanline> deterministic_scanlines(const device::Format& f) {
       out.push_back(from_setup(planar(1.75 - off, -1.35 - off, n, 255, full), f, "sweep-wide"));
     // Dense through the epicenter (peak inside the span), full-scale C.
     out.push_back(from_setup(planar(-1.2 * xe, 1.25 * xe, n, 127, full), f, "sweep-epicenter"));
-    // l in {0,1,2,3,max}, C at 0 / mid / full.
-    const int l = short_l[n % 5];
-    const double c = c_levels[(n / 5) % 3];
-    if (l == max_len)
-      out.push_back(from_setup(planar(-kPi / 2 - 0.2 + 0.001 * n, kPi / 2 + 0.2, n, l, c), f, "sweep-l"));
-    else
-      out.push_back(from_setup(planar(-0.7 * xe, 0.9 * xe, n, l, c), f, "sweep-l"));
+    // Every l in {0,1,2,3,max}, C rotating through 0 / mid / full.
+    for (int j = 0; j < 5; ++j) {
+      const int l = short_l[j];
+      const double c = c_levels[(n + j) % 3];
+      if (l == max_len)
+        out.push_back(from_setup(planar(-kPi / 2 - 0.2 + 0.001 * n, kPi / 2 + 0.2, n, l, c), f, "sweep-l"));
+      else
+        out.push_back(from_setup(planar(-0.7 * xe, 0.9 * xe, n, l, c), f, "sweep-l"));
+    }
   }
 
   // Hard cases of SPEC section 4, each at the decoder boundaries and the extremes of n and l.

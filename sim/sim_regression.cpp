@@ -268,6 +268,7 @@ int main(int argc, char** argv) {
     std::cout << "seed: " << seed << " (override with --seed), random scanlines per policy: " << random_lines << "\n";
     const auto det = deterministic_scanlines(f);
     const auto rnd = random_scanlines(f, seed, random_lines);
+    std::cout << "deterministic scanlines: " << det.size() << "\n";
     std::vector<PolicyStats> all;
     if (policy == "minimax" || policy == "both")
       all.push_back(run_policy<Vspecular_unit_minimax>(f, "minimax", specular::kCoefMinimaxHex, {0.0025, 0.02}, det,
