@@ -387,7 +387,7 @@ class Report:
         ctx = getattr(self, "bench_context", {})
         if ctx:
             w(f"Host: {ctx.get('num_cpus', '?')} CPUs at {ctx.get('mhz_per_cpu', '?')} MHz, {platform.machine()}, "
-              f"load average {ctx.get('load_avg', '?')} (other jobs share the machine; timings are medians of 3 repetitions)."
+              f"load average {ctx.get('load_avg', '?')} (other jobs share the machine; timings are medians of 3 repetitions).")
             if ctx.get("library_build_type") == "debug":
                 w("Debian's libbenchmark reports itself as a debug build; that concerns the harness only (entered once per "
                   "2048-pixel line), the timed loops are this project's Release (-O3) code.")
