@@ -569,6 +569,23 @@ class Report:
                   f"{p.get('cycles_per_pixel', 0):.3f} | {tot:.2f} | {rtl:.2f} | "
                   f"{(100 * rtl / tot if tot else 0):.0f} % | {other} | {p.get('simulated_pixels_per_second', 0):.3g} | "
                   f"{p.get('checked_pixels_per_second', 0):.3g} |")
+            w("\nDevice error seen by the regression over every simulated pixel (RTL output against C cos^n(psi_i) in "
+              "double precision; relative error raw where the reference is >= C/2 -- inside the epicenter, and the "
+              "level where section 4's sweep stops for n = 1; absolute lobe error divided by C with one output LSB "
+              "allowed), next to the golden-model sweep of section 4 for the same ROM and the regression's budget:\n")
+            w("| policy | regression max rel. epicenter | at n, psi | regression max abs. lobe / C | at n, psi | "
+              "sweep worst rel. epicenter | sweep worst abs. lobe | budget rel. / abs. |")
+            w("|---|---|---|---|---|---|---|---|")
+            sweep = {h["name"]: h for h in data.get("hardware", [])}
+            for name, p in sim.get("policies", {}).items():
+                rr, ra = p.get("rel_epicenter_raw_ref_ge_half", {}), p.get("abs_lobe_with_lsb", {})
+                h = sweep.get(f"default-{name}")
+                sw_r = fmt_err(self.worst(h["n"], h["max_rel_epicenter"])) if h else "n/a"
+                sw_a = fmt_err(self.worst(h["n"], h["max_abs_lobe"]), False) if h else "n/a"
+                b = p.get("budget", {})
+                where = lambda e: f"{e.get('n', '?')}, {e.get('psi', float('nan')):.4f}" if e else "n/a"  # noqa: E731
+                w(f"| {name} | {fmt_err(rr.get('value'))} | {where(rr)} | {fmt_err(ra.get('value'), False)} | "
+                  f"{where(ra)} | {sw_r} | {sw_a} | {fmt_err(b.get('rel_epicenter'))} / {fmt_err(b.get('abs_lobe'), False)} |")
             if not any("golden_seconds" in p for p in sim.get("policies", {}).values()):
                 w("\nThe regression's JSON reports the time inside the Verilator model (`sim_seconds`) and the total; the "
                   "golden model and the floating-point reference are not timed separately, so their shares are given "
