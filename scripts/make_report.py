@@ -21,6 +21,7 @@ import json
 import math
 import os
 import platform
+import shutil
 import subprocess
 import sys
 import time
@@ -199,6 +200,9 @@ class Report:
             return {}
         if not self.exe("romgen"):
             self.missing.append("romgen was not built: no Yosys cell counts")
+            return {}
+        if not shutil.which("yosys"):
+            self.missing.append("yosys is not on PATH: no cell counts")
             return {}
         if not glob.glob(os.path.join(ROOT, "rtl", "specular_unit.sv")):
             self.missing.append("rtl/specular_unit.sv missing: no Yosys cell counts")
