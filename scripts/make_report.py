@@ -48,7 +48,7 @@ EVALUATORS = [
     ("device", "golden fixed-point device model, maclaurin ROM", "registers"),
     ("device_minimax", "golden fixed-point device model, minimax ROM", "registers"),
 ]
-COLORS = {key: plt.get_cmap("tab20")(2 * i % 20 + (i >= 10)) for i, (key, _, _) in enumerate(EVALUATORS)}
+COLORS = {key: (plt.get_cmap("tab10")(i) if i < 10 else "#333333") for i, (key, _, _) in enumerate(EVALUATORS)}
 TOLERANCE = 0.0025  # the "within 0.25 % epicenter error" headline
 
 
@@ -269,7 +269,7 @@ class Report:
                 shown = max(y, floor)
                 ax.scatter([x], [shown], s=50, color=COLORS[key])
                 ax.annotate(key + (" (< 1e-9)" if y < floor else ""), (x, shown), textcoords="offset points",
-                            xytext=(6, -12 if key in ("device", "schlick_mod", "patent_minimax") else 4), fontsize=9)
+                            xytext=(6, -12 if key in ("device_minimax", "schlick_mod", "patent_minimax") else 4), fontsize=9)
             if metric == "rel":
                 ax.axhline(TOLERANCE, color="grey", ls="--", lw=1)
                 ax.text(ax.get_xlim()[0], TOLERANCE * 1.15, " 0.25 %", color="grey", fontsize=8)
