@@ -14,7 +14,10 @@ namespace specular {
 
 std::string cos_rom_file_name(const device::Format& f) {
   std::string name = "cos_k";
-  for (int k : f.banks) name += "_" + std::to_string(k);
+  for (int k : f.banks) {
+    name += '_';
+    name += std::to_string(k);
+  }
   return name + ".hex";
 }
 

@@ -9,8 +9,12 @@
 
 #include "device_model.hpp"
 
+// Verilator's own headers are not warning-clean under -Wextra.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
 #include <verilated.h>
 #include <verilated_vcd_c.h>
+#pragma GCC diagnostic pop
 
 #include <cstdint>
 #include <memory>
