@@ -78,6 +78,7 @@ int main(int argc, char** argv) {
   const std::vector<int> ns{5, 50, 500};
   device::Format f;
   const device::DeviceModel dm(f, coef_rom_image(f, CoefSpec{CoefPolicy::maclaurin}), cos_rom_image(f));
+  const device::DeviceModel dm_mm(f, coef_rom_image(f, CoefSpec{CoefPolicy::minimax}), cos_rom_image(f));
   // Scanlines live until main returns; the benchmarks capture them by reference.
   static std::vector<Scanline> lines;
   lines.reserve(ns.size());
@@ -121,6 +122,14 @@ int main(int argc, char** argv) {
     benchmark::RegisterBenchmark(bench_name("device", n).c_str(), [&s, &dm](benchmark::State& st) {
       for (auto _ : st) {
         std::vector<uint32_t> out = dm.line(s.regs);
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+      }
+      st.SetItemsProcessed(st.iterations() * static_cast<int64_t>(kPixels));
+    });
+    benchmark::RegisterBenchmark(bench_name("device_minimax", n).c_str(), [&s, &dm_mm](benchmark::State& st) {
+      for (auto _ : st) {
+        std::vector<uint32_t> out = dm_mm.line(s.regs);
         benchmark::DoNotOptimize(out.data());
         benchmark::ClobberMemory();
       }
