@@ -128,7 +128,7 @@ TEST_CASE("specular_unit parameter defaults equal device::Format", "[rtl][unit]"
 }
 
 TEST_CASE("specular_unit protocol: latency, l+1 pixels, busy, for l = 0..3", "[rtl][unit]") {
-  const uint32_t l = GENERATE(0u, 1u, 2u, 3u, 10u);
+  const uint32_t l = GENERATE(0u, 1u, 2u, 3u, 10u, 2047u);  // 2047: counter maximum
   Vunit dut;
   reset(dut);
   clear_inputs(dut);
