@@ -14,7 +14,8 @@
 //             clock it rises and falls with run_q (the patent offsets them by a
 //             generator phase); it is kept as its own bit to mirror the patent.
 // The data-valid strobe (29) is the register-8 strobe delayed by the datapath latency
-// PipeDepth (multiplier 11 -> ROM 12 -> multiplier 13 -> output register).
+// PipeDepth (register 8 -> multiplier 11 (2 stages) -> ROM 12 -> multiplier 13 / output
+// register).
 //
 // Timing with start_i high in cycle s while idle (l = value of counter 5):
 //   s+1 .. s+1+l           strobes (l + 1 of them); the last one carries the borrow
@@ -23,7 +24,7 @@
 // Starts while busy are ignored; idle_o qualifies register writes the same way.
 
 module specular_control #(
-  parameter int PipeDepth = 4
+  parameter int PipeDepth = 5
 ) (
   input  logic clk_i,
   input  logic rst_ni,

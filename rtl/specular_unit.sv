@@ -23,13 +23,13 @@
 // Register values persist until rewritten (l included, see specular_down_counter).
 //
 // Protocol, start_i high in cycle s while idle (writes in cycle s apply to this line):
-//   busy_o   high in cycles s+1 .. s+5+l, low in s+6+l, when a new start is accepted
-//   valid_o  high in cycles s+5 .. s+5+l, pixel i in cycle s+5+i
-// i.e. latency 5 clocks to the first pixel, one pixel per clock, a line occupies l + 6
+//   busy_o   high in cycles s+1 .. s+6+l, low in s+7+l, when a new start is accepted
+//   valid_o  high in cycles s+6 .. s+6+l, pixel i in cycle s+6+i
+// i.e. latency 6 clocks to the first pixel, one pixel per clock, a line occupies l + 7
 // clocks from start to the next accepted start. Writes and starts while busy are ignored.
 //
 // Pipeline (patent block numbers): control 14 strobes register 8 (accumulator 6/7/8)
-// once per clock -> multiplier 11 (|psi|, zeta, ROM address; registered) -> ROM 12
+// once per clock -> multiplier 11 (|psi|; then zeta and the ROM address: 2 stages) -> ROM 12
 // (synchronous read) -> multiplier 13 (output register). ROM 9 is read from register 4
 // and settles while idle; decoder 10 is combinational on register 4.
 //
@@ -91,9 +91,9 @@ module specular_unit #(
   output logic                 busy_o
 );
 
-  // Strobe of register 8 to the output register: multiplier 11 stage, ROM 12 read,
-  // multiplier 13 / output register, plus register 8 itself.
-  localparam int PipeDepth = 4;
+  // Strobe of register 8 to the output register: register 8 itself, the two stages of
+  // multiplier 11, the ROM 12 read, multiplier 13 / output register.
+  localparam int PipeDepth = 5;
 
   if (CFrac > CBits) begin : gen_c_check
     $error("specular_unit: CFrac must not exceed CBits");

@@ -2,8 +2,9 @@
 // as fixed for the synchronous RTL: with start_i high in cycle s while idle,
 //   strobes (register 8 write 37) and count pulses (34) in s+1 .. s+1+l,
 //   mux select (36) 0 on the first strobe and 1 on the others,
-//   data valid (29) in s+5 .. s+5+l (latency 4 behind the strobe),
-//   busy (28) in s+1 .. s+5+l, a new start accepted from s+6+l on,
+//   data valid (29) in s+6 .. s+6+l (PipeDepth = 5 behind the strobe: register 8, two
+//   stages of multiplier 11, ROM 12, multiplier 13 / output register),
+//   busy (28) in s+1 .. s+6+l, a new start accepted from s+7+l on,
 // the borrow coming from a counter modelled here: loaded with l, decremented by every
 // count pulse, borrow on the pulse that passes zero. Starts while busy are ignored.
 #include "Vcontrol.h"
@@ -19,6 +20,8 @@ using specular::rtl_test::reset;
 using specular::rtl_test::tick;
 
 namespace {
+
+constexpr int kValidFrom = 6;  // first valid cycle after the start cycle
 
 struct Signals {
   bool strobe, sel, count, valid, busy, idle, borrow;
@@ -40,8 +43,8 @@ Signals expected(int cycle, const std::vector<int>& accepted, int l) {
     if (d >= 1 && d <= 1 + l) e.strobe = e.count = true;
     if (d >= 2 && d <= 1 + l) e.sel = true;
     if (d == 1 + l) e.borrow = true;
-    if (d >= 5 && d <= 5 + l) e.valid = true;
-    if (d >= 1 && d <= 5 + l) e.busy = true;
+    if (d >= kValidFrom && d <= kValidFrom + l) e.valid = true;
+    if (d >= 1 && d <= kValidFrom + l) e.busy = true;
   }
   e.idle = !e.busy;
   return e;
@@ -76,8 +79,8 @@ void run(int l, const std::vector<int>& starts, const std::vector<int>& accepted
   }
   // Every line that ended inside the window delivered exactly l + 1 valid cycles.
   for (int s : accepted)
-    if (s + 5 + l < cycles) full_lines_valid += l + 1;
-    else if (s + 5 < cycles) full_lines_valid += cycles - (s + 5);
+    if (s + kValidFrom + l < cycles) full_lines_valid += l + 1;
+    else if (s + kValidFrom < cycles) full_lines_valid += cycles - (s + kValidFrom);
   CHECK(valid_cycles == full_lines_valid);
 }
 
@@ -90,11 +93,12 @@ TEST_CASE("control unit: one line, l = 0..3", "[rtl][control]") {
 
 TEST_CASE("control unit: starts while busy are ignored", "[rtl][control]") {
   const int l = GENERATE(0, 1, 2, 3);
-  // Start in cycle 1; extra pulses in every busy cycle (1 .. 5+l after it) are ignored;
-  // the start in cycle 1+6+l (first idle cycle) is accepted back to back.
+  // Start in cycle 1; extra pulses in every busy cycle (1 .. 6+l after it) are ignored;
+  // the start in cycle 1+7+l (first idle cycle) is accepted back to back.
+  const int next = 1 + kValidFrom + 1 + l;
   std::vector<int> starts;
-  for (int c = 1; c <= 1 + 6 + l; ++c) starts.push_back(c);
-  run(l, starts, {1, 1 + 6 + l}, 30);
+  for (int c = 1; c <= next; ++c) starts.push_back(c);
+  run(l, starts, {1, next}, 30);
 }
 
 TEST_CASE("control unit: a held start_i restarts as soon as the line ends", "[rtl][control]") {
@@ -102,7 +106,7 @@ TEST_CASE("control unit: a held start_i restarts as soon as the line ends", "[rt
   std::vector<int> starts;
   for (int c = 0; c < 40; ++c) starts.push_back(c);
   std::vector<int> accepted;
-  for (int s = 0; s < 40; s += 6 + l) accepted.push_back(s);
+  for (int s = 0; s < 40; s += kValidFrom + 1 + l) accepted.push_back(s);
   run(l, starts, accepted, 40);
 }
 

@@ -42,7 +42,8 @@ void check_angle(Vangle_mul& dut, int64_t psi_raw, uint32_t coef, bool n_valid) 
   dut.psi_i = static_cast<uint64_t>(psi_raw) & ((uint64_t{1} << 44) - 1);
   dut.coef_i = coef;
   dut.n_valid_i = n_valid;
-  tick(dut);
+  tick(dut);  // stage 1: |psi|_t, far, coefficient
+  tick(dut);  // stage 2: zeta, rounded address, zero flag
   const AddrExpect e = expect_addr(psi_raw, coef, n_valid);
   INFO("psi_raw = " << psi_raw << ", coef = " << coef << ", n_valid = " << n_valid);
   REQUIRE(static_cast<bool>(dut.zero_o) == e.zero);

@@ -1,5 +1,5 @@
 // Top level specular_unit: the protocol of SPEC section 6 as fixed for the RTL
-// (latency 5, one pixel per clock, busy through the last pixel, l + 6 clocks per line),
+// (latency 6, one pixel per clock, busy through the last pixel, l + 7 clocks per line),
 // zero conditions, writes and starts while busy, asynchronous reset, and the RTL
 // parameter defaults against specular::device::Format.
 #include "Vunit.h"
@@ -22,8 +22,8 @@ using specular::rtl_test::tick;
 
 namespace {
 
-constexpr int kLatency = 5;        // start in cycle s -> first valid pixel in s + 5
-constexpr int kLineOverhead = 6;   // start to next accepted start: l + 6 cycles
+constexpr int kLatency = 6;        // start in cycle s -> first valid pixel in s + 6
+constexpr int kLineOverhead = 7;   // start to next accepted start: l + 7 cycles
 
 struct Line {
   uint32_t c = 0x4000;  // 0.5
@@ -157,7 +157,7 @@ TEST_CASE("specular_unit accepts the next start in the first idle cycle", "[rtl]
   ln.len = l;
   write_and_start(dut, ln);
   const int next = static_cast<int>(l) + kLineOverhead;
-  // Hold start_i high in every cycle: lines start in cycles 0, l+6, 2(l+6), ...
+  // Hold start_i high in every cycle: lines start in cycles 0, l+7, 2(l+7), ...
   const Trace t = run_line(dut, 2 * next + kLatency + 1, [&](int) { dut.start_i = 1; });
   std::vector<int> want;
   for (int line = 0; line < 3; ++line)
