@@ -28,14 +28,15 @@ module specular_control #(
 ) (
   input  logic clk_i,
   input  logic rst_ni,
-  input  logic start_i,    // start pulse 26
-  input  logic borrow_i,   // borrow 35 of counter 5
-  output logic idle_o,     // register writes allowed
-  output logic strobe_o,   // write 37 of register 8
-  output logic sel_o,      // mux select 36
-  output logic count_o,    // count pulse 34
-  output logic valid_o,    // data valid strobe 29
-  output logic busy_o      // "End" 28
+  input  logic start_i,        // start pulse 26
+  input  logic borrow_i,       // borrow 35 of counter 5
+  output logic idle_o,         // register writes allowed
+  output logic strobe_o,       // write 37 of register 8
+  output logic sel_o,          // mux select 36
+  output logic count_o,        // count pulse 34
+  output logic valid_o,        // data valid strobe 29
+  output logic valid_next_o,   // a pixel enters the output register at the next edge
+  output logic busy_o          // "End" 28
 );
 
   if (PipeDepth < 1) begin : gen_depth_check
@@ -110,6 +111,11 @@ module specular_control #(
 
   assign idle_o  = ~start_q;
   assign valid_o = vld_q[PipeDepth-1];
+  if (PipeDepth > 1) begin : gen_valid_next
+    assign valid_next_o = vld_q[PipeDepth-2];
+  end else begin : gen_valid_next_strobe
+    assign valid_next_o = strobe_o;
+  end
   assign busy_o  = start_q;
 
 endmodule

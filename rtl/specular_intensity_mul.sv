@@ -3,8 +3,9 @@
 // Multiplier 13 of patent UA 71489 and the output register (output 27):
 //   I = (C * cosk + 2^(CosDataBits-1)) >> CosDataBits
 // C from register 1 (unsigned, CBits bits), cosk from ROM 12 (all CosDataBits bits are
-// fraction, cosk < 1), so I has the format of C and cannot overflow. A pixel flagged
-// zero (far angle, zeta >= pi/2, invalid n) outputs 0.
+// fraction, cosk < 1), so I has the format of C and cannot overflow. zero_i forces 0: a
+// pixel flagged zero (far angle, zeta >= pi/2, invalid n), or no pixel at all (the
+// output reads 0 whenever valid_o is low).
 
 module specular_intensity_mul #(
   parameter int CBits       = 16,

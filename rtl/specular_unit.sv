@@ -17,7 +17,7 @@
 //   n_we_i,    n_i[10]    write reg 4: n, unsigned 1..1000 (0 or > 1000: all pixels 0)
 //   len_we_i,  len_i[11]  write counter 5: l; the line has l + 1 pixels
 //   start_i               one-cycle pulse: start the line
-//   intensity_o[16]       pixel intensity, format of C (output 27)
+//   intensity_o[16]       pixel intensity, format of C (output 27); 0 while valid_o is low
 //   valid_o               intensity_o holds the next pixel (data valid strobe 29)
 //   busy_o                line in progress ("End", 28)
 // Register values persist until rewritten (l included, see specular_down_counter).
@@ -105,21 +105,22 @@ module specular_unit #(
   // ---------------------------------------------------------------------------------
   // Control unit 14
   // ---------------------------------------------------------------------------------
-  logic idle, strobe, mux_sel, count, borrow;
+  logic idle, strobe, mux_sel, count, borrow, valid_next;
 
   specular_control #(
     .PipeDepth (PipeDepth)
   ) u_control (
-    .clk_i    (clk_i),
-    .rst_ni   (rst_ni),
-    .start_i  (start_i),
-    .borrow_i (borrow),
-    .idle_o   (idle),
-    .strobe_o (strobe),
-    .sel_o    (mux_sel),
-    .count_o  (count),
-    .valid_o  (valid_o),
-    .busy_o   (busy_o)
+    .clk_i        (clk_i),
+    .rst_ni       (rst_ni),
+    .start_i      (start_i),
+    .borrow_i     (borrow),
+    .idle_o       (idle),
+    .strobe_o     (strobe),
+    .sel_o        (mux_sel),
+    .count_o      (count),
+    .valid_o      (valid_o),
+    .valid_next_o (valid_next),
+    .busy_o       (busy_o)
   );
 
   // ---------------------------------------------------------------------------------
@@ -271,7 +272,7 @@ module specular_unit #(
     .rst_ni      (rst_ni),
     .c_i         (c_q),
     .cosk_i      (cosk),
-    .zero_i      (zero_rom_q),
+    .zero_i      (zero_rom_q | ~valid_next),   // 0 on the output whenever valid_o is low
     .intensity_o (intensity_o)
   );
 

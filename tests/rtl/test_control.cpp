@@ -24,26 +24,28 @@ namespace {
 constexpr int kValidFrom = 6;  // first valid cycle after the start cycle
 
 struct Signals {
-  bool strobe, sel, count, valid, busy, idle, borrow;
+  bool strobe, sel, count, valid, valid_next, busy, idle, borrow;
   bool operator==(const Signals&) const = default;
 };
 
 std::string show(const Signals& s) {
   return "strobe " + std::to_string(s.strobe) + " sel " + std::to_string(s.sel) + " count " +
-         std::to_string(s.count) + " valid " + std::to_string(s.valid) + " busy " +
+         std::to_string(s.count) + " valid " + std::to_string(s.valid) + " valid_next " +
+         std::to_string(s.valid_next) + " busy " +
          std::to_string(s.busy) + " idle " + std::to_string(s.idle) + " borrow " +
          std::to_string(s.borrow);
 }
 
 // Expected outputs in `cycle`, given the cycles in which a start was accepted.
 Signals expected(int cycle, const std::vector<int>& accepted, int l) {
-  Signals e{false, false, false, false, false, false, false};
+  Signals e{false, false, false, false, false, false, false, false};
   for (int s : accepted) {
     const int d = cycle - s;
     if (d >= 1 && d <= 1 + l) e.strobe = e.count = true;
     if (d >= 2 && d <= 1 + l) e.sel = true;
     if (d == 1 + l) e.borrow = true;
     if (d >= kValidFrom && d <= kValidFrom + l) e.valid = true;
+    if (d >= kValidFrom - 1 && d <= kValidFrom - 1 + l) e.valid_next = true;
     if (d >= 1 && d <= kValidFrom + l) e.busy = true;
   }
   e.idle = !e.busy;
@@ -68,6 +70,7 @@ void run(int l, const std::vector<int>& starts, const std::vector<int>& accepted
     dut.eval();
     const Signals got{static_cast<bool>(dut.strobe_o), static_cast<bool>(dut.sel_o),
                       static_cast<bool>(dut.count_o), static_cast<bool>(dut.valid_o),
+                      static_cast<bool>(dut.valid_next_o),
                       static_cast<bool>(dut.busy_o), static_cast<bool>(dut.idle_o), borrow};
     const Signals want = expected(c, accepted, l);
     INFO("l = " << l << ", cycle " << c << "\n  got  " << show(got) << "\n  want "

@@ -60,6 +60,7 @@ struct Trace {
   int busy_first = -1, busy_last = -1;
   bool valid_contiguous = true;
   bool busy_contiguous = true;
+  int nonzero_while_invalid = 0;  // intensity_o must read 0 whenever valid_o is low
 };
 
 // Cycle 0 = the start cycle (inputs already set by the caller); runs `cycles` cycles.
@@ -81,6 +82,7 @@ Trace run_line(Vunit& dut, int cycles, F during) {
       t.pixels.push_back(dut.intensity_o);
       t.valid_cycles.push_back(c);
     }
+    if (!dut.valid_o && dut.intensity_o != 0) ++t.nonzero_while_invalid;
     if (dut.busy_o) {
       if (t.busy_first < 0) t.busy_first = c;
       else if (last_busy != c - 1) t.busy_contiguous = false;
@@ -146,6 +148,7 @@ TEST_CASE("specular_unit protocol: latency, l+1 pixels, busy, for l = 0..3", "[r
   CHECK(t.busy_contiguous);
   CHECK(t.busy_first == 1);
   CHECK(t.busy_last == kLatency + static_cast<int>(l));  // through the last pixel
+  CHECK(t.nonzero_while_invalid == 0);
   for (uint32_t p : t.pixels) CHECK(p == peak_intensity(ln.c));
 }
 
@@ -280,6 +283,8 @@ TEST_CASE("specular_unit agrees with the golden model on random lines", "[rtl][u
     const auto want = model.line(r);
     INFO("line " << line << ": n = " << ln.n << ", l = " << ln.len);
     REQUIRE(t.pixels == want);
+    CHECK(t.first_valid == kLatency);
+    CHECK(t.nonzero_while_invalid == 0);
   }
 }
 
