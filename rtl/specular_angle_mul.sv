@@ -2,8 +2,9 @@
 //
 // Multiplier 11 of patent UA 71489: zeta = a(n) * psi, turned into the ROM 12 address.
 // Two pipeline stages (latency 2): |psi| and its truncation are registered before the
-// multiplier (this split lifts Fmax on an iCE40-HX8K from 39 to 55 MHz), the rounded
-// address and the zero flag after it. Bit-exact contract (model/device_model.hpp):
+// multiplier, the rounded address and the zero flag after it. The split lifts the
+// iCE40-HX8K Fmax from 39 to about 55 MHz (scripts/synth_pnr.sh).
+// Bit-exact contract (model/device_model.hpp):
 //   |psi|            cos is even, so only the magnitude of register 8 matters
 //   far              |psi| >= 8 rad: the pixel is 0 (and |psi| fits 3 integer bits below)
 //   psi_t            |psi| truncated to 3 integer and PsiMulFrac fraction bits
