@@ -41,16 +41,18 @@ module specular_cos_k_rom #(
     end
   end
 
+  localparam int AddrBits = (NumBanks > 1) ? BankBits + CosAddrBits : CosAddrBits;
+
   logic [CosDataBits-1:0] mem [Depth];
   logic [CosDataBits-1:0] cosk_q;
-  logic [BankBits+CosAddrBits-1:0] addr;
+  logic [AddrBits-1:0]    addr;
 
   if (NumBanks > 1) begin : gen_multi_bank
     assign addr = {bank_idx, addr_i};
   end else begin : gen_single_bank
     logic unused_bank_idx;
     assign unused_bank_idx = bank_idx[0];
-    assign addr = {1'b0, addr_i};
+    assign addr = addr_i;
   end
 
   initial begin
