@@ -11,8 +11,8 @@
 //             one write of register 8 (37)
 //   mux_sel_q mux select (36): 0 for the first strobe (register 8 loads psi0), then 1
 //   cnt_en_q  count enable: gates the count pulses (34) of counter 5. With one pixel per
-//             clock it rises and falls with run_q (the patent offsets them by a
-//             generator phase); it is kept as its own bit to mirror the patent.
+//             clock it rises and falls with run_q; it is kept as its own bit so that the
+//             patent's four flip-flops can be found in the RTL (synthesis merges it).
 // The data-valid strobe (29) is the register-8 strobe delayed by the datapath latency
 // PipeDepth (register 8 -> multiplier 11 (2 stages) -> ROM 12 -> multiplier 13 / output
 // register).
