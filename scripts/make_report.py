@@ -21,6 +21,7 @@ import json
 import math
 import os
 import platform
+import re
 import shutil
 import subprocess
 import sys
@@ -215,6 +216,33 @@ class Report:
                 self.missing.append(f"synthesis of {name}: {r['error']}")
         return res
 
+    def pnr(self, addr_bits=(9, 10)):
+        """Place and route (nextpnr-ice40, HX8K) of the default logic with smaller ROM 12s:
+        the default 256-Kbit ROM 12 needs more block RAM than any iCE40 has."""
+        romgen = self.exe("romgen")
+        if not romgen:
+            self.missing.append("romgen was not built: no place and route")
+            return []
+        rows = []
+        pat = re.compile(r"LUT4 (\d+), FF (\d+), SB_RAM40_4K (\d+), Fmax ([0-9.]+) MHz")
+        for bits in addr_bits:
+            log = os.path.join(self.logs, f"pnr_{bits}.log")
+            t0 = time.time()
+            try:
+                rc, _ = run(["bash", os.path.join(ROOT, "scripts", "synth_pnr.sh"), romgen, str(bits),
+                             os.path.join(self.out, "pnr", str(bits))], log, timeout=900)
+            except subprocess.TimeoutExpired:
+                rc = -1
+            self.timings[f"place and route, CosAddrBits={bits}"] = time.time() - t0
+            with open(log) as f:
+                m = pat.search(f.read()) if rc == 0 else None
+            if not m:
+                self.missing.append(f"place and route with CosAddrBits={bits} failed (see logs/pnr_{bits}.log)")
+                continue
+            rows.append({"cos_addr_bits": bits, "lut4": int(m[1]), "ff": int(m[2]), "bram": int(m[3]),
+                         "fmax_mhz": float(m[4])})
+        return rows
+
     def sim(self):
         exe = self.exe("sim_regression")
         if not exe:
@@ -379,7 +407,7 @@ class Report:
         plt.close(fig)
 
     # ---------------------------------------------------------------- text
-    def write(self, speed, data, cells, sim):
+    def write(self, speed, data, cells, sim, pnr=()):
         rows = self.error_rows(data)
         md = []
         w = md.append
@@ -549,11 +577,20 @@ class Report:
         if cpp:
             w("\nCycles per pixel, measured by the Verilator regression of the default configurations (section 5): "
               + "; ".join(f"{n}: {a:.4f} over all lines, {b:.4f} on l = 2047 lines" for n, a, b in cpp)
-              + ". The other configurations change only widths, ROM depth and the decoder table, not the pipeline. "
-              "Clock frequency after place and route is not part of this report.\n")
+              + ". The other configurations change only widths, ROM depth and the decoder table, not the pipeline.\n")
         else:
-            w("\nCycles per pixel: not measured in this run (no regression). Clock frequency after place and route is "
-              "not part of this report.\n")
+            w("\nCycles per pixel: not measured in this run (no regression).\n")
+        if pnr:
+            w("Clock frequency after place and route (`scripts/synth_pnr.sh`: Yosys `synth_ice40`, nextpnr-ice40 "
+              "`--hx8k --package ct256 --seed 1`) of the default logic with ROM 12 regenerated with fewer address bits, "
+              "because the default 256-Kbit ROM 12 needs more block RAM than any iCE40 has (32 on the HX8K). At one "
+              "pixel per clock the pixel rate equals the clock.\n")
+            w("| ROM 12 address bits | LUT4 | FF | SB_RAM40_4K | Fmax (MHz) | pixels per second |")
+            w("|---|---|---|---|---|---|")
+            for r in pnr:
+                w(f"| {r['cos_addr_bits']} | {r['lut4']} | {r['ff']} | {r['bram']} | {r['fmax_mhz']:.2f} | "
+                  f"{r['fmax_mhz'] * 1e6:.3g} |")
+            w("")
         if hw:
             w("![hardware](hardware.png)\n")
 
@@ -633,6 +670,7 @@ class Report:
         speed = self.bench()
         data = self.model_data()
         cells = self.synth(data.get("hardware", []))
+        pnr = self.pnr()
         sim = self.sim() if not self.args.no_sim else {}
         rows = self.error_rows(data)
         if rows and speed:
@@ -646,7 +684,7 @@ class Report:
         if data.get("hardware"):
             self.plot_hardware(data["hardware"], cells)
         self.timings["whole report"] = time.time() - t0
-        self.write(speed, data, cells, sim)
+        self.write(speed, data, cells, sim, pnr)
         print(f"wrote {os.path.join(self.out, 'report.md')} ({time.time() - t0:.0f} s)")
         return 0
 
