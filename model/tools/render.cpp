@@ -8,12 +8,12 @@
 // quantized span registers) and <scene>_device_error.png (golden - float), and four
 // more CSV columns. An RTL image is one more evaluator (see image.hpp).
 // Exit codes: 0 ok, 2 bad arguments or bad scene file, 1 I/O failure.
+#include "cli_parse.hpp"
 #include "image.hpp"
 #include "raster.hpp"
 #include "rom_image.hpp"
 #include "scene.hpp"
 
-#include <CLI/CLI.hpp>
 
 #include <chrono>
 #include <cstdio>
@@ -46,14 +46,7 @@ int main(int argc, char** argv) {
   app.add_flag("--golden", golden, "also render the bit-accurate device model and the device-error heatmap");
   app.add_option("--coef-rom", coef_rom, "ROM 9 hex file for --golden (coefficient policy)")->capture_default_str();
   app.add_option("--cos-rom", cos_rom, "ROM 12 hex file for --golden")->capture_default_str();
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "render: " << e.what() << " (see --help)\n";
-    return 2;
-  }
+  if (const auto exit_code = specular::parse_command_line(app, argc, argv, "render")) return *exit_code;
   if (app.count("--scale") && !(scale > 0.0 && scale <= 1000.0)) {
     std::cerr << "render: --scale must be in (0, 1000], got " << scale << "\n";
     return 2;

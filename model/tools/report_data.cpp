@@ -11,6 +11,7 @@
 //   hardcases   the SPEC section 4 hard cases through scanline_setup, one object each
 // Non-finite numbers are written as the strings "inf", "-inf", "nan" (JSON has no such
 // numbers). Exit code 2 on bad arguments (nothing written).
+#include "cli_parse.hpp"
 #include "brdf.hpp"
 #include "coefficients.hpp"
 #include "device_model.hpp"
@@ -19,7 +20,6 @@
 #include "rom_image.hpp"
 #include "scanline_setup.hpp"
 
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <chrono>
@@ -370,14 +370,7 @@ int main(int argc, char** argv) {
   app.add_option("--out", out_path, "output file (default: stdout); written whole or not at all");
   app.add_option("--n-step", n_step, "sample n = 1, 1+S, ..., 1000 (S in 1..999)")->capture_default_str();
   app.add_option("--section", sections, "evaluators, curves, albedo, hardware, hardcases (repeatable; default all)");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "report_data: " << e.what() << "\n";
-    return 2;
-  }
+  if (const auto exit_code = specular::parse_command_line(app, argc, argv, "report_data")) return *exit_code;
   if (n_step < 1 || n_step > 999) {
     std::cerr << "report_data: --n-step must be in 1..999 (got " << n_step << ")\n";
     return 2;

@@ -3,11 +3,11 @@
 //   romgen --out-dir d --policy kutlog:0.3 --cos-addr-bits 10 ...   other configurations
 // Files are written whole (temp file + rename); on any error nothing is written and the
 // exit code is 2 (bad arguments) or 1 (I/O).
+#include "cli_parse.hpp"
 #include "coefficients.hpp"
 #include "device_model.hpp"
 #include "rom_image.hpp"
 
-#include <CLI/CLI.hpp>
 
 #include <algorithm>
 #include <filesystem>
@@ -49,14 +49,7 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1000))
       ->delimiter(',');
   app.add_flag("--quiet", quiet, "do not list the files written");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "romgen: " << e.what() << "\n";
-    return 2;
-  }
+  if (const auto exit_code = specular::parse_command_line(app, argc, argv, "romgen")) return *exit_code;
 
   // Build every image before writing any file, so a bad policy or format writes nothing.
   std::vector<std::pair<std::string, std::vector<uint32_t>>> coef_images;

@@ -1,12 +1,12 @@
 // `specular`: command-line front end of the reference model. Its CSV output is a contract
 // (the report and outside scripts parse it): exact headers, numbers with 9 significant
 // digits, errors on stderr with exit code 2 and nothing on stdout.
+#include "cli_parse.hpp"
 #include "brdf.hpp"
 #include "coefficients.hpp"
 #include "metrics.hpp"
 #include "scanline_setup.hpp"
 
-#include <CLI/CLI.hpp>
 #include <glm/vec3.hpp>
 
 #include <cmath>
@@ -201,16 +201,7 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::CallForAllHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "specular: error: " << e.what() << "\nRun 'specular --help' (or 'specular <command> --help').\n";
-    return 2;
-  }
+  if (const auto exit_code = specular::parse_command_line(app, argc, argv, "specular")) return *exit_code;
 
   std::string cmd = "specular";
   Out out;
