@@ -3,6 +3,7 @@
 #include "metrics.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <numbers>
 #include <sstream>
@@ -65,6 +66,9 @@ nlohmann::json PolicyStats::to_json() const {
            long_line_pixels ? static_cast<double>(long_line_cycles) / long_line_pixels : 0.0},
           {"seconds", seconds},
           {"sim_seconds", sim_seconds},
+          {"rtl_seconds", sim_seconds},
+          {"golden_seconds", golden_seconds},
+          {"reference_seconds", reference_seconds},
           {"simulated_pixels_per_second", sim_seconds > 0 ? pixels / sim_seconds : 0.0},
           {"checked_pixels_per_second", seconds > 0 ? pixels / seconds : 0.0},
           {"failures", failures}};
@@ -119,8 +123,30 @@ void Checker::check_line(const Scanline& sl, const LineRun& run, bool random, Po
   const size_t npix = std::min<size_t>(run.pixels.size(), static_cast<size_t>(r.len) + 1);
   st.pixels += npix;
   (random ? st.rnd_pixels : st.det_pixels) += npix;
+
+  // Pass 1, the golden model alone (timed separately from the references).
+  using Clock = std::chrono::steady_clock;
+  const auto t_gold = Clock::now();
+  golden_.resize(npix);
+  for (size_t i = 0; i < npix; ++i) golden_[i] = model_.trace(r, static_cast<int>(i));
+  const auto t_ref = Clock::now();
+  st.golden_seconds += std::chrono::duration<double>(t_ref - t_gold).count();
+  // Pass 2, the double references: (b) C cos^k(a psi) and (c) C cos^n(psi).
+  psi_.resize(npix);
+  ref_b_.resize(npix);
+  ref_c_.resize(npix);
   for (size_t i = 0; i < npix; ++i) {
-    const device::PixelTrace t = model_.trace(r, static_cast<int>(i));
+    const double psi = device::angle_value(golden_[i].psi, f);
+    const double apsi = std::fabs(psi);
+    psi_[i] = psi;
+    ref_b_[i] = n_ok && a * apsi < kHalfPi ? c * std::pow(std::cos(a * apsi), k) : 0.0;
+    ref_c_[i] = n_ok && apsi < kHalfPi ? c * std::pow(std::cos(psi), static_cast<double>(r.n)) : 0.0;
+  }
+  st.reference_seconds += std::chrono::duration<double>(Clock::now() - t_ref).count();
+
+  // Pass 3, the comparisons.
+  for (size_t i = 0; i < npix; ++i) {
+    const device::PixelTrace& t = golden_[i];
     const uint32_t got = run.pixels[i];
     // (a)
     if (got != t.intensity) {
@@ -134,12 +160,11 @@ void Checker::check_line(const Scanline& sl, const LineRun& run, bool random, Po
       }
       ++st.mismatches;
     }
-    const double psi = device::angle_value(t.psi, f);
+    const double psi = psi_[i];
     const double apsi = std::fabs(psi);
     const double out = got * lsb;
     // (b)
-    double ref_b = 0.0;
-    if (n_ok && a * apsi < kHalfPi) ref_b = c * std::pow(std::cos(a * apsi), k);
+    const double ref_b = ref_b_[i];
     const double err_b = std::fabs(out - ref_b);
     keep_max(st.quant_lsb, err_b / lsb, sl, static_cast<int>(i), psi, c);
     if (n_ok) {
@@ -157,8 +182,7 @@ void Checker::check_line(const Scanline& sl, const LineRun& run, bool random, Po
       note(st, st.policy + " invalid n=" + std::to_string(r.n) + " gave a nonzero pixel");
     }
     // (c)
-    double ref_c = 0.0;
-    if (n_ok && apsi < kHalfPi) ref_c = c * std::pow(std::cos(psi), static_cast<double>(r.n));
+    const double ref_c = ref_c_[i];
     const double err_c = std::fabs(out - ref_c);
     const double err_allow = std::max(0.0, err_c - lsb);
     if (n_ok && apsi <= xe && ref_c > 0.0) {

@@ -63,7 +63,9 @@ struct PolicyStats {
   uint64_t cycles = 0;      // from each start to the cycle the next start is accepted
   uint64_t long_line_cycles = 0, long_line_pixels = 0;  // lines with l = max (steady state)
   double seconds = 0.0;     // wall time of the simulation + checks
-  double sim_seconds = 0.0; // wall time inside the Verilator harness only
+  double sim_seconds = 0.0; // wall time inside the Verilator harness only (the RTL: eval/tick)
+  double golden_seconds = 0.0;     // wall time in the golden model (DeviceModel::trace)
+  double reference_seconds = 0.0;  // wall time in the double references of (b) and (c)
   std::vector<std::string> failures;  // first few, human readable
   bool ok() const {
     return lines > 0 && mismatches == 0 && protocol_errors == 0 && quant_violations == 0 && rel_violations == 0 &&
@@ -77,13 +79,22 @@ class Checker {
   // a_exact[n]: the policy's coefficient for n (0 where n is invalid).
   Checker(const device::DeviceModel& model, std::vector<double> a_exact, Budget budget);
   // Checks every pixel of `run` against the three references and folds the result into `st`.
+  // The golden model and the double references are computed in two timed passes before the
+  // comparison (st.golden_seconds, st.reference_seconds).
   void check_line(const Scanline& sl, const LineRun& run, bool random, PolicyStats& st) const;
+
+  // Of the last check_line: the (c) reference C cos^n(psi_i) of each checked pixel (0 past
+  // pi/2 and for invalid n), from the latched registers.
+  const std::vector<double>& last_reference() const { return ref_c_; }
 
  private:
   const device::DeviceModel& model_;
   std::vector<double> a_;
   Budget budget_;
   std::vector<double> dk_;  // max |d/dx cos^k x| per bank
+  // Per-line scratch of check_line (reused to avoid allocations per line).
+  mutable std::vector<device::PixelTrace> golden_;
+  mutable std::vector<double> psi_, ref_b_, ref_c_;
 };
 
 }  // namespace specular::sim

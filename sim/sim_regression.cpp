@@ -4,6 +4,8 @@
 //   sim_regression                          full regression, both policies, summary table
 //   sim_regression --seed S --random N --policy minimax|maclaurin|both --json FILE
 //   sim_regression --vcd-dir DIR --vcd-only DIR/line_l3.vcd (l = 3) and DIR/line_long.vcd
+//   sim_regression --scenes-dir DIR --images-dir DIR   every DIR/*.json through the RTL, PNGs
+//   sim_regression --no-scenes                         regression lines only
 #include "checks.hpp"
 #include "harness.hpp"  // before the V*.h: wraps the Verilator headers in a warning guard
 
@@ -16,6 +18,7 @@
 #include "rom_image.hpp"
 #include "scanline_setup.hpp"
 #include "scanlines.hpp"
+#include "scene_stage.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -95,9 +98,13 @@ int write_vcds(const Format& f, const std::string& dir, const std::string& coef_
   return 0;
 }
 
+// The regression lines, then (same device instance, same checker and budgets) every scene;
+// the scene images are written when images_dir is not empty.
 template <class V>
 PolicyStats run_policy(const Format& f, const std::string& policy, const std::string& coef_hex, Budget budget,
-                       const std::vector<Scanline>& det, const std::vector<Scanline>& rnd, uint64_t seed) {
+                       const std::vector<Scanline>& det, const std::vector<Scanline>& rnd, uint64_t seed,
+                       const std::vector<LoadedScene>& scenes, const std::string& images_dir,
+                       std::vector<SceneStats>& scene_stats) {
   PolicyStats st;
   st.policy = policy;
   st.budget = budget;
@@ -134,6 +141,11 @@ PolicyStats run_policy(const Format& f, const std::string& policy, const std::st
   }
   st.sim_seconds = sim_s;
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  for (const auto& ls : scenes) {
+    SceneStats ss = run_scene(h, checker, policy, ls, images_dir, rng);
+    ss.checks.budget = budget;
+    scene_stats.push_back(std::move(ss));
+  }
   return st;
 }
 
@@ -206,6 +218,15 @@ void print_table(const std::vector<PolicyStats>& all) {
   });
   row("simulated pixels / s (RTL only)", [](const PolicyStats& s) { return num(s.pixels / s.sim_seconds, "%.3e"); });
   row("checked pixels / s (all checks)", [](const PolicyStats& s) { return num(s.pixels / s.seconds, "%.3e"); });
+  // Where the wall time goes: RTL = Verilator eval/tick, golden = DeviceModel::trace,
+  // reference = the double C cos^k(a psi) and C cos^n(psi); the rest is the comparisons.
+  auto share = [](double part, double total) { return num(part, "%.2f") + " s (" + num(100 * part / total, "%.0f") + " %)"; };
+  row("time: RTL (Verilator)", [&](const PolicyStats& s) { return share(s.sim_seconds, s.seconds); });
+  row("time: golden model", [&](const PolicyStats& s) { return share(s.golden_seconds, s.seconds); });
+  row("time: double reference", [&](const PolicyStats& s) { return share(s.reference_seconds, s.seconds); });
+  row("time: checks, setup, rest", [&](const PolicyStats& s) {
+    return share(s.seconds - s.sim_seconds - s.golden_seconds - s.reference_seconds, s.seconds);
+  });
   row("result", [](const PolicyStats& s) { return std::string(s.ok() ? "PASS" : "FAIL"); });
 
   size_t w0 = 0;
@@ -235,8 +256,8 @@ int main(int argc, char** argv) {
   const Format f;
   uint64_t seed = 20260522;
   int random_lines = 100000;
-  std::string policy = "both", vcd_dir, json_path;
-  bool vcd_only = false;
+  std::string policy = "both", vcd_dir, json_path, scenes_dir = "scenes", images_dir = "build/scenes";
+  bool vcd_only = false, no_scenes = false;
 
   CLI::App app{"Verilator regression of specular_unit against the golden model"};
   app.add_option("--seed", seed, "seed of the random scanlines")->capture_default_str();
@@ -249,6 +270,10 @@ int main(int argc, char** argv) {
   app.add_option("--vcd-dir", vcd_dir, "write line_l3.vcd and line_long.vcd (minimax build) into DIR");
   app.add_flag("--vcd-only", vcd_only, "only write the VCD files, no regression")->needs("--vcd-dir");
   app.add_option("--json", json_path, "also write the summary as JSON to FILE");
+  app.add_option("--scenes-dir", scenes_dir, "run every DIR/*.json scene through the RTL")->capture_default_str();
+  app.add_option("--images-dir", images_dir, "write the scene PNGs into DIR (created if missing)")
+      ->capture_default_str();
+  app.add_flag("--no-scenes", no_scenes, "skip the scene stage");
   try {
     app.parse(argc, argv);
   } catch (const CLI::CallForHelp& e) {
@@ -263,6 +288,29 @@ int main(int argc, char** argv) {
     std::cerr << "sim_regression: the RTL was verilated with other formats than device::Format: " << why << "\n";
     return 1;
   }
+  if (scenes_dir.empty() || images_dir.empty()) {
+    std::cerr << "sim_regression: --scenes-dir and --images-dir must not be empty\n";
+    return 2;
+  }
+  // Scenes are loaded before anything runs: a bad scene file stops the run with nothing written.
+  std::vector<LoadedScene> scenes;
+  const auto t_run = std::chrono::steady_clock::now();
+  if (!no_scenes && !vcd_only) {
+    try {
+      scenes = load_scenes(scenes_dir);
+    } catch (const specular::SceneError& e) {
+      std::cerr << "sim_regression: --scenes-dir " << scenes_dir << ": " << e.what() << "\n";
+      return 2;
+    } catch (const std::exception& e) {
+      std::cerr << "sim_regression: --scenes-dir " << scenes_dir
+                << ": expected a directory of scene JSON files (scenes/README.md): " << e.what() << "\n";
+      return 2;
+    }
+    if (scenes.empty()) {
+      std::cerr << "sim_regression: --scenes-dir " << scenes_dir << ": no *.json scene files (or pass --no-scenes)\n";
+      return 2;
+    }
+  }
   try {
     if (!vcd_dir.empty()) {
       const int rc = write_vcds<Vspecular_unit_minimax>(f, vcd_dir, specular::kCoefMinimaxHex);
@@ -273,14 +321,44 @@ int main(int argc, char** argv) {
     const auto det = deterministic_scanlines(f);
     const auto rnd = random_scanlines(f, seed, random_lines);
     std::cout << "deterministic scanlines: " << det.size() << "\n";
+    if (!scenes.empty()) std::cout << "scenes: " << scenes.size() << " from " << scenes_dir << ", images into " << images_dir << "\n";
     std::vector<PolicyStats> all;
+    std::vector<SceneStats> scene_stats;
+    // Images come from the first policy simulated (minimax unless --policy maclaurin).
     if (policy == "minimax" || policy == "both")
       all.push_back(run_policy<Vspecular_unit_minimax>(f, "minimax", specular::kCoefMinimaxHex, {0.0025, 0.02}, det,
-                                                       rnd, seed));
+                                                       rnd, seed, scenes, images_dir, scene_stats));
     if (policy == "maclaurin" || policy == "both")
       all.push_back(run_policy<Vspecular_unit_maclaurin>(f, "maclaurin", specular::kCoefMaclaurinHex,
-                                                         {0.012, 0.025}, det, rnd, seed));
+                                                         {0.012, 0.025}, det, rnd, seed, scenes,
+                                                         policy == "both" ? std::string() : images_dir, scene_stats));
     print_table(all);
+    if (!scene_stats.empty()) {
+      std::cout << "\nScenes (every span through the RTL; device error = RTL - C cos^n(psi_i) from the loaded registers,\n"
+                   "interpolation error = float model - per-pixel Phong; intensities, C < 2):\n";
+      print_scene_table(scene_stats);
+      for (const auto& s : scene_stats)
+        if (!s.images.empty()) {
+          std::cout << "images (" << s.policy << "): " << images_dir << "/<scene>_{phong,float,rtl,device_error,interp_error}.png\n";
+          break;
+        }
+    }
+    const double run_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_run).count();
+    double rtl_total = 0, golden_total = 0, ref_total = 0;
+    for (const auto& s : all) {
+      rtl_total += s.sim_seconds;
+      golden_total += s.golden_seconds;
+      ref_total += s.reference_seconds;
+    }
+    for (const auto& s : scene_stats) {
+      rtl_total += s.checks.sim_seconds;
+      golden_total += s.checks.golden_seconds;
+      ref_total += s.checks.reference_seconds;
+    }
+    std::printf("run time %.2f s: RTL %.2f s (%.0f %%), golden model %.2f s (%.0f %%), double reference %.2f s (%.0f %%), "
+                "rest (checks, scanline and scene setup, images) %.2f s\n",
+                run_seconds, rtl_total, 100 * rtl_total / run_seconds, golden_total, 100 * golden_total / run_seconds,
+                ref_total, 100 * ref_total / run_seconds, run_seconds - rtl_total - golden_total - ref_total);
     bool ok = true;
     for (const auto& s : all) {
       ok = ok && s.ok();
@@ -289,9 +367,28 @@ int main(int argc, char** argv) {
         std::cout << "FAIL " << s.policy << ": " << cnt << " epicenter pixels over budget at n = " << n << "\n";
       if (s.latency.size() > 1) std::cout << "FAIL " << s.policy << ": latency not constant\n";
     }
+    for (const auto& s : scene_stats) {
+      ok = ok && s.ok();
+      for (const auto& msg : s.checks.failures) std::cout << "FAIL " << msg << "\n";
+      if (s.checks.latency.size() > 1) std::cout << "FAIL " << s.checks.policy << ": latency not constant\n";
+    }
     if (!json_path.empty()) {
       nlohmann::json j = {{"seed", seed}, {"random_lines_per_policy", random_lines}, {"ok", ok}};
       for (const auto& s : all) j["policies"][s.policy] = s.to_json();
+      // scenes.<name>: the first policy's figures at the top level, every policy under by_policy.
+      for (const auto& s : scene_stats) {
+        nlohmann::json& sj = j["scenes"][s.name];
+        if (sj.is_null()) sj = s.to_json();
+        sj["by_policy"][s.policy] = s.to_json();
+      }
+      if (!scene_stats.empty()) {
+        j["scenes_dir"] = scenes_dir;
+        j["images_dir"] = images_dir;
+      }
+      j["run_seconds"] = run_seconds;
+      j["rtl_seconds"] = rtl_total;
+      j["golden_seconds"] = golden_total;
+      j["reference_seconds"] = ref_total;
       const std::string tmp = json_path + ".tmp";
       {
         std::ofstream out(tmp);
