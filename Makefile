@@ -33,7 +33,7 @@ test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
 
 sim: build
-	./$(BUILD)/bin/sim_regression
+	./$(BUILD)/bin/sim_regression --images-dir $(BUILD)/scenes
 
 roms: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target romgen

@@ -249,7 +249,8 @@ class Report:
             self.missing.append("sim_regression was not built: no simulation throughput")
             return {}
         path = os.path.join(self.out, "sim.json")
-        rc, secs = run([exe, "--random", str(self.args.random), "--json", path], os.path.join(self.logs, "sim.log"))
+        rc, secs = run([exe, "--random", str(self.args.random), "--json", path,
+                        "--images-dir", os.path.join(self.out, "scenes")], os.path.join(self.logs, "sim.log"))
         self.timings["sim_regression"] = secs
         if not os.path.exists(path):
             self.missing.append(f"sim_regression wrote no JSON (exit {rc}), see logs/sim.log")
@@ -631,6 +632,19 @@ class Report:
                 where = lambda e: f"{e.get('n', '?')}, {e.get('psi', float('nan')):.4f}" if e else "n/a"  # noqa: E731
                 w(f"| {name} | {fmt_err(rr.get('value'))} | {where(rr)} | {fmt_err(ra.get('value'), False)} | "
                   f"{where(ra)} | {sw_r} | {sw_a} | {fmt_err(b.get('rel_epicenter'))} / {fmt_err(b.get('abs_lobe'), False)} |")
+            scenes = sim.get("scenes", {})
+            if scenes:
+                w("\nScenes (`scenes/*.json`, every covered pixel through the RTL; device error = RTL - C cos^n(psi_i) "
+                  "from the loaded registers, interpolation-model error = spherical-interpolation float model - per-pixel "
+                  "Phong; images in `scenes/` beside this report):\n")
+                w("| scene | policy | spans | pixels | bit-exact mismatches | max abs device error | max rel. epicenter "
+                  "(+1 LSB) | max abs interpolation error | simulated pixels/s |")
+                w("|---|---|---|---|---|---|---|---|---|")
+                for sname, sc in sorted(scenes.items()):
+                    for pname, p in sc.get("by_policy", {}).items():
+                        w(f"| {sname} | {pname} | {p.get('spans', 'n/a')} | {p.get('pixels')} | {p.get('mismatches')} | "
+                          f"{fnum(p.get('max_device_error_abs')):.3g} | {fmt_err(p.get('max_device_rel_epicenter'))} | "
+                          f"{fnum(p.get('max_interp_error_abs')):.3g} | {fnum(p.get('simulated_pixels_per_second')):.3g} |")
             if not any("golden_seconds" in p for p in sim.get("policies", {}).values()):
                 w("\nThe regression's JSON reports the time inside the Verilator model (`sim_seconds`) and the total; the "
                   "golden model and the floating-point reference are not timed separately, so their shares are given "
