@@ -12,15 +12,17 @@
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 #include "Vspecular_unit_maclaurin.h"
+#include "Vspecular_unit_maclaurin_specular_unit.h"
 #include "Vspecular_unit_minimax.h"
+#include "Vspecular_unit_minimax_specular_unit.h"
 #pragma GCC diagnostic pop
+#include "cli_parse.hpp"
 #include "coefficients.hpp"
 #include "rom_image.hpp"
 #include "scanline_setup.hpp"
 #include "scanlines.hpp"
 #include "scene_stage.hpp"
 
-#include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <chrono>
@@ -36,27 +38,30 @@ namespace {
 using specular::device::Format;
 using namespace specular::sim;
 
-// The formats the RTL was verilated with (sim/CMakeLists.txt) must be Format{}.
-bool format_matches_build(const Format& f, std::string& why) {
-  const std::vector<int> banks SIM_FMT_BANKS;
-  const std::vector<int> bank_max SIM_FMT_BANK_MAX_N;
+// The RTL is verilated with its parameter defaults, which must be Format{}: the golden
+// model, the ROM generator and this harness all take their widths from Format. The
+// parameters are /*verilator public*/, so the check reads them from the verilated model.
+template <typename Root>
+bool format_matches_rtl(const Format& f, std::string& why) {
   struct Item { const char* name; int model, rtl; };
   const Item items[] = {
-      {"c_bits", f.c_bits, SIM_FMT_C_BITS},           {"c_frac", f.c_frac, SIM_FMT_C_FRAC},
-      {"angle_bits", f.angle_bits, SIM_FMT_ANGLE_BITS}, {"angle_frac", f.angle_frac, SIM_FMT_ANGLE_FRAC},
-      {"acc_bits", f.acc_bits, SIM_FMT_ACC_BITS},     {"n_bits", f.n_bits, SIM_FMT_N_BITS},
-      {"len_bits", f.len_bits, SIM_FMT_LEN_BITS},     {"coef_bits", f.coef_bits, SIM_FMT_COEF_BITS},
-      {"coef_frac", f.coef_frac, SIM_FMT_COEF_FRAC},  {"psi_mul_frac", f.psi_mul_frac, SIM_FMT_PSI_MUL_FRAC},
-      {"cos_addr_bits", f.cos_addr_bits, SIM_FMT_COS_ADDR_BITS},
-      {"cos_data_bits", f.cos_data_bits, SIM_FMT_COS_DATA_BITS}};
+      {"c_bits", f.c_bits, Root::CBits},              {"c_frac", f.c_frac, Root::CFrac},
+      {"angle_bits", f.angle_bits, Root::AngleBits},  {"angle_frac", f.angle_frac, Root::AngleFrac},
+      {"acc_bits", f.acc_bits, Root::AccBits},        {"n_bits", f.n_bits, Root::NBits},
+      {"len_bits", f.len_bits, Root::LenBits},        {"coef_bits", f.coef_bits, Root::CoefBits},
+      {"coef_frac", f.coef_frac, Root::CoefFrac},     {"psi_mul_frac", f.psi_mul_frac, Root::PsiMulFrac},
+      {"cos_addr_bits", f.cos_addr_bits, Root::CosAddrBits},
+      {"cos_data_bits", f.cos_data_bits, Root::CosDataBits},
+      {"banks", static_cast<int>(f.banks.size()), Root::NumBanks}};
   for (const auto& it : items)
     if (it.model != it.rtl) {
-      why = std::string(it.name) + ": Format has " + std::to_string(it.model) + ", RTL built with " +
-            std::to_string(it.rtl);
+      why = std::string(it.name) + ": Format has " + std::to_string(it.model) + ", the RTL " + std::to_string(it.rtl);
       return false;
     }
-  if (banks != f.banks || bank_max != f.bank_max_n) {
-    why = "bank set / decoder table differ between Format and the RTL build";
+  uint64_t packed = 0;
+  for (size_t j = 0; j < f.bank_max_n.size(); ++j) packed |= static_cast<uint64_t>(f.bank_max_n[j]) << (j * f.n_bits);
+  if (packed != static_cast<uint64_t>(Root::BankMaxN)) {
+    why = "decoder table (bank_max_n / BankMaxN) differs";
     return false;
   }
   return true;
@@ -274,18 +279,12 @@ int main(int argc, char** argv) {
   app.add_option("--images-dir", images_dir, "write the scene PNGs into DIR (created if missing)")
       ->capture_default_str();
   app.add_flag("--no-scenes", no_scenes, "skip the scene stage");
-  try {
-    app.parse(argc, argv);
-  } catch (const CLI::CallForHelp& e) {
-    return app.exit(e);
-  } catch (const CLI::ParseError& e) {
-    std::cerr << "sim_regression: " << e.what() << "\n";
-    return 2;
-  }
+  if (const auto exit_code = specular::parse_command_line(app, argc, argv, "sim_regression")) return *exit_code;
 
   std::string why;
-  if (!format_matches_build(f, why)) {
-    std::cerr << "sim_regression: the RTL was verilated with other formats than device::Format: " << why << "\n";
+  if (!format_matches_rtl<Vspecular_unit_minimax_specular_unit>(f, why) ||
+      !format_matches_rtl<Vspecular_unit_maclaurin_specular_unit>(f, why)) {
+    std::cerr << "sim_regression: the RTL parameter defaults differ from device::Format: " << why << "\n";
     return 1;
   }
   if (scenes_dir.empty() || images_dir.empty()) {
