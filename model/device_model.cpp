@@ -2,6 +2,7 @@
 // of device_model.hpp. Integer arithmetic only between the registers and the output.
 #include "device_model.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -57,6 +58,19 @@ int64_t quantize_angle(double rad, const Format& f, bool* saturated) {
 
 double c_value(uint32_t code, const Format& f) { return std::ldexp(static_cast<double>(code), -f.c_frac); }
 double angle_value(int64_t code, const Format& f) { return std::ldexp(static_cast<double>(code), -f.angle_frac); }
+RegisterLoad load_registers(const ScanlineSetup& s, double n, int l, const Format& f) {
+  RegisterLoad out;
+  bool psi0_sat = false, dpsi_sat = false;
+  out.reg.c = quantize_c(s.C, f, &out.c_saturated);
+  out.reg.psi0 = quantize_angle(s.psi0, f, &psi0_sat);
+  out.reg.dpsi = quantize_angle(s.dpsi, f, &dpsi_sat);
+  out.angle_saturated = psi0_sat || dpsi_sat;
+  const double n_max = std::ldexp(1.0, f.n_bits) - 1.0;
+  out.reg.n = std::isfinite(n) ? static_cast<uint32_t>(std::clamp(std::round(n), 0.0, n_max)) : 0u;
+  out.reg.len = static_cast<uint32_t>(std::clamp(l, 0, (1 << f.len_bits) - 1));
+  return out;
+}
+
 double coef_value(uint32_t code, const Format& f) {
   return std::ldexp(static_cast<double>(code), -f.coef_frac) * (std::numbers::pi / 2.0);
 }

@@ -21,6 +21,8 @@
 //   decoder 10           bank  from n (bank_max_n table); n = 0 or n > 1000 -> every pixel 0
 #pragma once
 
+#include "scanline_setup.hpp"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -66,6 +68,17 @@ double angle_value(int64_t code, const Format& f);
 // The coefficient a(n) (radians per radian) that ROM 9 word `code` = a * 2/pi * 2^coef_frac
 // stands for.
 double coef_value(uint32_t code, const Format& f);
+
+// The host's register writes for one scanline (SPEC section 4 -> section 6): C, psi0 and dpsi
+// quantized as above; n to the nearest integer code (0 and > 1000 stay invalid, so the
+// device outputs 0, as the setup's C = 0 does); l clamped to the counter. Every path that
+// loads the device (regression, scenes, report) goes through here.
+struct RegisterLoad {
+  Registers reg;
+  bool c_saturated = false;      // C outside [0, 2): clamped
+  bool angle_saturated = false;  // psi0 or dpsi outside the signed range: clamped
+};
+RegisterLoad load_registers(const ScanlineSetup& s, double n, int l, const Format& f);
 
 // Everything multiplier 11 .. multiplier 13 compute for one pixel, for debugging and
 // for the quantization analysis. Fields after the one that zeroed the pixel keep 0.

@@ -45,14 +45,10 @@ Evaluator float_model_evaluator() {
 }
 
 device::Registers span_registers(const Span& span, const device::Format& f, bool* c_saturated) {
-  const ScanlineSetup st = scanline_setup(span.setup_in);
-  device::Registers r;
-  r.c = device::quantize_c(st.C, f, c_saturated);
-  r.psi0 = device::quantize_angle(st.psi0, f);
-  r.dpsi = device::quantize_angle(st.dpsi, f);
-  r.n = static_cast<uint32_t>(std::clamp(std::lround(span.setup_in.n), 1L, static_cast<long>(f.max_n())));
-  r.len = static_cast<uint32_t>(span.length());
-  return r;
+  const device::RegisterLoad load =
+      device::load_registers(scanline_setup(span.setup_in), span.setup_in.n, span.length(), f);
+  if (c_saturated) *c_saturated = load.c_saturated;
+  return load.reg;
 }
 
 Evaluator golden_evaluator(const device::DeviceModel& dm) {

@@ -21,14 +21,9 @@ Scanline from_setup(const ScanlineInput& in, const device::Format& f, std::strin
   const ScanlineSetup s = scanline_setup(in);
   Scanline sl;
   sl.kind = std::move(kind);
-  bool sat_c = false, sat_a = false, sat_d = false;
-  sl.reg.c = device::quantize_c(s.C, f, &sat_c);
-  sl.reg.psi0 = device::quantize_angle(s.psi0, f, &sat_a);
-  sl.reg.dpsi = device::quantize_angle(s.dpsi, f, &sat_d);
-  // The setup rejects n outside [1, 1000] with C = 0; the register still gets the integer.
-  sl.reg.n = static_cast<uint32_t>(std::clamp(in.n, 0.0, 1023.0));
-  sl.reg.len = static_cast<uint32_t>(std::clamp(in.l, 0, (1 << f.len_bits) - 1));
-  sl.c_saturated = sat_c;
+  const device::RegisterLoad load = device::load_registers(s, in.n, in.l, f);
+  sl.reg = load.reg;
+  sl.c_saturated = load.c_saturated;
   return sl;
 }
 

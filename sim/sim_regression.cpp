@@ -76,8 +76,7 @@ specular::device::Registers vcd_line(const Format& f, int l) {
   in.n = 16;
   in.l = l;
   const auto s = specular::scanline_setup(in);
-  return {specular::device::quantize_c(s.C, f), specular::device::quantize_angle(s.dpsi, f),
-          specular::device::quantize_angle(s.psi0, f), 16u, static_cast<uint32_t>(l)};
+  return specular::device::load_registers(s, in.n, l, f).reg;
 }
 
 template <class V>

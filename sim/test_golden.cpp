@@ -226,3 +226,28 @@ TEST_CASE("committed ROMs load into the golden model", "[rom]") {
   CHECK(m.pixel(r, 0) == 16384u);  // cos^2(pi/4) / 2^... = 0.5 * C
   CHECK_NOTHROW(load_device_model(f, kCoefMinimaxHex, kCosHex));
 }
+
+TEST_CASE("load_registers: the host's register writes for one scanline", "[golden]") {
+  const device::Format f;
+  specular::ScanlineSetup s;
+  s.C = 0.75;
+  s.psi0 = -0.5;
+  s.dpsi = 0.001;
+  auto load = device::load_registers(s, 5.6, 3, f);
+  CHECK(load.reg.c == 24576u);                  // 0.75 * 2^15
+  CHECK(load.reg.psi0 == -134217728LL);         // -0.5 * 2^28
+  CHECK(load.reg.dpsi == 268435LL);             // round(0.001 * 2^28 = 268435.456)
+  CHECK(load.reg.n == 6u);                      // nearest integer exponent
+  CHECK(load.reg.len == 3u);
+  CHECK_FALSE(load.c_saturated);
+  CHECK_FALSE(load.angle_saturated);
+  CHECK(device::load_registers(s, 0.0, 0, f).reg.n == 0u);       // invalid n stays invalid
+  CHECK(device::load_registers(s, 1500.0, 0, f).reg.n == 1023u);  // and > 1000 too
+  CHECK(device::load_registers(s, 7.0, 5000, f).reg.len == 2047u);
+  s.C = 2.5;
+  s.psi0 = 9.0;
+  load = device::load_registers(s, 7.0, 1, f);
+  CHECK(load.c_saturated);
+  CHECK(load.reg.c == 65535u);
+  CHECK(load.angle_saturated);
+}

@@ -321,14 +321,10 @@ json section_hardcases() {
                         std::isfinite(s.C) && std::isfinite(s.psi0) && std::isfinite(s.dpsi);
     // The golden model on the resulting registers against C cos^n(psi_i) at the device's
     // quantized angles: what the device would output for this line.
-    device::Registers r;
-    bool c_sat = false, p_sat = false, d_sat = false;
-    r.c = device::quantize_c(s.C, f, &c_sat);
-    r.psi0 = device::quantize_angle(s.psi0, f, &p_sat);
-    r.dpsi = device::quantize_angle(s.dpsi, f, &d_sat);
     const int l = std::clamp(c.in.l, 0, kMaxLen);
-    r.n = static_cast<uint32_t>(std::clamp(c.in.n, 0.0, 1023.0));
-    r.len = static_cast<uint32_t>(l);
+    const device::RegisterLoad load = device::load_registers(s, c.in.n, l, f);
+    const device::Registers& r = load.reg;
+    const bool c_sat = load.c_saturated;
     const std::vector<uint32_t> px = dm.line(r);
     double peak = 0.0, max_err = 0.0;
     const double cq = device::c_value(r.c, f), p0 = device::angle_value(r.psi0, f), dp = device::angle_value(r.dpsi, f);
@@ -351,7 +347,7 @@ json section_hardcases() {
                    {"dpsi", num(s.dpsi)},
                    {"finite", finite},
                    {"c_saturated", c_sat},
-                   {"angle_saturated", p_sat || d_sat},
+                   {"angle_saturated", load.angle_saturated},
                    {"device_peak", peak},
                    {"device_max_abs_error", max_err},
                    {"note", s.note}});
