@@ -13,6 +13,7 @@ PACKAGES=(
   libfmt-dev
   libbenchmark-dev
   libstb-dev
+  libsleef-dev
   yosys
   nextpnr-ice40
   fpga-icestorm

@@ -10,11 +10,23 @@
 // coefficient a, the ROMs) is built once outside the loop, as per material in a renderer;
 // `lut256_build` times the table rebuild separately.
 //
+// Whole-span evaluators (model/span_shade.hpp, issue 9) shade the same line from its span
+// parameters, with nothing precomputed per pixel:
+//   pow_cos        scalar double std::pow(std::cos(psi0 + i dpsi), n)
+//   phong_scalar   per-pixel Phong in float: lerp N between the line's end normals (at the
+//                  angles psi_0 and psi_l from H), normalize, N.H, std::pow
+//   phong_sleef    the same, 8 pixels at a time with AVX2 and SLEEF's powf8 (scalar
+//                  fallback when the CPU lacks AVX2)
+//   device_simd    device_span: cos^k(a psi) in float, AVX2 when available (the fastest
+//                  device-method evaluator measured)
+//   device_simd_sse2  the same kernel forced to its x86-64 baseline build (SSE2 vectors)
+//
 // Benchmark names are "<evaluator>/<n>"; items_per_second counts pixels, so
 // ns per pixel = 1e9 / items_per_second. Run with --benchmark_format=json.
 #include "device_model.hpp"
 #include "evaluators.hpp"
 #include "rom_image.hpp"
+#include "span_shade.hpp"
 
 #include <benchmark/benchmark.h>
 
@@ -135,6 +147,43 @@ int main(int argc, char** argv) {
       }
       st.SetItemsProcessed(st.iterations() * static_cast<int64_t>(kPixels));
     });
+    // Whole-span evaluators: span parameters in, one value per pixel out.
+    const double p0 = s.psi.front(), dp = s.psi[1] - s.psi[0];
+    benchmark::RegisterBenchmark(bench_name("pow_cos", n).c_str(), [p0, dp, dn](benchmark::State& st) {
+      std::vector<double> out(kPixels);
+      for (auto _ : st) {
+        pow_cos_span(dn, p0, dp, kLen, 1.0, out.data());
+        benchmark::DoNotOptimize(out.data());
+        benchmark::ClobberMemory();
+      }
+      st.SetItemsProcessed(st.iterations() * static_cast<int64_t>(kPixels));
+    });
+    const Vec3f n0{float(std::sin(p0)), 0.0f, float(std::cos(p0))};
+    const Vec3f n1{float(std::sin(s.psi.back())), 0.0f, float(std::cos(s.psi.back()))};
+    const Vec3f h{0.0f, 0.0f, 1.0f};
+    for (const auto& [name, path] : {std::pair{"phong_scalar", SimdPath::scalar}, std::pair{"phong_sleef", SimdPath::automatic}}) {
+      benchmark::RegisterBenchmark(bench_name(name, n).c_str(), [=](benchmark::State& st) {
+        std::vector<float> out(kPixels);
+        for (auto _ : st) {
+          phong_span(n0, n1, h, float(dn), kLen, 1.0f, out.data(), path);
+          benchmark::DoNotOptimize(out.data());
+          benchmark::ClobberMemory();
+        }
+        st.SetItemsProcessed(st.iterations() * static_cast<int64_t>(kPixels));
+      });
+    }
+    const DeviceSpanPlan plan = device_span_plan(n);
+    for (const auto& [name, path] : {std::pair{"device_simd", SimdPath::automatic}, std::pair{"device_simd_sse2", SimdPath::scalar}}) {
+      benchmark::RegisterBenchmark(bench_name(name, n).c_str(), [=](benchmark::State& st) {
+        std::vector<float> out(kPixels);
+        for (auto _ : st) {
+          device_span(plan, p0, dp, kLen, 1.0f, out.data(), path);
+          benchmark::DoNotOptimize(out.data());
+          benchmark::ClobberMemory();
+        }
+        st.SetItemsProcessed(st.iterations() * static_cast<int64_t>(kPixels));
+      });
+    }
     benchmark::RegisterBenchmark(bench_name("lut256_build", n).c_str(), [dn](benchmark::State& st) {
       for (auto _ : st) {
         LutEval lut(dn);
