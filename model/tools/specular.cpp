@@ -6,6 +6,7 @@
 #include "coefficients.hpp"
 #include "metrics.hpp"
 #include "scanline_setup.hpp"
+#include "shade_command.hpp"
 
 #include <glm/vec3.hpp>
 
@@ -193,11 +194,18 @@ int main(int argc, char** argv) {
   su->add_option("--Q", s_q, "kutlog: level in (0, 1)");
   su->add_flag("--pixels", s_pixels, "also print the per-pixel table");
 
+  // --- shade (issue 9) ---
+  auto* sh = app.add_subcommand("shade",
+                                "One span through one evaluator: i,psi,value with value ~ C cos^n(psi_i), "
+                                "psi_i = psi0 + i dpsi (see model/tools/shade_command.hpp)");
+  shade_cli::Args sh_args;
+  shade_cli::add_options(sh, sh_args);
+
   // Name an unknown command instead of CLI11's generic "a subcommand is required".
   if (argc > 1 && argv[1][0] != '-') {
     const std::string c = argv[1];
-    if (c != "errors" && c != "krange" && c != "albedo" && c != "setup") {
-      std::cerr << "specular: error: '" << c << "' is not a command; allowed errors, krange, albedo, setup\n";
+    if (c != "errors" && c != "krange" && c != "albedo" && c != "setup" && c != "shade") {
+      std::cerr << "specular: error: '" << c << "' is not a command; allowed errors, krange, albedo, setup, shade\n";
       return 2;
     }
   }
@@ -342,6 +350,9 @@ int main(int argc, char** argv) {
                    num(phong_truth(in, i))});
         }
       }
+    } else if (*sh) {
+      cmd += " shade";
+      out.text = shade_cli::run(sh_args);
     }
   } catch (const UsageError& e) {
     std::cerr << cmd << ": error: " << e.what() << "\n";
