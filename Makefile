@@ -6,7 +6,7 @@ JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 PYTHON ?= /usr/bin/python3
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build test sim roms vcd report lint clean help
+.PHONY: all deps configure build test sim roms vcd report lint fuzz clean help
 
 all: build
 
@@ -17,6 +17,7 @@ help:
 	@echo "make vcd     write VCD timing diagrams to $(BUILD)/vcd and draw the 4-pixel one"
 	@echo "make report  measure and write $(BUILD)/report/report.md"
 	@echo "make lint    verilator -Wall lint and Yosys synthesis of rtl/"
+	@echo "make fuzz    libFuzzer (clang-14) on the scene, ROM hex and CLI parsers, FUZZ_SECONDS in all (60)"
 	@echo "make clean   remove $(BUILD)"
 
 # Installs missing Debian packages (no-op when all are present).
@@ -48,6 +49,12 @@ report: build
 
 lint: build
 	cd $(BUILD) && ctest --output-on-failure -R '^rtl_(lint|yosys)'
+
+# libFuzzer targets of tests/fuzz, built with clang++-14 in $(BUILD)/fuzz (a CMake
+# configure of its own: the main build uses g++). `make test` replays their corpora.
+FUZZ_SECONDS ?= 60
+fuzz: deps
+	bash scripts/fuzz.sh $(BUILD) $(FUZZ_SECONDS)
 
 clean:
 	rm -rf $(BUILD)

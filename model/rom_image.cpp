@@ -106,6 +106,11 @@ void write_hex(const std::string& path, const std::vector<uint32_t>& image, int 
 }
 
 std::vector<uint32_t> read_hex(const std::string& path, int bits, int depth) {
+  // Found by fuzzing (tests/fuzz/corpus/rom_hex/crash_bits35): a width above 32 let a
+  // 9-digit word pass the width test and be truncated into the uint32_t image.
+  if (bits < 1 || bits > 32 || depth < 0)
+    throw std::invalid_argument(path + ": word width " + std::to_string(bits) + " or depth " + std::to_string(depth) +
+                                " not supported (width 1..32 bits, depth >= 0)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open");
   const int digits = (bits + 3) / 4;

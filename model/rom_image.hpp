@@ -42,7 +42,8 @@ std::vector<uint32_t> cos_rom_image(const device::Format& f);
 // half-written ROM. Throws std::runtime_error on I/O errors or a word wider than `bits`.
 void write_hex(const std::string& path, const std::vector<uint32_t>& image, int bits);
 // Throws std::runtime_error naming the file and line on bad content (not hex, too many
-// digits, word wider than `bits`, empty line, or not exactly `depth` lines).
+// digits, word wider than `bits`, empty line, or not exactly `depth` lines), and
+// std::invalid_argument when `bits` is not in 1..32 or `depth` is negative.
 std::vector<uint32_t> read_hex(const std::string& path, int bits, int depth);
 
 // Golden model from ROM files (default format paths relative to the working directory).

@@ -429,6 +429,12 @@ Scene parse_scene(const std::string& text, const std::string& path) {
     // e.byte is 1-based: the position of the offending character.
     throw SceneError(path + ": invalid JSON at " + line_col(text, e.byte ? e.byte - 1 : 0) +
                      ": expected a valid JSON document (" + e.what() + ")");
+  } catch (const json::exception& e) {
+    // Found by fuzzing (tests/fuzz/corpus/scene/crash_number_overflow.json): a number
+    // beyond the double range ("1e1888888") is json::out_of_range, not parse_error, and
+    // escaped as an uncaught exception.
+    throw SceneError(path + ": invalid JSON: expected a valid JSON document with finite numbers (" +
+                     e.what() + ")");
   }
   Reader rd(path);
   if (!root.is_object()) rd.fail("(top level)", "an object", &root);

@@ -141,10 +141,14 @@ int main(int argc, char** argv) {
         "scene,width,height,triangles,spans,covered_pixels,shaded_pixels,max_l,spans_l0,spans_l1,"
         "max_abs_interp_error,rms_interp_error,peak_phong,image_scale,raster_ms,phong_ms,float_ms%s\n",
         dm ? ",max_abs_device_error,rms_device_error,c_saturated_spans,golden_ms" : "");
-  std::printf("%s,%d,%d,%zu,%zu,%zu,%zu,%d,%zu,%zu,%.6e,%.6e,%.6f,%.4g,%.2f,%.2f,%.2f", scene.name.c_str(), scene.width,
+  // Every real printed as the shortest text that parses back to the same double.
+  using specular::cli::num;
+  std::printf("%s,%d,%d,%zu,%zu,%zu,%zu,%d,%zu,%zu,%s,%s,%s,%s,%s,%s,%s", scene.name.c_str(), scene.width,
               scene.height, st.triangles, st.spans, st.covered_pixels, st.shaded_pixels, st.max_l, st.spans_l0,
-              st.spans_l1, es.max_abs, es.rms, peak, scale, raster_ms, phong_ms, float_ms);
-  if (dm) std::printf(",%.6e,%.6e,%zu,%.2f", ds.max_abs, ds.rms, saturated, golden_ms);
+              st.spans_l1, num(es.max_abs).c_str(), num(es.rms).c_str(), num(peak).c_str(), num(scale).c_str(),
+              num(raster_ms).c_str(), num(phong_ms).c_str(), num(float_ms).c_str());
+  if (dm)
+    std::printf(",%s,%s,%zu,%s", num(ds.max_abs).c_str(), num(ds.rms).c_str(), saturated, num(golden_ms).c_str());
   std::printf("\n");
   return 0;
 }

@@ -1,6 +1,6 @@
 // `specular`: command-line front end of the reference model. Its CSV output is a contract
-// (the report and outside scripts parse it): exact headers, numbers with 9 significant
-// digits, errors on stderr with exit code 2 and nothing on stdout.
+// (the report and outside scripts parse it): exact headers, every number the shortest
+// text that parses back to the same double (cli::num), errors on stderr with exit code 2 and nothing on stdout.
 #include "cli_parse.hpp"
 #include "brdf.hpp"
 #include "coefficients.hpp"
@@ -23,90 +23,14 @@ using namespace specular;
 
 namespace {
 
-// A bad command-line argument: reported as "specular <cmd>: <arg>: <what>", exit code 2.
-struct UsageError : std::runtime_error {
-  using std::runtime_error::runtime_error;
-};
-
-[[noreturn]] void bad(const std::string& arg, const std::string& what) { throw UsageError(arg + ": " + what); }
-
-std::string num(double v) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char buf[64];
-  std::snprintf(buf, sizeof buf, "%.9g", v);
-  return buf;
-}
-
-std::optional<double> to_double(const std::string& s) {
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(s, &used);
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-  if (used != s.size()) return std::nullopt;
-  return v;
-}
-
-double parse_real(const std::string& arg, const std::string& s, double lo, double hi, const std::string& range) {
-  const auto v = to_double(s);
-  if (!v || !std::isfinite(*v)) bad(arg, "'" + s + "' is not a number; allowed " + range);
-  if (*v < lo || *v > hi) bad(arg, "'" + s + "' is outside the allowed range " + range);
-  return *v;
-}
-
-int parse_int(const std::string& arg, const std::string& s, int lo, int hi) {
-  const std::string range = std::to_string(lo) + ".." + std::to_string(hi);
-  const auto v = to_double(s);
-  if (!v || !std::isfinite(*v) || *v != std::floor(*v)) bad(arg, "'" + s + "' is not an integer; allowed " + range);
-  if (*v < lo || *v > hi) bad(arg, "'" + s + "' is outside the allowed range " + range);
-  return static_cast<int>(*v);
-}
-
-std::vector<std::string> split(const std::string& s, char sep) {
-  std::vector<std::string> out;
-  std::string cur;
-  std::istringstream in(s);
-  while (std::getline(in, cur, sep)) out.push_back(cur);
-  if (!s.empty() && s.back() == sep) out.push_back("");
-  return out;
-}
-
-// "1..1000", "1,2,7", "1..5,10,20..22"; ranges are integer, single items may be real
-// when `reals` is set.
-std::vector<double> parse_list(const std::string& arg, const std::string& s, int lo, int hi, bool reals) {
-  const std::string range = std::to_string(lo) + ".." + std::to_string(hi);
-  if (s.empty()) bad(arg, "empty list; expected items like 7, 1..1000 or 1,2,7 in " + range);
-  std::vector<double> out;
-  for (const std::string& item : split(s, ',')) {
-    const auto dots = item.find("..");
-    if (dots != std::string::npos) {
-      const int a = parse_int(arg, item.substr(0, dots), lo, hi);
-      const int b = parse_int(arg, item.substr(dots + 2), lo, hi);
-      if (a > b) bad(arg, "range '" + item + "' is empty (first > last); allowed " + range);
-      for (int v = a; v <= b; ++v) out.push_back(v);
-    } else if (reals) {
-      out.push_back(parse_real(arg, item, lo, hi, range));
-    } else {
-      out.push_back(parse_int(arg, item, lo, hi));
-    }
-  }
-  return out;
-}
-
-glm::dvec3 parse_vec(const std::string& arg, const std::string& s) {
-  const auto parts = split(s, ',');
-  if (parts.size() != 3) bad(arg, "'" + s + "' is not a vector; expected X,Y,Z with finite numbers");
-  glm::dvec3 v;
-  for (int i = 0; i < 3; ++i) {
-    const auto d = to_double(parts[i]);
-    if (!d || !std::isfinite(*d)) bad(arg, "'" + s + "' has a non-finite component; expected X,Y,Z with finite numbers");
-    v[i] = *d;
-  }
-  return v;
-}
+// Argument parsers and the shortest round-trip number format: model/cli_parse.hpp.
+using cli::bad;
+using cli::num;
+using cli::parse_int;
+using cli::parse_list;
+using cli::parse_real;
+using cli::parse_vec;
+using cli::UsageError;
 
 CoefSpec coef_from(const std::string& coef, const std::string& q_text, bool q_given) {
   CoefSpec spec;

@@ -136,3 +136,14 @@ TEST_CASE("a missing scene file is named in the error", "[scene][json]") {
     CHECK_THAT(std::string(e.what()), Catch::Matchers::StartsWith("/nonexistent/dir/none.json: "));
   }
 }
+
+// Found by fuzzing (tests/fuzz): nlohmann reports a number beyond the double range as
+// out_of_range, which escaped parse_scene before the fix.
+TEST_CASE("a number beyond the double range is a SceneError, not another exception", "[scene][json]") {
+  for (const std::string text : {std::string("1e1888888e]"), std::string("{\"image\": {\"width\": 1e400}}")}) {
+    INFO(text);
+    const std::string msg = error_of(text);
+    CHECK(msg.rfind("scenes/bad.json: ", 0) == 0);
+    CHECK_THAT(msg, Catch::Matchers::Contains("invalid JSON"));
+  }
+}

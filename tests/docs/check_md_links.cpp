@@ -1,0 +1,205 @@
+// Checks that every relative link in every Markdown file of the repository resolves: the
+// target file or directory exists, and a #fragment names a heading of the target Markdown
+// file (GitHub's anchor rules: lower case, punctuation dropped, spaces to '-', "-1", "-2"
+// for repeats). Links with a scheme (https:, mailto:) are not checked; links inside code
+// spans and fenced code blocks are not links.
+//
+//   check_md_links ROOT          every .md that git tracks or would track (else every .md
+//                                outside build*/ and .git/); exit 1 and one line per
+//                                broken link, 0 when all resolve
+//   check_md_links --self-test   the checker on a generated tree with known good and
+//                                broken links; exit 0 only if it finds exactly the broken ones
+#include <algorithm>
+#include <cctype>
+#include <unistd.h>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iostream>
+#include <map>
+#include <regex>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+std::vector<std::string> read_lines(const fs::path& p) {
+  std::ifstream in(p);
+  std::vector<std::string> out;
+  std::string line;
+  while (std::getline(in, line)) out.push_back(line);
+  return out;
+}
+
+// Lines outside fenced code blocks, with inline code spans blanked.
+std::vector<std::string> prose_lines(const fs::path& p) {
+  std::vector<std::string> out;
+  bool fenced = false;
+  for (std::string line : read_lines(p)) {
+    const auto first = line.find_first_not_of(' ');
+    if (first != std::string::npos && (line.compare(first, 3, "```") == 0 || line.compare(first, 3, "~~~") == 0)) {
+      fenced = !fenced;
+      out.emplace_back();
+      continue;
+    }
+    if (fenced) {
+      out.emplace_back();
+      continue;
+    }
+    // Blank `code` spans (a run of backticks closes with the same run).
+    std::string clean;
+    for (size_t i = 0; i < line.size();) {
+      if (line[i] == '`') {
+        size_t run = 0;
+        while (i + run < line.size() && line[i + run] == '`') ++run;
+        const std::string ticks(run, '`');
+        const size_t close = line.find(ticks, i + run);
+        if (close == std::string::npos) {
+          clean += line.substr(i);
+          break;
+        }
+        clean += std::string(close + run - i, ' ');
+        i = close + run;
+      } else {
+        clean += line[i++];
+      }
+    }
+    out.push_back(clean);
+  }
+  return out;
+}
+
+std::string slug(const std::string& heading) {
+  std::string s;
+  for (unsigned char c : heading) {
+    if (std::isalnum(c) || c == '-' || c == '_') s += static_cast<char>(std::tolower(c));
+    else if (c == ' ') s += '-';
+    else if (c >= 0x80) s += static_cast<char>(c);  // non-ASCII letters are kept
+  }
+  return s;
+}
+
+std::set<std::string> anchors(const fs::path& md) {
+  std::set<std::string> out;
+  std::map<std::string, int> seen;
+  static const std::regex heading(R"(^ {0,3}#{1,6}[ \t]+(.*?)[ \t#]*$)");
+  for (const std::string& line : prose_lines(md)) {
+    std::smatch m;
+    if (!std::regex_match(line, m, heading)) continue;
+    // Link text of links inside a heading counts, the target does not.
+    const std::string text = std::regex_replace(m[1].str(), std::regex(R"(\[([^\]]*)\]\([^)]*\))"), "$1");
+    const std::string base = slug(text);
+    const int n = seen[base]++;
+    out.insert(n == 0 ? base : base + "-" + std::to_string(n));
+  }
+  return out;
+}
+
+// One message per broken link in `md`.
+std::vector<std::string> check_file(const fs::path& md, const fs::path& root) {
+  std::vector<std::string> bad;
+  static const std::regex link(R"(!?\[[^\]]*\]\(\s*<?([^)\s>]+)>?(?:\s+"[^"]*")?\s*\))");
+  static const std::regex scheme(R"(^[A-Za-z][A-Za-z0-9+.-]*:)");
+  const auto lines = prose_lines(md);
+  for (size_t ln = 0; ln < lines.size(); ++ln) {
+    for (std::sregex_iterator it(lines[ln].begin(), lines[ln].end(), link), end; it != end; ++it) {
+      const std::string target = (*it)[1].str();
+      if (std::regex_search(target, scheme)) continue;
+      const auto hash = target.find('#');
+      const std::string path = target.substr(0, hash);
+      const std::string frag = hash == std::string::npos ? "" : target.substr(hash + 1);
+      const fs::path resolved = path.empty() ? md : (path[0] == '/' ? root / path.substr(1) : md.parent_path() / path);
+      const std::string where = fs::relative(md, root).string() + ":" + std::to_string(ln + 1) + ": ";
+      if (!fs::exists(resolved)) {
+        bad.push_back(where + "'" + target + "': no such file " + fs::relative(resolved.lexically_normal(), root).string());
+        continue;
+      }
+      if (!frag.empty() && resolved.extension() == ".md" && !anchors(resolved).count(frag))
+        bad.push_back(where + "'" + target + "': no heading with anchor #" + frag);
+    }
+  }
+  return bad;
+}
+
+std::vector<fs::path> markdown_files(const fs::path& root) {
+  std::vector<fs::path> out;
+  if (fs::exists(root / ".git")) {
+    const std::string cmd = "git -C '" + root.string() + "' ls-files --cached --others --exclude-standard -- '*.md'";
+    if (FILE* p = popen(cmd.c_str(), "r")) {
+      char buf[4096];
+      std::string all;
+      while (size_t n = fread(buf, 1, sizeof buf, p)) all.append(buf, n);
+      if (pclose(p) == 0) {
+        std::istringstream in(all);
+        std::string line;
+        while (std::getline(in, line))
+          if (!line.empty() && fs::exists(root / line)) out.push_back(root / line);
+        return out;
+      }
+    }
+  }
+  for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator(); ++it) {
+    const std::string name = it->path().filename().string();
+    if (it->is_directory() && (name == ".git" || name.rfind("build", 0) == 0)) {
+      it.disable_recursion_pending();
+      continue;
+    }
+    if (it->is_regular_file() && it->path().extension() == ".md") out.push_back(it->path());
+  }
+  return out;
+}
+
+int check_tree(const fs::path& root, std::vector<std::string>* found) {
+  auto files = markdown_files(root);
+  std::sort(files.begin(), files.end());
+  int count = 0;
+  for (const auto& f : files) {
+    for (const auto& b : check_file(f, root)) {
+      if (found) found->push_back(b);
+      else std::cout << b << "\n";
+      ++count;
+    }
+  }
+  if (!found) std::cout << files.size() << " Markdown files, " << count << " broken links\n";
+  return count;
+}
+
+int self_test() {
+  const fs::path root = fs::temp_directory_path() / ("md_links_selftest_" + std::to_string(::getpid()));
+  fs::remove_all(root);
+  fs::create_directories(root / "docs");
+  std::ofstream(root / "code.txt") << "x\n";
+  std::ofstream(root / "README.md") << "# Top\n\n[ok](docs/a.md) [ok anchor](docs/a.md#second-part-x) [ok dir](docs)\n"
+                                       "[ok file](code.txt) [web](https://example.com/none) `[code](nofile.md)`\n"
+                                       "[BROKEN1](docs/missing.md)\n```\n[fenced](nofile2.md)\n```\n";
+  std::ofstream(root / "docs" / "a.md") << "# A\n## Second part: x\n## Repeat\n## Repeat\n"
+                                           "[ok up](../README.md#top) [ok self](#repeat-1) [BROKEN2](#repeat-2)\n"
+                                           "[BROKEN3](../README.md#nowhere) [BROKEN4](../code.txt.bak)\n";
+  std::vector<std::string> found;
+  check_tree(root, &found);
+  fs::remove_all(root);
+  int bad = 0;
+  const std::vector<std::string> expected{"docs/missing.md", "#repeat-2", "../README.md#nowhere", "../code.txt.bak"};
+  if (found.size() != expected.size()) ++bad;
+  for (const auto& e : expected)
+    if (std::none_of(found.begin(), found.end(), [&](const std::string& f) { return f.find("'" + e + "'") != std::string::npos; }))
+      ++bad;
+  for (const auto& f : found) std::cout << "found: " << f << "\n";
+  std::cout << (bad ? "self-test FAILED\n" : "self-test passed: exactly the 4 broken links found\n");
+  return bad ? 1 : 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc != 2) {
+    std::cerr << "usage: check_md_links ROOT | --self-test\n";
+    return 2;
+  }
+  if (std::string(argv[1]) == "--self-test") return self_test();
+  return check_tree(fs::path(argv[1]), nullptr) ? 1 : 0;
+}
