@@ -19,6 +19,7 @@
 #include "metrics.hpp"
 #include "rom_image.hpp"
 #include "scanline_setup.hpp"
+#include "span_shade.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -59,6 +60,14 @@ struct EvalDef {
   std::function<ShapeFn(int)> make;
 };
 
+// phong_span at one pixel whose normal makes angle x with H.
+double phong_at(double x, int n, SimdPath path) {
+  const Vec3f N{float(std::sin(x)), 0.0f, float(std::cos(x))}, H{0.0f, 0.0f, 1.0f};
+  float v;
+  phong_span(N, N, H, float(n), 0, 1.0f, &v, path);
+  return v;
+}
+
 std::vector<EvalDef> evaluator_defs() {
   auto cosine = [](auto eval) { return ShapeFn([eval](double x) { return eval(std::cos(x)); }); };
   return {
@@ -71,6 +80,14 @@ std::vector<EvalDef> evaluator_defs() {
       {"prototype", "angle", [](int n) { return ShapeFn(prototype_eval(n)); }},
       {"patent", "angle", [](int n) { return ShapeFn(patent_eval(n, CoefSpec{CoefPolicy::maclaurin})); }},
       {"patent_minimax", "angle", [](int n) { return ShapeFn(patent_eval(n, CoefSpec{CoefPolicy::minimax})); }},
+      // Whole-span evaluators of model/span_shade.hpp, one pixel at a time (issue 9).
+      {"pow_cos", "angle", [](int n) { return ShapeFn([n](double x) { double v; pow_cos_span(n, x, 0.0, 0, 1.0, &v); return v; }); }},
+      {"device_simd", "angle", [](int n) {
+         const DeviceSpanPlan p = device_span_plan(n);
+         return ShapeFn([p](double x) { float v; device_span(p, x, 0.0, 0, 1.0f, &v); return double(v); });
+       }},
+      {"phong_scalar", "normal", [](int n) { return ShapeFn([n](double x) { return phong_at(x, n, SimdPath::scalar); }); }},
+      {"phong_sleef", "normal", [](int n) { return ShapeFn([n](double x) { return phong_at(x, n, SimdPath::automatic); }); }},
   };
 }
 
