@@ -309,7 +309,7 @@ class Report:
                 ax.text(ax.get_xlim()[0], TOLERANCE * 1.15, " 0.25 %", color="grey", fontsize=8)
             ax.set_yscale("log")
             ax.set_xscale("log")
-            ax.set_xlabel("ns per pixel, log scale (mean over n = 5, 50, 500; Google Benchmark, this run)")
+            ax.set_xlabel("ns per pixel, log scale (mean of n = 5, 50, 500; this run)")
             ax.set_ylabel(f"worst over n = 2..1000: {title}")
             ax.set_title(title)
             ax.grid(True, which="both", alpha=0.3)
