@@ -156,4 +156,16 @@ std::vector<uint32_t> DeviceModel::line(const Registers& raw) const {
   return out;
 }
 
+void DeviceModel::stream_span(const Span& s, std::vector<StreamPixel>& out) const {
+  const Registers r = latch(s.reg);
+  for (uint32_t i = 0; i <= r.len; ++i)
+    out.push_back({trace(r, static_cast<int>(i)).intensity, i == r.len, s.tag});
+}
+
+std::vector<StreamPixel> DeviceModel::stream(const std::vector<Span>& spans) const {
+  std::vector<StreamPixel> out;
+  for (const Span& s : spans) stream_span(s, out);
+  return out;
+}
+
 }  // namespace specular::device

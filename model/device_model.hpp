@@ -95,6 +95,20 @@ struct PixelTrace {
   uint32_t intensity = 0;   // multiplier 13 output
 };
 
+// Stream view (rtl/specular_stream.sv): a span is one line's registers plus an opaque tag;
+// the core returns every pixel of every span in order, each with its span's tag and a
+// last flag on pixel l. The values are those of line() for the same registers.
+struct Span {
+  Registers reg;
+  uint32_t tag = 0;
+};
+struct StreamPixel {
+  uint32_t intensity = 0;
+  bool last = false;
+  uint32_t tag = 0;
+  bool operator==(const StreamPixel&) const = default;
+};
+
 // The datapath of the header comment, integer arithmetic only.
 class DeviceModel {
  public:
@@ -109,6 +123,9 @@ class DeviceModel {
   PixelTrace trace(const Registers& r, int i) const;
   // The l + 1 = len + 1 intensities of one line in pixel order.
   std::vector<uint32_t> line(const Registers& r) const;
+  // The pixels of one span (l + 1 of them), appended to `out`, and of a span sequence.
+  void stream_span(const Span& s, std::vector<StreamPixel>& out) const;
+  std::vector<StreamPixel> stream(const std::vector<Span>& spans) const;
 
   // Registers as the device latches them: each field cut to its register width
   // (unsigned fields masked, angles sign-extended from angle_bits).

@@ -24,9 +24,10 @@ module specular_angle_mul #(
 ) (
   input  logic                          clk_i,
   input  logic                          rst_ni,
+  input  logic                          en_i,      // pipeline advance (clock enable)
   input  logic signed [AccBits-1:0]     psi_i,     // register 8
   input  logic        [CoefBits-1:0]    coef_i,    // ROM 9
-  input  logic                          n_valid_i, // decoder 10
+  input  logic                          n_valid_i, // decoder 10, for the pixel in stage 1
   output logic        [CosAddrBits-1:0] addr_o,    // ROM 12 address within the bank
   output logic                          zero_o     // this pixel is 0
 );
@@ -61,8 +62,8 @@ module specular_angle_mul #(
   logic [PsiTBits-1:0] psi_t;
   assign psi_t = psi_abs[AngleFrac+2 -: PsiTBits];      // truncation of low fraction bits
 
-  // Stage 1 registers: |psi|_t, the far flag, and the coefficient (ROM 9 is static during
-  // a line; the copy here takes the block-RAM output delay off the multiplier path).
+  // Stage 1 registers: |psi|_t, the far flag, and the coefficient of this pixel's span
+  // (the copy also takes the block-RAM output delay of ROM 9 off the multiplier path).
   logic [PsiTBits-1:0] psi_t_q;
   logic                far_q;
   logic [CoefBits-1:0] coef_q;
@@ -72,7 +73,7 @@ module specular_angle_mul #(
       psi_t_q <= '0;
       far_q   <= 1'b0;
       coef_q  <= '0;
-    end else begin
+    end else if (en_i) begin
       psi_t_q <= psi_t;
       far_q   <= far;
       coef_q  <= coef_i;
@@ -97,13 +98,13 @@ module specular_angle_mul #(
   logic                   zero_d, zero_q;
 
   assign addr_d = addr_w[CosAddrBits-1:0];
-  assign zero_d = far_q | past_quarter | ~n_valid_i;   // n is static during a line
+  assign zero_d = far_q | past_quarter | ~n_valid_i;   // n_valid_i is aligned with stage 1
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       addr_q <= '0;
       zero_q <= 1'b0;
-    end else begin
+    end else if (en_i) begin
       addr_q <= addr_d;
       zero_q <= zero_d;
     end

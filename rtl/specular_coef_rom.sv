@@ -7,9 +7,10 @@
 // product of multiplier 11 come out in quarter turns. Words 0 and n > 1000 are 0.
 //
 // Contents: $readmemh(CoefRomFile): one hex word per line, no comments, no @ addresses,
-// word 0 first (format documented in roms/README.md). Synchronous read (registered
-// output, no reset) so synthesis maps it to block RAM; the address n only changes while
-// the device is idle, so the output has settled before the first pixel needs it.
+// word 0 first (format documented in roms/README.md). Synchronous read with read enable
+// (registered output, no reset) so synthesis maps it to block RAM. The stream reads it
+// with the span's n in the cycle the span is accepted, so the word sits beside register 4
+// while the span's pixels leave register 8.
 
 module specular_coef_rom #(
   parameter int NBits       = 10,
@@ -17,6 +18,7 @@ module specular_coef_rom #(
   parameter     CoefRomFile = "roms/coef_minimax.hex"
 ) (
   input  logic                clk_i,
+  input  logic                en_i,    // read enable: a span is accepted
   input  logic [NBits-1:0]    n_i,
   output logic [CoefBits-1:0] coef_o
 );
@@ -31,7 +33,9 @@ module specular_coef_rom #(
   end
 
   always_ff @(posedge clk_i) begin
-    coef_q <= mem[n_i];
+    if (en_i) begin
+      coef_q <= mem[n_i];
+    end
   end
 
   assign coef_o = coef_q;

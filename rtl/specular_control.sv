@@ -1,121 +1,85 @@
 // Copyright (c) the specular_device authors.
 //
-// Control unit, block 14 of patent UA 71489. The patent builds it from four D flip-flops,
-// a pulse generator and AND / inverter / NAND gates, and clocks the flip-flops with the
-// generator phases. Here everything is synchronous to clk_i, the generator fires on every
-// clock (one pixel per clock) and the four flip-flops survive as named state bits:
-//   start_q   start latch: set by an accepted start pulse (26), cleared when the last
-//             pixel has left the pipeline; it is the busy / "End" output (28)
-//   run_q     run: gates the pulse generator; set by the start, cleared by the
-//             counter's borrow (35); every clock with run_q high is one strobe, i.e.
-//             one write of register 8 (37)
-//   mux_sel_q mux select (36): 0 for the first strobe (register 8 loads psi0), then 1
-//   cnt_en_q  count enable: gates the count pulses (34) of counter 5. With one pixel per
-//             clock it rises and falls with run_q; it is kept as its own bit so that the
-//             patent's four flip-flops can be found in the RTL (synthesis merges it).
-// The data-valid strobe (29) is the register-8 strobe delayed by the datapath latency
-// PipeDepth (register 8 -> multiplier 11 (2 stages) -> ROM 12 -> multiplier 13 / output
-// register).
+// Control unit, block 14 of patent UA 71489, for the streaming pipeline. The patent builds
+// it from four D flip-flops, a pulse generator and AND / inverter / NAND gates clocked by
+// the generator phases, and runs one line at a time. Here everything is synchronous to
+// clk_i, a pipeline advance (adv) replaces the generator, and spans follow each other with
+// no gap. The patent's four flip-flops map to:
+//   start latch   the span handshake: a span is taken (accept) when span_valid_i and
+//                 span_ready_o are high; specular_unit keeps a real start latch in front
+//   run           vld_q[0]: register 8 holds a pixel (the strobe 37 wrote one)
+//   mux select 36 sel_o: 0 on the strobe that loads psi0 of an accepted span, else 1
+//   count enable  count_o: the count pulse 34 of counter 5, one per pixel leaving reg 8
+// The data-valid strobe 29 is vld_q delayed along the PipeDepth stages (register 8 ->
+// multiplier 11 (2 stages) -> ROM 12 -> multiplier 13 / output register); last_q marks
+// the pixel that took the borrow 35 of counter 5 (the last of its span).
 //
-// Timing with start_i high in cycle s while idle (l = value of counter 5):
-//   s+1 .. s+1+l           strobes (l + 1 of them); the last one carries the borrow
-//   s+1+PipeDepth ..       valid_o, l + 1 consecutive cycles
-//   s+1 .. s+1+PipeDepth+l busy_o; a new start is accepted from s+2+PipeDepth+l on.
-// Starts while busy are ignored; idle_o qualifies register writes the same way.
+// Handshake (AXI4-Stream rules on both sides):
+//   adv           = !px_valid_o || px_ready_i: every stage register moves when the output
+//                   register is empty or being taken, and holds otherwise
+//   span_ready_o  = adv && (register 8 empty || it holds its span's last pixel)
+// span_ready_o therefore depends combinationally on px_ready_i and on state, never on
+// span_valid_i. With px_ready_i high a new span's first pixel enters register 8 on the
+// edge at which the previous span's last pixel leaves it: one pixel per clock, l = 0
+// spans included.
 
 module specular_control #(
   parameter int PipeDepth = 5
 ) (
   input  logic clk_i,
   input  logic rst_ni,
-  input  logic start_i,        // start pulse 26
-  input  logic borrow_i,       // borrow 35 of counter 5
-  output logic idle_o,         // register writes allowed
+  input  logic span_valid_i,   // a span is offered
+  output logic span_ready_o,   // ... and would be taken at this edge
+  input  logic px_ready_i,     // the consumer takes the output pixel at this edge
+  input  logic cnt_zero_i,     // counter 5 holds 0: the pixel in register 8 is its span's last
+  output logic adv_o,          // every pipeline stage advances at this edge
+  output logic accept_o,       // span handshake: registers 1, 2, 4, counter 5 load
   output logic strobe_o,       // write 37 of register 8
-  output logic sel_o,          // mux select 36
-  output logic count_o,        // count pulse 34
-  output logic valid_o,        // data valid strobe 29
-  output logic valid_next_o,   // a pixel enters the output register at the next edge
-  output logic busy_o          // "End" 28
+  output logic sel_o,          // mux select 36: 0 = psi0 of the accepted span, 1 = psi + dpsi
+  output logic count_o,        // count pulse 34 of counter 5
+  output logic [PipeDepth-1:0] stage_valid_o,  // stage j holds a pixel (0: register 8)
+  output logic px_valid_o,     // data valid strobe 29
+  output logic px_last_o,      // the output pixel is the last of its span
+  output logic busy_o          // some pixel is in flight
 );
 
-  if (PipeDepth < 1) begin : gen_depth_check
-    $error("specular_control: PipeDepth must be >= 1");
+  if (PipeDepth < 2) begin : gen_depth_check
+    $error("specular_control: PipeDepth must be >= 2");
   end
 
-  logic start_d, start_q;
-  logic run_d, run_q;
-  logic mux_sel_d, mux_sel_q;
-  logic cnt_en_d, cnt_en_q;
-  logic accept, last_out;
+  logic [PipeDepth-1:0] vld_d, vld_q;
+  logic [PipeDepth-1:1] last_d, last_q;
+  logic free0, more0;
 
-  // Delay line from strobe to data valid; a parallel one marks the last pixel.
-  logic [PipeDepth-1:0] vld_d, vld_q, last_d, last_q;
+  assign more0        = vld_q[0] & ~cnt_zero_i;      // register 8 has more pixels to make
+  assign free0        = ~vld_q[0] | cnt_zero_i;      // register 8 is free after this edge
+  assign adv_o        = ~vld_q[PipeDepth-1] | px_ready_i;
+  assign span_ready_o = adv_o & free0;
+  assign accept_o     = span_valid_i & span_ready_o;
+  assign strobe_o     = adv_o & (accept_o | more0);
+  assign sel_o        = ~accept_o;
+  assign count_o      = adv_o & vld_q[0];
 
-  assign accept   = start_i & ~start_q;
-  assign strobe_o = run_q;
-  assign count_o  = run_q & cnt_en_q;
-  assign sel_o    = mux_sel_q;
-  assign last_out = vld_q[PipeDepth-1] & last_q[PipeDepth-1];
-
-  always_comb begin
-    start_d   = start_q;
-    run_d     = run_q;
-    mux_sel_d = mux_sel_q;
-    cnt_en_d  = cnt_en_q;
-    if (accept) begin
-      start_d   = 1'b1;
-      run_d     = 1'b1;
-      mux_sel_d = 1'b0;
-      cnt_en_d  = 1'b1;
-    end else begin
-      if (run_q) begin
-        mux_sel_d = 1'b1;          // after the first strobe: psi + dpsi
-      end
-      if (borrow_i) begin          // counter passed 0: the strobe just given was the last
-        run_d     = 1'b0;
-        cnt_en_d  = 1'b0;
-        mux_sel_d = 1'b0;
-      end
-      if (last_out) begin          // last pixel is on the output in this cycle
-        start_d = 1'b0;
-      end
-    end
-  end
-
-  if (PipeDepth > 1) begin : gen_shift
-    assign vld_d  = {vld_q[PipeDepth-2:0], strobe_o};
-    assign last_d = {last_q[PipeDepth-2:0], borrow_i};
-  end else begin : gen_single
-    assign vld_d  = strobe_o;
-    assign last_d = borrow_i;
+  assign vld_d  = {vld_q[PipeDepth-2:0], accept_o | more0};
+  if (PipeDepth > 2) begin : gen_last_shift
+    assign last_d = {last_q[PipeDepth-2:1], vld_q[0] & cnt_zero_i};
+  end else begin : gen_last_single
+    assign last_d = vld_q[0] & cnt_zero_i;
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      start_q   <= 1'b0;
-      run_q     <= 1'b0;
-      mux_sel_q <= 1'b0;
-      cnt_en_q  <= 1'b0;
-      vld_q     <= '0;
-      last_q    <= '0;
-    end else begin
-      start_q   <= start_d;
-      run_q     <= run_d;
-      mux_sel_q <= mux_sel_d;
-      cnt_en_q  <= cnt_en_d;
-      vld_q     <= vld_d;
-      last_q    <= last_d;
+      vld_q  <= '0;
+      last_q <= '0;
+    end else if (adv_o) begin
+      vld_q  <= vld_d;
+      last_q <= last_d;
     end
   end
 
-  assign idle_o  = ~start_q;
-  assign valid_o = vld_q[PipeDepth-1];
-  if (PipeDepth > 1) begin : gen_valid_next
-    assign valid_next_o = vld_q[PipeDepth-2];
-  end else begin : gen_valid_next_strobe
-    assign valid_next_o = strobe_o;
-  end
-  assign busy_o  = start_q;
+  assign stage_valid_o = vld_q;
+  assign px_valid_o    = vld_q[PipeDepth-1];
+  assign px_last_o     = last_q[PipeDepth-1];
+  assign busy_o        = |vld_q;
 
 endmodule

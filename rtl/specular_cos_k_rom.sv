@@ -11,8 +11,8 @@
 // even) and flags zeta >= pi/2 as zero, so no address outside a bank is ever needed.
 //
 // Contents: $readmemh(CosRomFile): one hex word per line, no comments, no @ addresses,
-// bank 0 first (format documented in roms/README.md). Synchronous read (registered
-// output, no reset) so synthesis maps it to block RAM.
+// bank 0 first (format documented in roms/README.md). Synchronous read with read enable
+// (registered output, no reset) so synthesis maps it to block RAM (RE of SB_RAM40_4K).
 
 module specular_cos_k_rom #(
   parameter int NumBanks    = 4,
@@ -21,6 +21,7 @@ module specular_cos_k_rom #(
   parameter     CosRomFile  = "roms/cos_k_1_2_4_16.hex"
 ) (
   input  logic                   clk_i,
+  input  logic                   en_i,     // read enable: holds the output while stalled
   input  logic [NumBanks-1:0]    bank_i,   // one-hot from decoder 10 (all zero: bank 0)
   input  logic [CosAddrBits-1:0] addr_i,   // |zeta| in units of pi/2 / 2^CosAddrBits
   output logic [CosDataBits-1:0] cosk_o    // cos^k, all fraction bits
@@ -60,7 +61,9 @@ module specular_cos_k_rom #(
   end
 
   always_ff @(posedge clk_i) begin
-    cosk_q <= mem[addr];
+    if (en_i) begin
+      cosk_q <= mem[addr];
+    end
   end
 
   assign cosk_o = cosk_q;

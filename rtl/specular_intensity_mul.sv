@@ -5,7 +5,8 @@
 // C from register 1 (unsigned, CBits bits), cosk from ROM 12 (all CosDataBits bits are
 // fraction, cosk < 1), so I has the format of C and cannot overflow. zero_i forces 0: a
 // pixel flagged zero (far angle, zeta >= pi/2, invalid n), or no pixel at all (the
-// output reads 0 whenever valid_o is low).
+// output reads 0 whenever no pixel is valid). en_i holds the register while the pixel
+// stream is stalled.
 
 module specular_intensity_mul #(
   parameter int CBits       = 16,
@@ -13,7 +14,8 @@ module specular_intensity_mul #(
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
-  input  logic [CBits-1:0]       c_i,       // register 1
+  input  logic                   en_i,      // pipeline advance (clock enable)
+  input  logic [CBits-1:0]       c_i,       // register 1 (this pixel's span)
   input  logic [CosDataBits-1:0] cosk_i,    // ROM 12
   input  logic                   zero_i,
   output logic [CBits-1:0]       intensity_o
@@ -35,7 +37,7 @@ module specular_intensity_mul #(
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       intensity_q <= '0;
-    end else begin
+    end else if (en_i) begin
       intensity_q <= intensity_d;
     end
   end

@@ -28,10 +28,13 @@
 // i.e. latency 6 clocks to the first pixel, one pixel per clock, a line occupies l + 7
 // clocks from start to the next accepted start. Writes and starts while busy are ignored.
 //
-// Pipeline (patent block numbers): control 14 strobes register 8 (accumulator 6/7/8)
-// once per clock -> multiplier 11 (|psi|; then zeta and the ROM address: 2 stages) -> ROM 12
-// (synchronous read) -> multiplier 13 (output register). ROM 9 is read from register 4
-// and settles while idle; decoder 10 is combinational on register 4.
+// Structure: the host registers 1-4 and the line length l (written while idle) and the
+// patent's start latch sit in front of specular_stream, the one datapath of the core
+// (control 14, counter 5, accumulator 6/7/8, ROM 9, decoder 10, multiplier 11, ROM 12,
+// multiplier 13: see rtl/specular_stream.sv). An accepted start latches for one cycle and
+// is then offered to the stream as one span, which takes it at once (the stream is empty
+// whenever this unit is idle); px_ready_i is tied high. The latch cycle plus the stream's
+// latency of 5 make the 6 clocks above.
 //
 // Patent errata resolved here (SPEC 5): n has 10 bits (the patent's decoder has 9 inputs);
 // register 3 holds the unscaled -lambda and register 2 gamma/l (multiplier 11 applies
@@ -91,45 +94,14 @@ module specular_unit #(
   output logic                 busy_o
 );
 
-  // Strobe of register 8 to the output register: register 8 itself, the two stages of
-  // multiplier 11, the ROM 12 read, multiplier 13 / output register.
-  localparam int PipeDepth = 5;
-
-  if (CFrac > CBits) begin : gen_c_check
-    $error("specular_unit: CFrac must not exceed CBits");
-  end
-  if (AccBits < AngleBits + LenBits + 1) begin : gen_acc_check
-    $error("specular_unit: AccBits too small for 2^LenBits additions of dpsi");
-  end
-
   // ---------------------------------------------------------------------------------
-  // Control unit 14
+  // Host registers 1-4 and the line length (inputs 15..24; writes only while idle)
   // ---------------------------------------------------------------------------------
-  logic idle, strobe, mux_sel, count, borrow, valid_next;
-
-  specular_control #(
-    .PipeDepth (PipeDepth)
-  ) u_control (
-    .clk_i        (clk_i),
-    .rst_ni       (rst_ni),
-    .start_i      (start_i),
-    .borrow_i     (borrow),
-    .idle_o       (idle),
-    .strobe_o     (strobe),
-    .sel_o        (mux_sel),
-    .count_o      (count),
-    .valid_o      (valid_o),
-    .valid_next_o (valid_next),
-    .busy_o       (busy_o)
-  );
-
-  // ---------------------------------------------------------------------------------
-  // Registers 1-4 and counter 5 (writes only while idle)
-  // ---------------------------------------------------------------------------------
+  logic                 idle;
   logic [CBits-1:0]     c_q;
   logic [AngleBits-1:0] dpsi_q, psi0_q;
   logic [NBits-1:0]     n_q;
-  logic [LenBits-1:0]   unused_count;
+  logic [LenBits-1:0]   len_q;
 
   specular_reg #(.Width (CBits)) u_reg1_c (
     .clk_i  (clk_i),
@@ -163,117 +135,88 @@ module specular_unit #(
     .q_o    (n_q)
   );
 
-  specular_down_counter #(.LenBits (LenBits)) u_counter5 (
-    .clk_i    (clk_i),
-    .rst_ni   (rst_ni),
-    .len_we_i (len_we_i & idle),
-    .len_i    (len_i),
-    .count_i  (count),
-    .borrow_o (borrow),
-    .count_o  (unused_count)
-  );
-
-  // ---------------------------------------------------------------------------------
-  // Accumulator: adder 6, mux 7, register 8
-  // ---------------------------------------------------------------------------------
-  logic signed [AccBits-1:0] psi;
-
-  specular_accumulator #(
-    .AngleBits (AngleBits),
-    .AccBits   (AccBits)
-  ) u_accumulator (
+  // Input 23 / write 24 of counter 5: the stream's counter loads it with the span.
+  specular_reg #(.Width (LenBits)) u_reg5_len (
     .clk_i  (clk_i),
     .rst_ni (rst_ni),
-    .we_i   (strobe),
-    .sel_i  (mux_sel),
-    .psi0_i (psi0_q),
-    .dpsi_i (dpsi_q),
-    .psi_o  (psi)
+    .we_i   (len_we_i & idle),
+    .d_i    (len_i),
+    .q_o    (len_q)
   );
 
   // ---------------------------------------------------------------------------------
-  // Decoder 10 and coefficient ROM 9
+  // Control unit 14, host side: the start latch (busy, "End" 28) is set by an accepted
+  // start pulse (26) and cleared when the line's last pixel is on the output; the offer
+  // bit presents the registers to the stream as one span until it is taken (at once:
+  // the stream is empty whenever this unit is idle).
   // ---------------------------------------------------------------------------------
-  logic [NumBanks-1:0] bank;
-  logic                n_valid;
-  logic [CoefBits-1:0] coef;
+  logic start_d, start_q, offer_d, offer_q;
+  logic span_ready, px_last;
+  logic [0:0] px_tag;
 
-  specular_decoder #(
-    .NBits    (NBits),
-    .NumBanks (NumBanks),
-    .BankMaxN (BankMaxN)
-  ) u_decoder10 (
-    .n_i       (n_q),
-    .bank_o    (bank),
-    .n_valid_o (n_valid)
-  );
-
-  specular_coef_rom #(
-    .NBits       (NBits),
-    .CoefBits    (CoefBits),
-    .CoefRomFile (CoefRomFile)
-  ) u_coef_rom9 (
-    .clk_i  (clk_i),
-    .n_i    (n_q),
-    .coef_o (coef)
-  );
-
-  // ---------------------------------------------------------------------------------
-  // Multiplier 11, ROM 12, multiplier 13
-  // ---------------------------------------------------------------------------------
-  logic [CosAddrBits-1:0] cos_addr;
-  logic                   zero_addr;
-  logic [CosDataBits-1:0] cosk;
-  logic                   zero_rom_q;
-
-  specular_angle_mul #(
-    .AccBits     (AccBits),
-    .AngleFrac   (AngleFrac),
-    .CoefBits    (CoefBits),
-    .CoefFrac    (CoefFrac),
-    .PsiMulFrac  (PsiMulFrac),
-    .CosAddrBits (CosAddrBits)
-  ) u_mul11 (
-    .clk_i     (clk_i),
-    .rst_ni    (rst_ni),
-    .psi_i     (psi),
-    .coef_i    (coef),
-    .n_valid_i (n_valid),
-    .addr_o    (cos_addr),
-    .zero_o    (zero_addr)
-  );
-
-  specular_cos_k_rom #(
-    .NumBanks    (NumBanks),
-    .CosAddrBits (CosAddrBits),
-    .CosDataBits (CosDataBits),
-    .CosRomFile  (CosRomFile)
-  ) u_cos_k_rom12 (
-    .clk_i  (clk_i),
-    .bank_i (bank),
-    .addr_i (cos_addr),
-    .cosk_o (cosk)
-  );
-
-  // The zero flag travels alongside the ROM 12 read.
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      zero_rom_q <= 1'b0;
-    end else begin
-      zero_rom_q <= zero_addr;
+  always_comb begin
+    start_d = start_q;
+    offer_d = offer_q & ~span_ready;
+    if (!start_q) begin
+      if (start_i) begin
+        start_d = 1'b1;
+        offer_d = 1'b1;
+      end
+    end else if (valid_o && px_last) begin
+      start_d = 1'b0;
     end
   end
 
-  specular_intensity_mul #(
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      start_q <= 1'b0;
+      offer_q <= 1'b0;
+    end else begin
+      start_q <= start_d;
+      offer_q <= offer_d;
+    end
+  end
+
+  assign busy_o = start_q;
+  assign idle   = ~start_q;
+
+  specular_stream #(
     .CBits       (CBits),
-    .CosDataBits (CosDataBits)
-  ) u_mul13 (
-    .clk_i       (clk_i),
-    .rst_ni      (rst_ni),
-    .c_i         (c_q),
-    .cosk_i      (cosk),
-    .zero_i      (zero_rom_q | ~valid_next),   // 0 on the output whenever valid_o is low
-    .intensity_o (intensity_o)
+    .CFrac       (CFrac),
+    .AngleBits   (AngleBits),
+    .AngleFrac   (AngleFrac),
+    .AccBits     (AccBits),
+    .NBits       (NBits),
+    .LenBits     (LenBits),
+    .CoefBits    (CoefBits),
+    .CoefFrac    (CoefFrac),
+    .PsiMulFrac  (PsiMulFrac),
+    .CosAddrBits (CosAddrBits),
+    .CosDataBits (CosDataBits),
+    .NumBanks    (NumBanks),
+    .BankMaxN    (BankMaxN),
+    .CoefRomFile (CoefRomFile),
+    .CosRomFile  (CosRomFile),
+    .TagBits     (1)
+  ) u_stream (
+    .clk_i          (clk_i),
+    .rst_ni         (rst_ni),
+    .span_valid_i   (offer_q),
+    .span_ready_o   (span_ready),
+    .span_c_i       (c_q),
+    .span_psi0_i    (psi0_q),
+    .span_dpsi_i    (dpsi_q),
+    .span_n_i       (n_q),
+    .span_len_i     (len_q),
+    .span_tag_i     (1'b0),
+    .px_valid_o     (valid_o),
+    .px_ready_i     (1'b1),
+    .px_intensity_o (intensity_o),
+    .px_last_o      (px_last),
+    .px_tag_o       (px_tag)
   );
+
+  logic unused_px;
+  assign unused_px = px_last ^ px_tag[0];
 
 endmodule

@@ -9,17 +9,19 @@
 # from there), fails on any error, on any inferred latch (checked right after `proc`, and
 # again on the mapped netlist) and on `check -assert` problems (undriven or multiply
 # driven nets, combinational loops), then prints the cell counts.
-# SYNTH_COEF_ROM / SYNTH_COS_ROM override the ROM files (paths relative to the root).
+# SYNTH_COEF_ROM / SYNTH_COS_ROM override the ROM files (paths relative to the root);
+# SYNTH_TOP picks the top module (default specular_unit; specular_stream for the stream).
 set -euo pipefail
 
 mode=${1:-}
+top=${SYNTH_TOP:-specular_unit}
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 out=${2:-$(mktemp -d)}
 
 case "$mode" in
-  generic) synth_cmd="synth -top specular_unit -flatten"
+  generic) synth_cmd="synth -top ${top} -flatten"
            latch_cells='t:$_DLATCH* t:$_SR_* t:$dlatch* t:$adlatch' ;;
-  ice40)   synth_cmd="synth_ice40 -top specular_unit"
+  ice40)   synth_cmd="synth_ice40 -top ${top}"
            latch_cells='t:$_DLATCH* t:$dlatch* t:$adlatch' ;;
   *) echo "usage: $0 generic|ice40 [OUT_DIR] (got mode '${mode}')" >&2; exit 2 ;;
 esac
@@ -34,18 +36,20 @@ fi
 
 chparam=""
 if [ -n "${SYNTH_COEF_ROM:-}" ]; then
-  chparam+="chparam -set CoefRomFile \"${SYNTH_COEF_ROM}\" specular_unit"$'\n'
+  chparam+="chparam -set CoefRomFile \"${SYNTH_COEF_ROM}\" ${top}"$'\n'
 fi
 if [ -n "${SYNTH_COS_ROM:-}" ]; then
-  chparam+="chparam -set CosRomFile \"${SYNTH_COS_ROM}\" specular_unit"$'\n'
+  chparam+="chparam -set CosRomFile \"${SYNTH_COS_ROM}\" ${top}"$'\n'
 fi
 
-script="$out/synth_${mode}.ys"
-log="$out/synth_${mode}.log"
-stat="$out/stat_${mode}.txt"
+suffix=""
+[ "$top" = specular_unit ] || suffix="_${top}"
+script="$out/synth_${mode}${suffix}.ys"
+log="$out/synth_${mode}${suffix}.log"
+stat="$out/stat_${mode}${suffix}.txt"
 cat > "$script" <<YS
 read_verilog -sv ${sources[*]}
-${chparam}hierarchy -check -top specular_unit
+${chparam}hierarchy -check -top ${top}
 proc
 select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr
 ${synth_cmd}
@@ -65,7 +69,7 @@ if grep -q "Latch inferred" "$log"; then
   exit 1
 fi
 
-echo "synth.sh ($mode): OK, no latches; netlist statistics ($stat):"
+echo "synth.sh ($mode, $top): OK, no latches; netlist statistics ($stat):"
 sed -n '/Number of cells/,$p' "$stat"
 if [ "$mode" = ice40 ]; then
   luts=$(awk '$1=="SB_LUT4"{s+=$2} END{print s+0}' "$stat")

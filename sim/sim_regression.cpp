@@ -6,15 +6,18 @@
 //   sim_regression --vcd-dir DIR --vcd-only DIR/line_l3.vcd (l = 3) and DIR/line_long.vcd
 //   sim_regression --scenes-dir DIR --images-dir DIR   every DIR/*.json through the RTL, PNGs
 //   sim_regression --no-scenes                         regression lines only
+//   sim_regression --stream-spans N                    random spans through specular_stream (0: skip)
 #include "checks.hpp"
 #include "harness.hpp"  // before the V*.h: wraps the Verilator headers in a warning guard
 
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-parameter"
+#pragma GCC diagnostic ignored "-Wpedantic"  // anonymous structs in Verilator's public-parameter headers
 #include "Vspecular_unit_maclaurin.h"
 #include "Vspecular_unit_maclaurin_specular_unit.h"
 #include "Vspecular_unit_minimax.h"
 #include "Vspecular_unit_minimax_specular_unit.h"
+#include "Vspecular_stream_minimax.h"
 #pragma GCC diagnostic pop
 #include "cli_parse.hpp"
 #include "coefficients.hpp"
@@ -22,6 +25,7 @@
 #include "scanline_setup.hpp"
 #include "scanlines.hpp"
 #include "scene_stage.hpp"
+#include "stream_stage.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -99,6 +103,40 @@ int write_vcds(const Format& f, const std::string& dir, const std::string& coef_
     }
     std::cout << "wrote " << path << " (l = " << l << ", latency " << run.latency << " cycles)\n";
   }
+  return 0;
+}
+
+// The stream: spans of l = 0, 1, 3, 0 back to back, then the same under px_ready_i
+// toggling every clock, so the waveform shows the handshake and a stall.
+int write_stream_vcd(const Format& f, const std::string& dir) {
+  std::filesystem::create_directories(dir);
+  StreamHarness<Vspecular_stream_minimax> h("specular_stream", specular::load_device_model(f, specular::kCoefMinimaxHex,
+                                                                                         specular::kCosHex), 16);
+  const std::string path = (std::filesystem::path(dir) / "stream.vcd").string();
+  h.open_vcd(path);
+  std::vector<specular::device::Span> spans;
+  uint32_t tag = 0xa0;
+  for (int pass = 0; pass < 2; ++pass)
+    for (int l : {0, 1, 3, 0}) {
+      specular::device::Span sp;
+      sp.reg = vcd_line(f, l);
+      sp.tag = tag++;
+      spans.push_back(sp);
+    }
+  size_t next = 0;
+  for (int c = 0; c < 2; ++c) h.cycle(nullptr, true);
+  for (int c = 0; c < 60 && (next < spans.size() || !h.empty()); ++c) {
+    const bool ready = next < 4 || (c & 1);
+    if (h.cycle(next < spans.size() ? &spans[next] : nullptr, ready)) ++next;
+  }
+  for (int c = 0; c < 3; ++c) h.cycle(nullptr, true);
+  h.close_vcd();
+  const auto& k = h.counters();
+  if (k.mismatches || k.protocol_errors || !h.empty()) {
+    std::cerr << "sim_regression: " << path << ": stream does not match the golden model\n";
+    return 1;
+  }
+  std::cout << "wrote " << path << " (" << spans.size() << " spans, " << k.pixels << " pixels)\n";
   return 0;
 }
 
@@ -262,6 +300,7 @@ int main(int argc, char** argv) {
   int random_lines = 100000;
   std::string policy = "both", vcd_dir, json_path, scenes_dir = "scenes", images_dir = "build/scenes";
   bool vcd_only = false, no_scenes = false;
+  uint64_t stream_spans = 1000000;
 
   CLI::App app{"Verilator regression of specular_unit against the golden model"};
   app.add_option("--seed", seed, "seed of the random scanlines")->capture_default_str();
@@ -278,6 +317,9 @@ int main(int argc, char** argv) {
   app.add_option("--images-dir", images_dir, "write the scene PNGs into DIR (created if missing)")
       ->capture_default_str();
   app.add_flag("--no-scenes", no_scenes, "skip the scene stage");
+  app.add_option("--stream-spans", stream_spans, "random spans through specular_stream (0: skip the stream stage)")
+      ->check(CLI::Range(uint64_t{0}, uint64_t{100000000}))
+      ->capture_default_str();
   if (const auto exit_code = specular::parse_command_line(app, argc, argv, "sim_regression")) return *exit_code;
 
   std::string why;
@@ -311,7 +353,8 @@ int main(int argc, char** argv) {
   }
   try {
     if (!vcd_dir.empty()) {
-      const int rc = write_vcds<Vspecular_unit_minimax>(f, vcd_dir, specular::kCoefMinimaxHex);
+      int rc = write_vcds<Vspecular_unit_minimax>(f, vcd_dir, specular::kCoefMinimaxHex);
+      if (rc == 0) rc = write_stream_vcd(f, vcd_dir);
       if (rc != 0 || vcd_only) return rc;
     }
 
@@ -340,6 +383,22 @@ int main(int argc, char** argv) {
           std::cout << "images (" << s.policy << "): " << images_dir << "/<scene>_{phong,float,rtl,device_error,interp_error}.png\n";
           break;
         }
+    }
+    // Stream stage: random spans, then every scene back to back (minimax ROM).
+    StreamStats stream;
+    std::vector<SceneStreamStats> scene_streams;
+    const bool run_stream = stream_spans > 0 || !scenes.empty();
+    if (run_stream) {
+      StreamHarness<Vspecular_stream_minimax> sh(
+          "specular_stream", specular::load_device_model(f, specular::kCoefMinimaxHex, specular::kCosHex), 16);
+      if (stream_spans > 0) stream = run_stream_stage(sh, seed, stream_spans);
+      for (const auto& ls : scenes) {
+        uint64_t reg_cycles = 0;
+        for (const auto& ss : scene_stats)
+          if (ss.name == ls.scene.name && reg_cycles == 0) reg_cycles = ss.checks.cycles;
+        scene_streams.push_back(run_scene_stream(sh, ls, reg_cycles));
+      }
+      print_stream_summary(stream, scene_streams);
     }
     const double run_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_run).count();
     double rtl_total = 0, golden_total = 0, ref_total = 0;
@@ -370,6 +429,14 @@ int main(int argc, char** argv) {
       for (const auto& msg : s.checks.failures) std::cout << "FAIL " << msg << "\n";
       if (s.checks.latency.size() > 1) std::cout << "FAIL " << s.checks.policy << ": latency not constant\n";
     }
+    if (stream_spans > 0) {
+      ok = ok && stream.ok();
+      if (!stream.ok()) std::cout << "FAIL stream stage: see the stream summary\n";
+    }
+    for (const auto& s : scene_streams) {
+      ok = ok && s.ok();
+      if (!s.ok()) std::cout << "FAIL stream scene " << s.name << "\n";
+    }
     if (!json_path.empty()) {
       nlohmann::json j = {{"seed", seed}, {"random_lines_per_policy", random_lines}, {"ok", ok}};
       for (const auto& s : all) j["policies"][s.policy] = s.to_json();
@@ -383,6 +450,8 @@ int main(int argc, char** argv) {
         j["scenes_dir"] = scenes_dir;
         j["images_dir"] = images_dir;
       }
+      if (stream_spans > 0) j["stream"] = stream.to_json();
+      for (const auto& s : scene_streams) j["scenes_stream"][s.name] = s.to_json();
       j["run_seconds"] = run_seconds;
       j["rtl_seconds"] = rtl_total;
       j["golden_seconds"] = golden_total;

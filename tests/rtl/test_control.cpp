@@ -1,18 +1,21 @@
-// Control unit 14, cycle by cycle, for l = 0..3 against the patent's timing (SPEC 5)
-// as fixed for the synchronous RTL: with start_i high in cycle s while idle,
-//   strobes (register 8 write 37) and count pulses (34) in s+1 .. s+1+l,
-//   mux select (36) 0 on the first strobe and 1 on the others,
-//   data valid (29) in s+6 .. s+6+l (PipeDepth = 5 behind the strobe: register 8, two
-//   stages of multiplier 11, ROM 12, multiplier 13 / output register),
-//   busy (28) in s+1 .. s+6+l, a new start accepted from s+7+l on,
-// the borrow coming from a counter modelled here: loaded with l, decremented by every
-// count pulse, borrow on the pulse that passes zero. Starts while busy are ignored.
+// Control unit 14 of the streaming pipeline, cycle by cycle. Counter 5 is modelled here
+// (loaded with l on accept, decremented by every count pulse 34), so the unit is checked
+// against the stream contract of SPEC 6a, independently of its implementation:
+//   * with px_ready_i high and spans always offered, a span accepted in cycle t has
+//     pixel i valid in cycle t + 5 + i; the next span is accepted in cycle t + l + 1
+//     (one pixel per clock, l = 0 included);
+//   * mux select 36 is 0 exactly on accepting strobes, a strobe (37) and a count pulse
+//     (34) per pixel leaving register 8;
+//   * under any px_ready_i pattern: px_valid_o holds until taken, exactly l + 1 pixels
+//     per span with px_last_o on the last, in order, and span_ready_o = adv && register 8
+//     free, never depending on span_valid_i.
 #include "Vcontrol.h"
 #include "rtl_harness.hpp"
 
 #include <catch2/catch.hpp>
 
-#include <set>
+#include <deque>
+#include <random>
 #include <string>
 #include <vector>
 
@@ -21,109 +24,131 @@ using specular::rtl_test::tick;
 
 namespace {
 
-constexpr int kValidFrom = 6;  // first valid cycle after the start cycle
+constexpr int kLatency = 5;  // accept cycle -> first pixel on the output
 
-struct Signals {
-  bool strobe, sel, count, valid, valid_next, busy, idle, borrow;
-  bool operator==(const Signals&) const = default;
-};
-
-std::string show(const Signals& s) {
-  return "strobe " + std::to_string(s.strobe) + " sel " + std::to_string(s.sel) + " count " +
-         std::to_string(s.count) + " valid " + std::to_string(s.valid) + " valid_next " +
-         std::to_string(s.valid_next) + " busy " +
-         std::to_string(s.busy) + " idle " + std::to_string(s.idle) + " borrow " +
-         std::to_string(s.borrow);
-}
-
-// Expected outputs in `cycle`, given the cycles in which a start was accepted.
-Signals expected(int cycle, const std::vector<int>& accepted, int l) {
-  Signals e{false, false, false, false, false, false, false, false};
-  for (int s : accepted) {
-    const int d = cycle - s;
-    if (d >= 1 && d <= 1 + l) e.strobe = e.count = true;
-    if (d >= 2 && d <= 1 + l) e.sel = true;
-    if (d == 1 + l) e.borrow = true;
-    if (d >= kValidFrom && d <= kValidFrom + l) e.valid = true;
-    if (d >= kValidFrom - 1 && d <= kValidFrom - 1 + l) e.valid_next = true;
-    if (d >= 1 && d <= kValidFrom + l) e.busy = true;
-  }
-  e.idle = !e.busy;
-  return e;
-}
-
-// Drives start_i in the cycles of `starts`, simulates `cycles` cycles and compares every
-// output in every cycle with the timing rules. `accepted` lists the starts that must
-// take effect (the others fall into busy periods).
-void run(int l, const std::vector<int>& starts, const std::vector<int>& accepted, int cycles) {
+struct Bench {
   Vcontrol dut;
-  reset(dut);
-  const std::set<int> start_set(starts.begin(), starts.end());
-  int counter = l;  // counter 5, reloaded with l after every borrow
-  int valid_cycles = 0, full_lines_valid = 0;
-  for (int c = 0; c < cycles; ++c) {
-    dut.start_i = start_set.count(c) ? 1 : 0;
-    dut.borrow_i = 0;
-    dut.eval();
-    const bool borrow = dut.count_o && counter == 0;
-    dut.borrow_i = borrow;
-    dut.eval();
-    const Signals got{static_cast<bool>(dut.strobe_o), static_cast<bool>(dut.sel_o),
-                      static_cast<bool>(dut.count_o), static_cast<bool>(dut.valid_o),
-                      static_cast<bool>(dut.valid_next_o),
-                      static_cast<bool>(dut.busy_o), static_cast<bool>(dut.idle_o), borrow};
-    const Signals want = expected(c, accepted, l);
-    INFO("l = " << l << ", cycle " << c << "\n  got  " << show(got) << "\n  want "
-                << show(want));
-    REQUIRE(got == want);
-    valid_cycles += got.valid;
-    if (dut.count_o) counter = borrow ? l : counter - 1;
-    tick(dut);
+  int counter = 0;
+  Bench() {
+    dut.span_valid_i = 0;
+    dut.px_ready_i = 0;
+    dut.cnt_zero_i = 1;
+    reset(dut);
   }
-  // Every line that ended inside the window delivered exactly l + 1 valid cycles.
-  for (int s : accepted)
-    if (s + kValidFrom + l < cycles) full_lines_valid += l + 1;
-    else if (s + kValidFrom < cycles) full_lines_valid += cycles - (s + kValidFrom);
-  CHECK(valid_cycles == full_lines_valid);
-}
+  // Drives one cycle; returns {accepted, transferred, last of the transferred pixel}.
+  struct Result {
+    bool accepted, fired, last, valid;
+  };
+  Result cycle(bool offer, int len, bool ready) {
+    dut.span_valid_i = offer;
+    dut.px_ready_i = ready;
+    dut.cnt_zero_i = counter == 0;
+    dut.eval();
+    // span_ready_o must not depend on span_valid_i.
+    const bool ready_with = dut.span_ready_o;
+    dut.span_valid_i = !offer;
+    dut.eval();
+    CHECK(static_cast<bool>(dut.span_ready_o) == ready_with);
+    dut.span_valid_i = offer;
+    dut.eval();
+    const bool adv = !dut.px_valid_o || ready;
+    CHECK(static_cast<bool>(dut.adv_o) == adv);
+    const bool reg8_free = !(dut.stage_valid_o & 1) || counter == 0;
+    CHECK(static_cast<bool>(dut.span_ready_o) == (adv && reg8_free));
+    const Result r{offer && dut.span_ready_o, dut.px_valid_o && ready, static_cast<bool>(dut.px_last_o),
+                   static_cast<bool>(dut.px_valid_o)};
+    CHECK(static_cast<bool>(dut.accept_o) == r.accepted);
+    if (r.accepted) CHECK(dut.sel_o == 0);
+    if (dut.strobe_o && !r.accepted) CHECK(dut.sel_o == 1);
+    CHECK(static_cast<bool>(dut.count_o) == (adv && (dut.stage_valid_o & 1)));
+    if (r.accepted) counter = len;
+    else if (dut.count_o && counter > 0) --counter;
+    tick(dut);
+    return r;
+  }
+};
 
 }  // namespace
 
-TEST_CASE("control unit: one line, l = 0..3", "[rtl][control]") {
+TEST_CASE("control unit: back-to-back spans, ready high, one pixel per clock", "[rtl][control]") {
   const int l = GENERATE(0, 1, 2, 3);
-  run(l, {2}, {2}, 20);
+  Bench b;
+  std::vector<int> accept_cycles, valid_cycles, last_cycles;
+  for (int c = 0; c < 40; ++c) {
+    const auto r = b.cycle(true, l, true);
+    if (r.accepted) accept_cycles.push_back(c);
+    if (r.fired) valid_cycles.push_back(c);
+    if (r.fired && r.last) last_cycles.push_back(c);
+  }
+  REQUIRE(accept_cycles.size() >= 3);
+  for (size_t j = 0; j < accept_cycles.size(); ++j) CHECK(accept_cycles[j] == static_cast<int>(j) * (l + 1));
+  // From the first pixel on, a pixel every cycle.
+  REQUIRE(!valid_cycles.empty());
+  CHECK(valid_cycles.front() == kLatency);
+  for (size_t j = 0; j < valid_cycles.size(); ++j) CHECK(valid_cycles[j] == kLatency + static_cast<int>(j));
+  for (size_t j = 0; j < last_cycles.size(); ++j) CHECK(last_cycles[j] == kLatency + static_cast<int>(j + 1) * (l + 1) - 1);
 }
 
-TEST_CASE("control unit: starts while busy are ignored", "[rtl][control]") {
-  const int l = GENERATE(0, 1, 2, 3);
-  // Start in cycle 1; extra pulses in every busy cycle (1 .. 6+l after it) are ignored;
-  // the start in cycle 1+7+l (first idle cycle) is accepted back to back.
-  const int next = 1 + kValidFrom + 1 + l;
-  std::vector<int> starts;
-  for (int c = 1; c <= next; ++c) starts.push_back(c);
-  run(l, starts, {1, next}, 30);
+TEST_CASE("control unit: random offers and px_ready_i, count / last / order", "[rtl][control]") {
+  const uint64_t seed = GENERATE(1, 2, 3, 4);
+  std::mt19937_64 rng(seed);
+  Bench b;
+  std::deque<bool> owed;  // last flags of the pixels owed, in order
+  bool prev_stalled = false, prev_last = false;
+  int spans = 0, pixels = 0, len = static_cast<int>(rng() % 4);
+  bool offering = false;
+  const double p_ready = 0.2 + 0.2 * static_cast<double>(seed);
+  std::bernoulli_distribution ready_d(std::min(p_ready, 1.0)), offer_d(0.6);
+  for (int c = 0; c < 3000; ++c) {
+    if (!offering) offering = offer_d(rng);
+    const bool ready = ready_d(rng);
+    b.dut.eval();
+    if (prev_stalled) {
+      CHECK(b.dut.px_valid_o == 1);
+      CHECK(static_cast<bool>(b.dut.px_last_o) == prev_last);
+    }
+    const auto r = b.cycle(offering, len, ready);
+    if (r.fired) {
+      REQUIRE(!owed.empty());
+      CHECK(r.last == owed.front());
+      owed.pop_front();
+      ++pixels;
+    }
+    if (r.accepted) {
+      for (int i = 0; i <= len; ++i) owed.push_back(i == len);
+      ++spans;
+      offering = false;
+      len = (rng() % 8 == 0) ? static_cast<int>(rng() % 40) : static_cast<int>(rng() % 4);
+    }
+    prev_stalled = r.valid && !ready;
+    prev_last = r.last;
+  }
+  // Drain.
+  for (int c = 0; c < 200 && !owed.empty(); ++c) {
+    const auto r = b.cycle(false, 0, true);
+    if (r.fired) {
+      CHECK(r.last == owed.front());
+      owed.pop_front();
+      ++pixels;
+    }
+  }
+  CHECK(owed.empty());
+  CHECK(spans > 100);
+  b.dut.eval();
+  CHECK(b.dut.busy_o == 0);
+  CHECK(b.dut.px_valid_o == 0);
 }
 
-TEST_CASE("control unit: a held start_i restarts as soon as the line ends", "[rtl][control]") {
-  const int l = GENERATE(0, 3);
-  std::vector<int> starts;
-  for (int c = 0; c < 40; ++c) starts.push_back(c);
-  std::vector<int> accepted;
-  for (int s = 0; s < 40; s += kValidFrom + 1 + l) accepted.push_back(s);
-  run(l, starts, accepted, 40);
-}
-
-TEST_CASE("control unit: reset leaves it idle", "[rtl][control]") {
-  Vcontrol dut;
-  reset(dut);
-  dut.start_i = 0;
-  dut.borrow_i = 0;
-  for (int c = 0; c < 5; ++c) {
-    dut.eval();
-    CHECK(dut.busy_o == 0);
-    CHECK(dut.idle_o == 1);
-    CHECK(dut.strobe_o == 0);
-    CHECK(dut.valid_o == 0);
-    tick(dut);
+TEST_CASE("control unit: reset drops everything in flight", "[rtl][control]") {
+  Bench b;
+  for (int c = 0; c < 3; ++c) b.cycle(true, 3, false);
+  b.dut.eval();
+  CHECK(b.dut.busy_o == 1);
+  reset(b.dut);
+  b.counter = 0;
+  for (int c = 0; c < 8; ++c) {
+    const auto r = b.cycle(false, 0, true);
+    CHECK_FALSE(r.fired);
+    CHECK(b.dut.busy_o == 0);
   }
 }

@@ -54,6 +54,7 @@ void check_angle(Vangle_mul& dut, int64_t psi_raw, uint32_t coef, bool n_valid) 
 
 TEST_CASE("multiplier 11: boundaries of the zero conditions", "[rtl][mul11]") {
   Vangle_mul dut;
+  dut.en_i = 1;
   reset(dut);
   const uint32_t unit = 1u << 15;  // a * 2/pi = 1: zeta (quarter turns) = |psi| in rad
   const int64_t eight_rad = int64_t{8} << 28;
@@ -76,6 +77,7 @@ TEST_CASE("multiplier 11: boundaries of the zero conditions", "[rtl][mul11]") {
 
 TEST_CASE("multiplier 11: random angles and coefficients", "[rtl][mul11]") {
   Vangle_mul dut;
+  dut.en_i = 1;
   reset(dut);
   std::mt19937_64 rng(71489);
   std::uniform_int_distribution<int64_t> psi_any(-(int64_t{9} << 28), int64_t{9} << 28);
@@ -111,6 +113,7 @@ void check_intensity(Vintensity_mul& dut, uint32_t c, uint32_t cosk, bool zero) 
 
 TEST_CASE("multiplier 13: rounding and extremes", "[rtl][mul13]") {
   Vintensity_mul dut;
+  dut.en_i = 1;
   reset(dut);
   check_intensity(dut, 0xffff, 0xffff, false);  // largest product: 0xfffe, no overflow
   check_intensity(dut, 0x8000, 0xffff, false);  // C = 1, cos^k(0) saturated: 0x8000
@@ -123,8 +126,51 @@ TEST_CASE("multiplier 13: rounding and extremes", "[rtl][mul13]") {
 
 TEST_CASE("multiplier 13: random operands", "[rtl][mul13]") {
   Vintensity_mul dut;
+  dut.en_i = 1;
   reset(dut);
   std::mt19937 rng(29);
   std::uniform_int_distribution<uint32_t> w16(0, 0xffff);
   for (int i = 0; i < 20000; ++i) check_intensity(dut, w16(rng), w16(rng), (i % 50) == 0);
+}
+
+TEST_CASE("multiplier 13 and ROM 12 hold their outputs while en_i is low (stall)", "[rtl][mul13][stall]") {
+  Vintensity_mul mul;
+  mul.en_i = 1;
+  reset(mul);
+  check_intensity(mul, 0x8000, 0x4000, false);  // 0x2000
+  mul.en_i = 0;
+  mul.c_i = 0xffff;
+  mul.cosk_i = 0xffff;
+  for (int i = 0; i < 3; ++i) {
+    tick(mul);
+    CHECK(mul.intensity_o == 0x2000);
+  }
+  mul.en_i = 1;
+  tick(mul);
+  CHECK(mul.intensity_o == 0xfffe);
+}
+
+TEST_CASE("multiplier 11 holds its stages while en_i is low (stall)", "[rtl][mul11][stall]") {
+  Vangle_mul dut;
+  dut.en_i = 1;
+  reset(dut);
+  dut.n_valid_i = 1;
+  dut.coef_i = 1u << 15;           // a * 2/pi = 1: zeta = |psi| in quarter turns
+  dut.psi_i = int64_t{1} << 27;    // 0.5 rad
+  tick(dut);
+  tick(dut);
+  const auto addr = dut.addr_o;
+  const auto zero = dut.zero_o;
+  CHECK(addr == (1u << 11));       // 0.5 quarter turns * 4096
+  dut.en_i = 0;
+  dut.psi_i = int64_t{3} << 26;    // 0.75 rad: must not reach the output while stalled
+  for (int i = 0; i < 3; ++i) {
+    tick(dut);
+    CHECK(dut.addr_o == addr);
+    CHECK(dut.zero_o == zero);
+  }
+  dut.en_i = 1;
+  tick(dut);
+  tick(dut);
+  CHECK(dut.addr_o == 3u << 10);
 }

@@ -44,6 +44,7 @@ TEST_CASE("ROM 9 (minimax) matches the generator at all 1024 addresses", "[rtl][
   specular::CoefSpec spec;
   spec.policy = specular::CoefPolicy::minimax;
   Vcoef_rom_minimax dut;
+  dut.en_i = 1;
   check_coef_rom(dut, specular::coef_rom_image(f, spec));
 }
 
@@ -60,6 +61,7 @@ TEST_CASE("ROM 9 (maclaurin) matches the generator at all 1024 addresses", "[rtl
     CHECK(static_cast<double>(image[n]) == Approx(std::round(word)).margin(0.0));
   }
   Vcoef_rom_maclaurin dut;
+  dut.en_i = 1;
   check_coef_rom(dut, image);
 }
 
@@ -68,6 +70,7 @@ TEST_CASE("ROM 12 matches the generator in every bank and entry", "[rtl][rom]") 
   const auto image = specular::cos_rom_image(f);
   REQUIRE(image.size() == 4u * 4096u);
   Vcos_k_rom dut;
+  dut.en_i = 1;
   int mismatches = 0;
   for (unsigned bank = 0; bank < 4; ++bank) {
     for (unsigned i = 0; i < 4096; ++i) {

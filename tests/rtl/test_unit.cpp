@@ -2,8 +2,11 @@
 // (latency 6, one pixel per clock, busy through the last pixel, l + 7 clocks per line),
 // zero conditions, writes and starts while busy, asynchronous reset, and the RTL
 // parameter defaults against specular::device::Format.
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wpedantic"  // anonymous structs in Verilator's public-parameter header
 #include "Vunit.h"
 #include "Vunit_specular_unit.h"
+#pragma GCC diagnostic pop
 #include "rtl_harness.hpp"
 
 #include "device_model.hpp"

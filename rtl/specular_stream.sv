@@ -1,0 +1,382 @@
+// Copyright (c) the specular_device authors.
+//
+// specular_stream: the device of patent UA 71489 as a streaming pixel pipeline. Span
+// descriptors (the register values of one scanline) come in, pixels go out, each side with
+// a valid/ready handshake. For span (C, psi0, dpsi, n, l, tag) pixel i = 0..l is
+//   I_i = C * cos^k(a(n) * psi_i),  psi_i = psi0 + i * dpsi,   0 where a*|psi_i| >= pi/2,
+// bit-identical to specular_unit with the same register values (one datapath: specular_unit
+// is a wrapper over this module). Bit-exact contract: model/device_model.hpp.
+//
+// Ports (default widths; formats those of specular_unit's registers):
+//   clk_i, rst_ni                clock; asynchronous reset, active low: drops every span and
+//                                pixel in flight, the core is empty afterwards
+//   span_valid_i, span_ready_o   span handshake
+//   span_c_i[16]                 C, unsigned, 15 fraction bits
+//   span_psi0_i[32], span_dpsi_i[32]  psi0 and dpsi, radians, signed, 28 fraction bits
+//   span_n_i[10]                 n, 1..1000 (0 or > 1000: every pixel of the span 0)
+//   span_len_i[11]               l: the span has l + 1 pixels
+//   span_tag_i[TagBits]          opaque, returned with every pixel of the span
+//   px_valid_o, px_ready_i       pixel handshake
+//   px_intensity_o[16]           pixel intensity, format of C; 0 while px_valid_o is low
+//   px_last_o                    the pixel is pixel l of its span
+//   px_tag_o[TagBits]            the tag of the pixel's span
+//
+// Handshake, AXI4-Stream rules: a transfer happens at a rising edge where valid and ready
+// are both high. px_valid_o and the pixel are registers; once px_valid_o is high they hold
+// until the transfer, and px_valid_o never waits for px_ready_i.
+// span_ready_o depends on the pipeline state and, combinationally, on px_ready_i (it is
+// low while the output register is full and px_ready_i low); it never depends on
+// span_valid_i. A consumer that holds px_ready_i high sees span_ready_o high whenever
+// register 8 is empty or holds its span's last pixel.
+//
+// Timing: a span accepted at the edge ending cycle t has pixel i on the output in cycle
+// t + Latency + i (Latency = 5) when px_ready_i stays high; the next span's pixel 0
+// follows its previous span's last pixel in the next cycle, whatever l (one pixel per
+// clock sustained, no bubble between spans). Stalls (px_ready_i low) freeze every stage.
+//
+// Pipeline (patent block numbers), every stage register enabled by adv = !px_valid_o ||
+// px_ready_i:
+//   stage 0  registers 1 (C), 2 (dpsi), 4 (n), counter 5 and the tag load when a span is
+//            accepted; register 8 (accumulator 6/7/8) takes psi0 then psi + dpsi; ROM 9 is
+//            read with the span's n at the accept edge; decoder 10 decodes register 4
+//   stage 1  multiplier 11, first half (|psi| truncated, far flag, coefficient)
+//   stage 2  multiplier 11, second half (ROM 12 address, zero flag)
+//   stage 3  ROM 12 read (bank from decoder 10 of this pixel's span)
+//   stage 4  multiplier 13 and the output register (output 27)
+// C, the tag, the bank and the n-valid flag of each pixel travel beside it, so every
+// pixel uses its own span's values while consecutive spans overlap in the pipeline.
+// Register 3 (psi0) is the span bus itself: mux 7 takes psi0 straight from span_psi0_i.
+//
+// Patent errata resolved here (docs/device.md): n has 10 bits; registers 3 and 2 hold the
+// unscaled -lambda and gamma/l (multiplier 11 applies a(n)); ROM 12 covers only [0, pi/2),
+// |zeta| addresses it and zeta >= pi/2 outputs 0.
+//
+// ROM files ($readmemh, paths relative to the working directory) and the numeric
+// parameters are those of specular_unit (see its header and roms/README.md).
+
+module specular_stream #(
+  parameter int CBits       = 16,
+  parameter int CFrac       = 15,
+  parameter int AngleBits   = 32,
+  parameter int AngleFrac   = 28,
+  parameter int AccBits     = 44,
+  parameter int NBits       = 10,
+  parameter int LenBits     = 11,
+  parameter int CoefBits    = 18,
+  parameter int CoefFrac    = 15,
+  parameter int PsiMulFrac  = 20,
+  parameter int CosAddrBits = 12,
+  parameter int CosDataBits = 16,
+  parameter int NumBanks    = 4,
+  parameter logic [NumBanks*NBits-1:0] BankMaxN = {10'd1000, 10'd6, 10'd2, 10'd1},
+  parameter     CoefRomFile = "roms/coef_minimax.hex",
+  parameter     CosRomFile  = "roms/cos_k_1_2_4_16.hex",
+  parameter int TagBits     = 16
+) (
+  input  logic                 clk_i,
+  input  logic                 rst_ni,
+  input  logic                 span_valid_i,
+  output logic                 span_ready_o,
+  input  logic [CBits-1:0]     span_c_i,
+  input  logic [AngleBits-1:0] span_psi0_i,
+  input  logic [AngleBits-1:0] span_dpsi_i,
+  input  logic [NBits-1:0]     span_n_i,
+  input  logic [LenBits-1:0]   span_len_i,
+  input  logic [TagBits-1:0]   span_tag_i,
+  output logic                 px_valid_o,
+  input  logic                 px_ready_i,
+  output logic [CBits-1:0]     px_intensity_o,
+  output logic                 px_last_o,
+  output logic [TagBits-1:0]   px_tag_o
+);
+
+  // Register 8, the two stages of multiplier 11, the ROM 12 read, multiplier 13.
+  localparam int PipeDepth = 5;
+
+  if (CFrac > CBits) begin : gen_c_check
+    $error("specular_stream: CFrac must not exceed CBits");
+  end
+  if (AccBits < AngleBits + LenBits + 1) begin : gen_acc_check
+    $error("specular_stream: AccBits too small for 2^LenBits additions of dpsi");
+  end
+  if (TagBits < 1) begin : gen_tag_check
+    $error("specular_stream: TagBits must be >= 1");
+  end
+
+  // ---------------------------------------------------------------------------------
+  // Control unit 14
+  // ---------------------------------------------------------------------------------
+  logic adv, accept, strobe, mux_sel, count, cnt_zero;
+  logic [PipeDepth-1:0] stage_valid;
+  logic unused_busy;
+
+  specular_control #(
+    .PipeDepth (PipeDepth)
+  ) u_control14 (
+    .clk_i         (clk_i),
+    .rst_ni        (rst_ni),
+    .span_valid_i  (span_valid_i),
+    .span_ready_o  (span_ready_o),
+    .px_ready_i    (px_ready_i),
+    .cnt_zero_i    (cnt_zero),
+    .adv_o         (adv),
+    .accept_o      (accept),
+    .strobe_o      (strobe),
+    .sel_o         (mux_sel),
+    .count_o       (count),
+    .stage_valid_o (stage_valid),
+    .px_valid_o    (px_valid_o),
+    .px_last_o     (px_last_o),
+    .busy_o        (unused_busy)
+  );
+
+  // ---------------------------------------------------------------------------------
+  // Stage 0: registers 1, 2, 4, the tag and counter 5 load with an accepted span
+  // ---------------------------------------------------------------------------------
+  logic [CBits-1:0]     c0;
+  logic [AngleBits-1:0] dpsi0;
+  logic [NBits-1:0]     n0;
+  logic [TagBits-1:0]   tag0;
+  logic [LenBits-1:0]   cnt0;
+  logic                 unused_borrow;
+
+  specular_reg #(.Width (CBits)) u_reg1_c (
+    .clk_i  (clk_i),
+    .rst_ni (rst_ni),
+    .we_i   (accept),
+    .d_i    (span_c_i),
+    .q_o    (c0)
+  );
+
+  specular_reg #(.Width (AngleBits)) u_reg2_dpsi (
+    .clk_i  (clk_i),
+    .rst_ni (rst_ni),
+    .we_i   (accept),
+    .d_i    (span_dpsi_i),
+    .q_o    (dpsi0)
+  );
+
+  specular_reg #(.Width (NBits)) u_reg4_n (
+    .clk_i  (clk_i),
+    .rst_ni (rst_ni),
+    .we_i   (accept),
+    .d_i    (span_n_i),
+    .q_o    (n0)
+  );
+
+  specular_reg #(.Width (TagBits)) u_reg_tag (
+    .clk_i  (clk_i),
+    .rst_ni (rst_ni),
+    .we_i   (accept),
+    .d_i    (span_tag_i),
+    .q_o    (tag0)
+  );
+
+  // The borrow equals count && cnt_zero; the control unit uses cnt_zero directly because
+  // span_ready_o must be known before the edge at which the count pulse is given.
+  specular_down_counter #(.LenBits (LenBits)) u_counter5 (
+    .clk_i    (clk_i),
+    .rst_ni   (rst_ni),
+    .len_we_i (accept),
+    .len_i    (span_len_i),
+    .count_i  (count),
+    .borrow_o (unused_borrow),
+    .count_o  (cnt0)
+  );
+  assign cnt_zero = (cnt0 == '0);
+
+  // Accumulator: adder 6, mux 7, register 8
+  logic signed [AccBits-1:0] psi0;
+
+  specular_accumulator #(
+    .AngleBits (AngleBits),
+    .AccBits   (AccBits)
+  ) u_accumulator (
+    .clk_i  (clk_i),
+    .rst_ni (rst_ni),
+    .we_i   (strobe),
+    .sel_i  (mux_sel),
+    .psi0_i (span_psi0_i),
+    .dpsi_i (dpsi0),
+    .psi_o  (psi0)
+  );
+
+  // Decoder 10 (on register 4) and coefficient ROM 9 (read with the span's n on accept)
+  logic [NumBanks-1:0] bank0;
+  logic                n_valid0;
+  logic [CoefBits-1:0] coef0;
+
+  specular_decoder #(
+    .NBits    (NBits),
+    .NumBanks (NumBanks),
+    .BankMaxN (BankMaxN)
+  ) u_decoder10 (
+    .n_i       (n0),
+    .bank_o    (bank0),
+    .n_valid_o (n_valid0)
+  );
+
+  specular_coef_rom #(
+    .NBits       (NBits),
+    .CoefBits    (CoefBits),
+    .CoefRomFile (CoefRomFile)
+  ) u_coef_rom9 (
+    .clk_i  (clk_i),
+    .en_i   (accept),
+    .n_i    (span_n_i),
+    .coef_o (coef0)
+  );
+
+  // ---------------------------------------------------------------------------------
+  // Per-pixel span values beside the datapath: stage 1 .. stage 4
+  // ---------------------------------------------------------------------------------
+  logic [CBits-1:0]    c1_q, c2_q, c3_q;
+  logic [TagBits-1:0]  tag1_q, tag2_q, tag3_q, tag4_q;
+  logic [NumBanks-1:0] bank1_q, bank2_q;
+  logic                n_valid1_q;
+  logic                zero3_q;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      c1_q       <= '0;
+      c2_q       <= '0;
+      c3_q       <= '0;
+      tag1_q     <= '0;
+      tag2_q     <= '0;
+      tag3_q     <= '0;
+      tag4_q     <= '0;
+      bank1_q    <= '0;
+      bank2_q    <= '0;
+      n_valid1_q <= 1'b0;
+    end else if (adv) begin
+      c1_q       <= c0;
+      c2_q       <= c1_q;
+      c3_q       <= c2_q;
+      tag1_q     <= tag0;
+      tag2_q     <= tag1_q;
+      tag3_q     <= tag2_q;
+      tag4_q     <= tag3_q;
+      bank1_q    <= bank0;
+      bank2_q    <= bank1_q;
+      n_valid1_q <= n_valid0;
+    end
+  end
+
+  // ---------------------------------------------------------------------------------
+  // Stages 1-2: multiplier 11; stage 3: ROM 12; stage 4: multiplier 13
+  // ---------------------------------------------------------------------------------
+  logic [CosAddrBits-1:0] cos_addr;
+  logic                   zero_addr;
+  logic [CosDataBits-1:0] cosk;
+
+  specular_angle_mul #(
+    .AccBits     (AccBits),
+    .AngleFrac   (AngleFrac),
+    .CoefBits    (CoefBits),
+    .CoefFrac    (CoefFrac),
+    .PsiMulFrac  (PsiMulFrac),
+    .CosAddrBits (CosAddrBits)
+  ) u_mul11 (
+    .clk_i     (clk_i),
+    .rst_ni    (rst_ni),
+    .en_i      (adv),
+    .psi_i     (psi0),
+    .coef_i    (coef0),
+    .n_valid_i (n_valid1_q),
+    .addr_o    (cos_addr),
+    .zero_o    (zero_addr)
+  );
+
+  specular_cos_k_rom #(
+    .NumBanks    (NumBanks),
+    .CosAddrBits (CosAddrBits),
+    .CosDataBits (CosDataBits),
+    .CosRomFile  (CosRomFile)
+  ) u_cos_k_rom12 (
+    .clk_i  (clk_i),
+    .en_i   (adv),
+    .bank_i (bank2_q),
+    .addr_i (cos_addr),
+    .cosk_o (cosk)
+  );
+
+  // The zero flag travels alongside the ROM 12 read; a bubble is a zero pixel too, so
+  // px_intensity_o reads 0 whenever px_valid_o is low.
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      zero3_q <= 1'b0;
+    end else if (adv) begin
+      zero3_q <= zero_addr | ~stage_valid[2];
+    end
+  end
+
+  specular_intensity_mul #(
+    .CBits       (CBits),
+    .CosDataBits (CosDataBits)
+  ) u_mul13 (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .en_i        (adv),
+    .c_i         (c3_q),
+    .cosk_i      (cosk),
+    .zero_i      (zero3_q),
+    .intensity_o (px_intensity_o)
+  );
+
+  assign px_tag_o = tag4_q;
+
+  // ---------------------------------------------------------------------------------
+  // Immediate assertions of the handshake invariants (Verilator --assert; the formal
+  // proof of the same properties is rtl/formal/specular_stream_fv.sv)
+  // ---------------------------------------------------------------------------------
+`ifndef SYNTHESIS
+  // Pixels owed: l + 1 per accepted span, minus one per transfer. Wide enough for every
+  // span that fits in the pipeline.
+  localparam int OweBits = LenBits + 4;
+  logic [OweBits-1:0] owed_q;
+  logic               stalled_q;
+  logic [CBits+TagBits:0] held_q;
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      owed_q    <= '0;
+      stalled_q <= 1'b0;
+      held_q    <= '0;
+    end else begin
+      owed_q <= owed_q
+                + (accept ? OweBits'(span_len_i) + OweBits'(1) : '0)
+                - ((px_valid_o && px_ready_i) ? OweBits'(1) : '0);
+      stalled_q <= px_valid_o & ~px_ready_i;
+      held_q    <= {px_intensity_o, px_last_o, px_tag_o};
+    end
+  end
+
+  always_comb begin
+    if (rst_ni) begin
+      // Valid held and data stable while stalled.
+      if (stalled_q) begin
+        assert (px_valid_o)
+          else $error("specular_stream: px_valid_o fell without a transfer");
+        assert ({px_intensity_o, px_last_o, px_tag_o} == held_q)
+          else $error("specular_stream: pixel changed while stalled");
+      end
+      // No pixel without an accepted span; none left over at the end of a span.
+      if (px_valid_o) begin
+        assert (owed_q != '0)
+          else $error("specular_stream: pixel without an accepted span");
+        assert (owed_q != OweBits'(1) || px_last_o)
+          else $error("specular_stream: the last pixel owed is not marked last");
+      end
+      if (owed_q == '0) begin
+        assert (stage_valid == '0)
+          else $error("specular_stream: pixel in flight with none owed");
+      end
+      if (!px_valid_o) begin
+        assert (px_intensity_o == '0 && !px_last_o)
+          else $error("specular_stream: output not cleared while invalid");
+      end
+    end
+  end
+`endif
+
+endmodule

@@ -1,0 +1,203 @@
+// Harness around one verilated specular_stream: owns the VerilatedContext, the golden model
+// of the same configuration, an on-demand VCD writer and a scoreboard.
+//
+// Cycle convention (as harness.hpp): in cycle c the harness drives the inputs, evaluates
+// with clk low and samples the outputs, then raises clk. A transfer happens in cycle c when
+// valid and ready are both high in it; it takes effect at the edge that ends cycle c.
+// span_ready_o depends combinationally on px_ready_i, so px_ready_i is driven first.
+//
+// The scoreboard: every accepted span appends its golden pixels (DeviceModel::stream_span)
+// to a queue; every pixel transfer pops the front and must equal it in intensity, last
+// and tag. An asynchronous reset clears the queue: everything in flight is dropped.
+#pragma once
+
+#include "device_model.hpp"
+
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wunused-parameter"
+#include <verilated.h>
+#include <verilated_vcd_c.h>
+#pragma GCC diagnostic pop
+
+#include <cstdint>
+#include <deque>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace specular::sim {
+
+struct StreamCounters {
+  uint64_t cycles = 0;
+  uint64_t spans_accepted = 0;
+  uint64_t pixels = 0;          // pixel transfers checked against the golden model
+  uint64_t mismatches = 0;      // intensity differs
+  uint64_t protocol_errors = 0; // tag, last, order, handshake rule, pixel without a span
+  uint64_t resets = 0;
+  uint64_t dropped = 0;         // golden pixels dropped by resets
+  std::vector<std::string> first_errors;  // at most 10 messages
+};
+
+template <class V>
+class StreamHarness {
+ public:
+  StreamHarness(std::string name, device::DeviceModel model, int tag_bits)
+      : name_(std::move(name)), model_(std::move(model)), tag_mask_((1ULL << tag_bits) - 1),
+        ctx_(std::make_unique<VerilatedContext>()) {
+    ctx_->traceEverOn(true);
+    top_ = std::make_unique<V>(ctx_.get(), name_.c_str());
+    top_->span_valid_i = 0;
+    top_->px_ready_i = 0;
+    reset(2);
+  }
+  ~StreamHarness() {
+    close_vcd();
+    top_->final();
+  }
+  StreamHarness(const StreamHarness&) = delete;
+  StreamHarness& operator=(const StreamHarness&) = delete;
+
+  const device::DeviceModel& model() const { return model_; }
+  StreamCounters& counters() { return cnt_; }
+  bool empty() const { return expect_.empty(); }
+  size_t owed() const { return expect_.size(); }
+
+  void open_vcd(const std::string& path) {
+    close_vcd();
+    vcd_ = std::make_unique<VerilatedVcdC>();
+    top_->trace(vcd_.get(), 99);
+    vcd_->open(path.c_str());
+    vcd_base_ = cycle_;
+  }
+  void close_vcd() {
+    if (vcd_) {
+      vcd_->close();
+      vcd_.reset();
+    }
+  }
+
+  // Asynchronous reset held for `cycles` clocks: drops everything in flight. While in
+  // reset the core must show no valid pixel.
+  void reset(int cycles) {
+    top_->rst_ni = 0;
+    top_->clk_i = 0;
+    top_->eval();
+    cnt_.dropped += expect_.size();
+    expect_.clear();
+    stalled_ = false;
+    for (int c = 0; c < cycles; ++c) {
+      top_->eval();
+      if (top_->px_valid_o) error("px_valid_o high during reset");
+      edge();
+    }
+    top_->rst_ni = 1;
+    top_->eval();
+    ++cnt_.resets;
+  }
+
+  // One cycle. `offer` (may be null) is the span offered on span_valid_i; returns true when
+  // it was accepted at this edge. The caller keeps offering the same span until accepted
+  // (the AXI source rule). `ready` drives px_ready_i. `transferred` tells whether a pixel
+  // left at this edge.
+  bool cycle(const device::Span* offer, bool ready, bool* transferred = nullptr) {
+    top_->px_ready_i = ready;
+    top_->span_valid_i = offer != nullptr;
+    if (offer) drive_span(*offer);
+    top_->clk_i = 0;
+    top_->eval();
+    // Handshake rules checked on the sampled outputs.
+    const bool pv = top_->px_valid_o;
+    const device::StreamPixel px{top_->px_intensity_o, top_->px_last_o != 0,
+                                 static_cast<uint32_t>(top_->px_tag_o & tag_mask_)};
+    if (stalled_) {
+      if (!pv) error("px_valid_o fell without a transfer");
+      else if (!(px == held_)) error("pixel changed while stalled");
+    }
+    if (!pv && (top_->px_intensity_o != 0 || top_->px_last_o)) error("px_intensity_o/px_last_o not 0 while px_valid_o is low");
+    const bool span_fire = offer && top_->span_ready_o;
+    const bool px_fire = pv && ready;
+    if (px_fire) check_pixel(px);
+    stalled_ = pv && !ready;
+    held_ = px;
+    dump(10 * (cycle_ - vcd_base_));
+    edge();
+    if (span_fire) {
+      ++cnt_.spans_accepted;
+      std::vector<device::StreamPixel> tmp;
+      device::Span s = *offer;
+      s.tag = static_cast<uint32_t>(s.tag & tag_mask_);
+      model_.stream_span(s, tmp);
+      expect_.insert(expect_.end(), tmp.begin(), tmp.end());
+    }
+    if (transferred) *transferred = px_fire;
+    return span_fire;
+  }
+
+  // Sampled in the current cycle (after the last cycle()): for idle checks.
+  bool px_valid() {
+    top_->eval();
+    return top_->px_valid_o;
+  }
+  uint64_t now() const { return cycle_; }
+
+  void error(const std::string& what) {
+    ++cnt_.protocol_errors;
+    if (cnt_.first_errors.size() < 10) cnt_.first_errors.push_back("cycle " + std::to_string(cycle_) + ": " + what);
+  }
+
+ private:
+  void drive_span(const device::Span& s) {
+    const auto& f = model_.format();
+    const uint64_t am = (1ULL << f.angle_bits) - 1;
+    top_->span_c_i = s.reg.c & ((1U << f.c_bits) - 1);
+    top_->span_psi0_i = static_cast<uint32_t>(static_cast<uint64_t>(s.reg.psi0) & am);
+    top_->span_dpsi_i = static_cast<uint32_t>(static_cast<uint64_t>(s.reg.dpsi) & am);
+    top_->span_n_i = s.reg.n & ((1U << f.n_bits) - 1);
+    top_->span_len_i = s.reg.len & ((1U << f.len_bits) - 1);
+    top_->span_tag_i = static_cast<uint32_t>(s.tag & tag_mask_);
+  }
+  void check_pixel(const device::StreamPixel& px) {
+    if (expect_.empty()) {
+      error("pixel without an accepted span");
+      return;
+    }
+    const device::StreamPixel e = expect_.front();
+    expect_.pop_front();
+    ++cnt_.pixels;
+    if (px.tag != e.tag || px.last != e.last) {
+      error("tag/last " + std::to_string(px.tag) + "/" + std::to_string(px.last) + ", expected " +
+            std::to_string(e.tag) + "/" + std::to_string(e.last));
+    }
+    if (px.intensity != e.intensity) {
+      ++cnt_.mismatches;
+      if (cnt_.first_errors.size() < 10)
+        cnt_.first_errors.push_back("cycle " + std::to_string(cycle_) + ": intensity " + std::to_string(px.intensity) +
+                                    ", golden " + std::to_string(e.intensity) + " (tag " + std::to_string(e.tag) + ")");
+    }
+  }
+  void edge() {
+    top_->clk_i = 1;
+    top_->eval();
+    dump(10 * (cycle_ - vcd_base_) + 5);
+    top_->clk_i = 0;
+    ++cycle_;
+    ++cnt_.cycles;
+  }
+  void dump(uint64_t t) {
+    if (vcd_) vcd_->dump(t);
+  }
+
+  std::string name_;
+  device::DeviceModel model_;
+  uint64_t tag_mask_;
+  std::unique_ptr<VerilatedContext> ctx_;
+  std::unique_ptr<V> top_;
+  std::unique_ptr<VerilatedVcdC> vcd_;
+  uint64_t cycle_ = 0, vcd_base_ = 0;
+  std::deque<device::StreamPixel> expect_;
+  StreamCounters cnt_;
+  bool stalled_ = false;
+  device::StreamPixel held_;
+};
+
+}  // namespace specular::sim
