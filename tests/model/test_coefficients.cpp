@@ -5,7 +5,6 @@
 
 #include <catch2/catch.hpp>
 
-#include <chrono>
 #include <cmath>
 
 using namespace specular;
@@ -74,19 +73,52 @@ TEST_CASE("minimax is a minimum of the max relative epicenter error", "[coef]") 
   CHECK(e0 <= brute_rel(n, k, coef_maclaurin(n, k)) * (1 + 1e-9));
 }
 
-TEST_CASE("minimax is exact when n = k and deterministic", "[coef]") {
+// The minimizing a found independently: golden-section search of brute_rel over a. The
+// max of the positive and the negative relative error is unimodal in a (one falls, the
+// other rises with a), so the search converges to the minimax a of the 20000-sample sweep.
+static double brute_minimax_a(double n, int k) {
+  const double g = (std::sqrt(5.0) - 1) / 2;
+  double lo = 0.5 * std::sqrt(n / k), hi = 1.5 * std::sqrt(n / k);
+  double x1 = hi - g * (hi - lo), x2 = lo + g * (hi - lo);
+  double f1 = brute_rel(n, k, x1), f2 = brute_rel(n, k, x2);
+  while (hi - lo > 1e-9 * hi) {
+    if (f1 < f2) {
+      hi = x2, x2 = x1, f2 = f1;
+      x1 = hi - g * (hi - lo), f1 = brute_rel(n, k, x1);
+    } else {
+      lo = x1, x1 = x2, f1 = f2;
+      x2 = lo + g * (hi - lo), f2 = brute_rel(n, k, x2);
+    }
+  }
+  return (lo + hi) / 2;
+}
+
+TEST_CASE("minimax is exact when n = k and agrees with a brute-force search", "[coef]") {
   CHECK(coef_minimax(16, 16) == 1.0);
-  CHECK(coef_minimax(137, 16) == coef_minimax(137, 16));
+  // coef_minimax bisects on the model's analytic error bounds; the reference scans a with
+  // the brute-force sweep. Measured agreement 4e-11 .. 1.2e-10 relative for these four
+  // (n, k); the tolerance 1e-8 keeps a 100x margin and is 1e5 times tighter than the
+  // distance to maclaurin (0.7 % at n = 3) or a one-LSB change of ROM 9 (4.8e-5 / a relative).
+  for (const auto& [n, k] : {std::pair{137, 16}, std::pair{3, 4}, std::pair{1000, 16}, std::pair{5, 4}}) {
+    INFO("n=" << n << " k=" << k);
+    const double want = brute_minimax_a(n, k);
+    CHECK_THAT(coef_minimax(n, k), WithinRel(want, 1e-8));
+  }
   // The lead's independent quick script: a(3,4) ~ 0.87219, a(1000,16) ~ 7.8721.
   CHECK_THAT(coef_minimax(3, 4), WithinAbs(0.87219, 1e-5));
   CHECK_THAT(coef_minimax(1000, 16), WithinAbs(7.8721, 1e-4));
 }
 
-TEST_CASE("minimax for all 1000 decoder entries takes well under 1 s", "[coef][timing]") {
-  const auto t0 = std::chrono::steady_clock::now();
-  double s = 0;
-  for (int n = 1; n <= 1000; ++n) s += coefficient(n, decoder_k(n), {CoefPolicy::minimax, 0.5});
-  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  CHECK(std::isfinite(s));
-  CHECK(secs < 0.5);
+// No wall-clock bound here: speed belongs in the benchmark (model/bench) and the report.
+TEST_CASE("minimax for all 1000 decoder entries is finite and never worse than maclaurin", "[coef]") {
+  for (int n = 1; n <= 1000; ++n) {
+    const int k = decoder_k(n);
+    const double a = coefficient(n, k, {CoefPolicy::minimax, 0.5});
+    INFO("n=" << n);
+    REQUIRE(std::isfinite(a));
+    REQUIRE(a > 0);
+    if (n % 37 == 0 || n <= 8)
+      CHECK(max_rel_epicenter([&](double x) { return cosk_shape(x, k, a); }, n) <=
+            max_rel_epicenter([&](double x) { return cosk_shape(x, k, coef_maclaurin(n, k)); }, n) * (1 + 1e-9));
+  }
 }

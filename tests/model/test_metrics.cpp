@@ -5,7 +5,6 @@
 
 #include <catch2/catch.hpp>
 
-#include <chrono>
 #include <cmath>
 #include <functional>
 
@@ -157,14 +156,18 @@ TEST_CASE("n = 1: relative error at pi/2 is 0 when F vanishes there and unbounde
   CHECK_THAT(max_rel_epicenter([](double x) { return schlick_mod(std::cos(x), 1); }, 1), WithinAbs(1.0 / 3.0, 1e-6));
 }
 
-TEST_CASE("errors for n = 1..1000 of the patent run fast", "[metrics][timing]") {
-  const auto t0 = std::chrono::steady_clock::now();
+// No wall-clock bound: speed belongs in the benchmark (model/bench) and the report.
+TEST_CASE("errors for n = 1..1000 of the patent: the worst is the n = 3 bank boundary", "[metrics]") {
   double worst = 0;
+  int worst_n = 0;
   for (int n = 1; n <= 1000; ++n) {
     const int k = decoder_k(n);
     const double a = coef_maclaurin(n, k);
-    worst = std::max(worst, shape_error([&](double x) { return cosk_shape(x, k, a); }, n).max_rel_epicenter);
+    const double e = shape_error([&](double x) { return cosk_shape(x, k, a); }, n).max_rel_epicenter;
+    if (e > worst) worst = e, worst_n = n;
   }
-  CHECK(std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() < 1.5);
-  CHECK(worst > 0.0);
+  // n = 1 (k = 1, a = 1) and n = 2 are exact; the patent's own coefficients exceed its 1 %
+  // claim only at n = 3 (the first n of the k = 4 bank): 1.09 %, README "Known limits".
+  CHECK(worst_n == 3);
+  CHECK_THAT(worst, WithinAbs(0.0109, 0.0001));
 }
