@@ -136,7 +136,8 @@ class Report:
         return json.load(open(path))
 
     def synth_one(self, cfg):
-        """romgen + Yosys synth_ice40 of specular_unit for one configuration."""
+        """romgen + Yosys synth_ice40 of cfg['top'] (default specular_unit) for one configuration."""
+        top = cfg.get("top", "specular_unit")
         romgen = self.exe("romgen")
         d = os.path.join(self.out, "roms", cfg["name"])
         os.makedirs(d, exist_ok=True)
@@ -161,9 +162,9 @@ class Report:
             f.write(f"read_verilog -sv {sources}\n"
                     f"chparam -set CosAddrBits {cfg['cos_addr_bits']} -set CosDataBits {cfg['cos_data_bits']} "
                     f"-set NumBanks {nb} -set BankMaxN {10 * nb}'h{packed:x} "
-                    f"-set CoefRomFile \"{coef[0]}\" -set CosRomFile \"{cos[0]}\" specular_unit\n"
-                    "hierarchy -check -top specular_unit\n"
-                    "synth_ice40 -top specular_unit\n"
+                    f"-set CoefRomFile \"{coef[0]}\" -set CosRomFile \"{cos[0]}\" {top}\n"
+                    f"hierarchy -check -top {top}\n"
+                    f"synth_ice40 -top {top}\n"
                     f"tee -q -o {stat} stat\n")
         # Synthesis is deterministic: with identical RTL, ROM contents, script and Yosys the
         # previous run's netlist statistics are this run's, so they are reused (and marked).
@@ -671,6 +672,32 @@ class Report:
                         w(f"| {sname} | {pname} | {p.get('spans', 'n/a')} | {p.get('pixels')} | {p.get('mismatches')} | "
                           f"{fnum(p.get('max_device_error_abs')):.3g} | {fmt_err(p.get('max_device_rel_epicenter'))} | "
                           f"{fnum(p.get('max_interp_error_abs')):.3g} | {fnum(p.get('simulated_pixels_per_second')):.3g} |")
+            st = sim.get("stream")
+            if st:
+                w("\nStreaming core (`specular_stream`, minimax ROM): random spans with random gaps, random `px_ready_i` "
+                  "patterns (always high, toggling, random, long stalls) and resets mid-stream; every pixel checked "
+                  "bit-exactly against the golden model's stream view, with its tag, `last` flag, count and order:\n")
+                w("| spans | pixels | cycles | resets | mismatches | protocol errors | pixels/clock, l = 0..3, ready high "
+                  "| same, mixed l |")
+                w("|---|---|---|---|---|---|---|---|")
+                w(f"| {st.get('spans')} | {st.get('pixels')} | {st.get('cycles')} | {st.get('resets')} | "
+                  f"{st.get('mismatches')} | {st.get('protocol_errors')} | "
+                  f"{fnum(st.get('pixels_per_clock_short_spans')):.4f} | {fnum(st.get('pixels_per_clock_mixed_spans')):.4f} |")
+            ss = sim.get("scenes_stream", {})
+            if ss:
+                w("\nClocks per pixel on the scenes' spans: the streaming core with spans back to back and `px_ready_i` "
+                  "high, against the register interface (`specular_unit`, l + 7 clocks per line), both measured:\n")
+                w("| scene | spans | pixels | stream clocks/pixel | register interface clocks/pixel | mismatches |")
+                w("|---|---|---|---|---|---|")
+                for sname, x in sorted(ss.items()):
+                    w(f"| {sname} | {x.get('spans')} | {x.get('pixels')} | {fnum(x.get('stream_clocks_per_pixel')):.4f} | "
+                      f"{fnum(x.get('register_clocks_per_pixel')):.4f} | {x.get('mismatches')} |")
+            sc_u, sc_s = cells.get("default-minimax", {}), cells.get("default-minimax-stream", {})
+            if "lut4" in sc_u and "lut4" in sc_s:
+                w("\nCells (Yosys `synth_ice40`, default configuration): "
+                  f"`specular_unit` {sc_u['lut4']} LUT4, {sc_u['ff']} FF, {sc_u['bram']} SB_RAM40_4K; "
+                  f"`specular_stream` {sc_s['lut4']} LUT4, {sc_s['ff']} FF, {sc_s['bram']} SB_RAM40_4K "
+                  "(the unit is the stream plus its host registers and start latch).\n")
             if not any("golden_seconds" in p for p in sim.get("policies", {}).values()):
                 w("\nThe regression's JSON reports the time inside the Verilator model (`sim_seconds`) and the total; the "
                   "golden model and the floating-point reference are not timed separately, so their shares are given "
@@ -709,7 +736,11 @@ class Report:
         t0 = time.time()
         speed = self.bench()
         data = self.model_data()
-        cells = self.synth(data.get("hardware", []))
+        hw_cfgs = data.get("hardware", [])
+        # The streaming core of the default configuration, next to specular_unit's cells.
+        stream_cfgs = [dict(h, name=h["name"] + "-stream", top="specular_stream")
+                       for h in hw_cfgs if h["name"] == "default-minimax"]
+        cells = self.synth(hw_cfgs + stream_cfgs)
         pnr = self.pnr()
         sim = self.sim() if not self.args.no_sim else {}
         rows = self.error_rows(data)
