@@ -734,15 +734,16 @@ class Report:
 
     def main(self):
         t0 = time.time()
-        speed = self.bench()
+        smoke = self.args.smoke  # tests/report/check_make_report.py: tables from report_data only
+        speed = self.bench() if not smoke else {}
         data = self.model_data()
         hw_cfgs = data.get("hardware", [])
         # The streaming core of the default configuration, next to specular_unit's cells.
         stream_cfgs = [dict(h, name=h["name"] + "-stream", top="specular_stream")
                        for h in hw_cfgs if h["name"] == "default-minimax"]
-        cells = self.synth(hw_cfgs + stream_cfgs)
-        pnr = self.pnr()
-        sim = self.sim() if not self.args.no_sim else {}
+        cells = self.synth(hw_cfgs + stream_cfgs) if not smoke else {}
+        pnr = self.pnr() if not smoke else ()
+        sim = self.sim() if not (self.args.no_sim or smoke) else {}
         rows = self.error_rows(data)
         if rows and speed:
             self.plot_plane(rows, speed)
@@ -770,6 +771,8 @@ def parse_args(argv):
     ap.add_argument("--fresh-synth", action="store_true",
                     help="re-run Yosys even when RTL, ROMs and script are unchanged since the last run")
     ap.add_argument("--no-sim", action="store_true", help="skip the Verilator regression")
+    ap.add_argument("--smoke", action="store_true",
+                    help="fast check run: report_data only (no benchmark, synthesis, place and route or simulation)")
     args = ap.parse_args(argv)
     for name, lo, hi in (("--random", 0, 1000000), ("--jobs", 1, 16), ("--n-step", 1, 999)):
         v = getattr(args, name[2:].replace("-", "_"))
