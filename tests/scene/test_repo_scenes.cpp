@@ -1,5 +1,6 @@
 // Every repository scene loads and rasterizes into sane spans; scene-specific
 // properties (short spans, long spans, sphere silhouettes) against geometry.
+#include "evaluators.hpp"
 #include "image.hpp"
 #include "rom_image.hpp"
 #include "raster.hpp"
@@ -111,10 +112,21 @@ TEST_CASE("spheres: four silhouettes of area pi r^2, normals match the analytic 
 
 TEST_CASE("dense mesh: many spans of one and two pixels", "[scene][repo]") {
   const Raster& r = raster_of("dense_mesh");
-  CHECK(r.stats.spans_l0 > 1000);
-  CHECK(r.stats.spans_l1 > 100);
-  // Many triangles per scanline: far more spans than rows.
-  CHECK(r.stats.spans > 20u * static_cast<size_t>(r.height));
+  // Measured on the committed scene (the raster is deterministic): 57,074 spans (issue 7
+  // quotes the same figure) for 256 rows, 54,768 of them with l = 0 and 2,304 with l = 1.
+  // The bounds keep a 2 % margin each way: a fill-rule or span-splitting change that merges,
+  // drops or splits spans moves them by far more.
+  CHECK(r.stats.spans_l0 > 53'600);
+  CHECK(r.stats.spans_l0 < 55'900);
+  CHECK(r.stats.spans_l1 > 2'250);
+  CHECK(r.stats.spans_l1 < 2'350);
+  CHECK(r.stats.spans > 55'900u);
+  CHECK(r.stats.spans < 58'300u);
+  // Closed form: every span has at least one pixel, and the l = 0 / l = 1 spans account for
+  // exactly spans_l0 + 2 spans_l1 of the shaded pixels.
+  CHECK(r.stats.spans <= r.stats.shaded_pixels);
+  CHECK(r.stats.spans_l0 + r.stats.spans_l1 <= r.stats.spans);
+  CHECK(r.stats.shaded_pixels >= r.stats.spans_l0 + 2 * r.stats.spans_l1 + 3 * (r.stats.spans - r.stats.spans_l0 - r.stats.spans_l1));
 }
 
 TEST_CASE("grazing plane: one full-width span per row, tiny nonzero dpsi", "[scene][repo]") {
@@ -124,15 +136,26 @@ TEST_CASE("grazing plane: one full-width span per row, tiny nonzero dpsi", "[sce
   CHECK(r.stats.spans == static_cast<size_t>(s.height));
   CHECK(r.stats.max_l == s.width - 1);
   for (const Span& sp : r.spans) CHECK(sp.length() == s.width - 1);
-  // H changes by a few degrees over 511 pixels: dpsi is tiny but not zero.
+  // Closed form: the plane's normal is constant (N1 = N2, so H2 = He), hence
+  // dpsi = angle(H1, He) / l exactly; checked per span against an independent long double
+  // computation of that angle.
   double max_dpsi = 0, min_dpsi = 1;
   for (const Span& sp : r.spans) {
     const ScanlineSetup st = scanline_setup(sp.setup_in);
+    REQUIRE(sp.setup_in.n1 == sp.setup_in.n2);
+    const glm::dvec3 a = glm::normalize(sp.setup_in.h1), b = glm::normalize(sp.setup_in.he);
+    const long double ax = a.x, ay = a.y, az = a.z, bx = b.x, by = b.y, bz = b.z;
+    const long double cx = ay * bz - az * by, cy = az * bx - ax * bz, cz = ax * by - ay * bx;
+    const long double angle = std::atan2(std::sqrt(cx * cx + cy * cy + cz * cz), ax * bx + ay * by + az * bz);
+    CHECK_THAT(std::abs(st.dpsi), Catch::Matchers::WithinRel(static_cast<double>(angle / sp.length()), 1e-9));
     max_dpsi = std::max(max_dpsi, std::abs(st.dpsi));
     min_dpsi = std::min(min_dpsi, std::abs(st.dpsi));
   }
-  CHECK(max_dpsi < 2e-4);
-  CHECK(min_dpsi > 1e-6);
+  // H turns by 1.9 .. 2.8 degrees over 511 pixels (measured: dpsi 3.26e-5 .. 9.65e-5 rad);
+  // bounds at 20 % margin: tiny, never zero.
+  CHECK(max_dpsi < 1.2e-4);
+  CHECK(max_dpsi > 8e-5);
+  CHECK(min_dpsi > 2.6e-5);
 }
 
 TEST_CASE("torus with a point light: H differs between the ends of long spans", "[scene][repo]") {
@@ -140,7 +163,9 @@ TEST_CASE("torus with a point light: H differs between the ends of long spans", 
   size_t varying = 0;
   for (const Span& sp : r.spans)
     if (sp.length() > 20 && glm::length(sp.setup_in.h1 - sp.setup_in.he) > 1e-3) ++varying;
-  CHECK(varying > 50);
+  // Measured on the committed scene: 383 of its 8,514 spans are longer than 20 pixels with
+  // |H1 - He| > 1e-3 (the point light is close). Bound at 10 % below the measurement.
+  CHECK(varying > 345);
 }
 
 TEST_CASE("interpolation-model error is small where the model should hold", "[scene][repo]") {
@@ -155,7 +180,9 @@ TEST_CASE("interpolation-model error is small where the model should hold", "[sc
     const Image model = render(r, float_model_evaluator());
     const ImageErrorStats e = error_stats(difference(model, truth));
     CHECK(e.pixels == r.stats.covered_pixels);
-    CHECK(e.max_abs < 1e-2);
+    // Measured: spheres 1.04e-3 (spans up to 7.5-degree facets wide), dense_mesh 6.9e-5
+    // (one- and two-pixel spans); bounds at 1.5 x the measurement.
+    CHECK(e.max_abs < (std::string(name) == "spheres" ? 1.6e-3 : 1.1e-4));
     CHECK(e.max_abs > 0.0);
   }
 }
@@ -190,7 +217,17 @@ TEST_CASE("golden device image stays within the device error budget of the float
   const Image gold = render(r, golden_evaluator(dm));
   const ImageErrorStats e = error_stats(difference(gold, flt));
   CHECK(e.pixels == r.stats.covered_pixels);
-  CHECK(e.max_abs < 0.02);
+  // Source of the bound: the device's own absolute lobe error at each material's n
+  // (device_error, model/evaluators.hpp: C = 1, exact pixel angles), times the largest C of
+  // the scene (Is * ks = 0.9, A <= 1), plus the host's rounding of C and of the angles
+  // (2 output LSBs). Measured 0.00795 against a bound of 0.00820 (the old bound was 0.02);
+  // n = 500 sets both. The headroom (2.5e-4) is a quarter of what a ROM 12 address off by
+  // one changes on the lobe's slope: one address step is pi/2 / 4096 in zeta, times the
+  // steepest slope of cos^16 (2.46) times C = 0.9: 8.5e-4.
+  double bound = 0;
+  for (int n : {1, 5, 50, 500}) bound = std::max(bound, 0.9 * device_error(dm, n).max_abs_lobe);
+  bound += 2.0 / 32768;
+  CHECK(e.max_abs <= bound);
   CHECK(e.max_abs > 0.0);
   for (size_t k = 0; k < gold.value.size(); ++k) CHECK(gold.value[k] >= 0.0);
 }
