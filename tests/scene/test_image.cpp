@@ -15,6 +15,9 @@
 #include <filesystem>
 #include <fstream>
 #include <sstream>
+#include <algorithm>
+#include <cstdlib>
+#include <vector>
 
 using namespace specular;
 using Catch::Matchers::Contains;
@@ -257,5 +260,35 @@ TEST_CASE("render: bad input exits with 2, names the problem and writes nothing"
   CHECK_THAT(r.err, Contains("--scale"));
   CHECK_THAT(r.err, Contains("(0, 1000]"));
   CHECK_FALSE(fs::exists(out));
+  fs::remove_all(dir);
+}
+
+// Issue 10: CSV numbers round-trip. render prints max_abs_interp_error, rms_interp_error and
+// peak_phong as the shortest text that parses back to the same double, so they equal,
+// bit for bit, what the same computation gives in this process (with the old %.6e / %.6f
+// they differed from the seventh significant digit on).
+TEST_CASE("render: CSV statistics round-trip to the exact doubles", "[scene][cli][roundtrip]") {
+  const fs::path dir = temp_dir("cli_roundtrip");
+  std::ofstream(dir / "ball.json") << kSmallScene;
+  const Run r = run_render("--scene " + (dir / "ball.json").string() + " --out-dir " + (dir / "img").string(), dir);
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  std::vector<std::string> cells;
+  {
+    std::istringstream in(r.out.substr(0, r.out.find('\n')));
+    std::string c;
+    while (std::getline(in, c, ',')) cells.push_back(c);
+  }
+  REQUIRE(cells.size() >= 13);
+  const Scene s = parse_scene(kSmallScene, "ball.json");
+  const Raster raster = rasterize(s);
+  const Image phong = render(raster, phong_evaluator(s));
+  const ImageErrorStats es = error_stats(difference(render(raster, float_model_evaluator()), phong));
+  double peak = 0;
+  for (double v : phong.value) peak = std::max(peak, v);
+  REQUIRE(es.max_abs > 0.0);
+  CHECK(std::strtod(cells[10].c_str(), nullptr) == es.max_abs);  // max_abs_interp_error
+  CHECK(std::strtod(cells[11].c_str(), nullptr) == es.rms);      // rms_interp_error
+  CHECK(std::strtod(cells[12].c_str(), nullptr) == peak);        // peak_phong
   fs::remove_all(dir);
 }
