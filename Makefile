@@ -6,7 +6,7 @@ JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 PYTHON ?= /usr/bin/python3
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build test sim roms vcd report lint fuzz clean help
+.PHONY: all deps configure build test sim roms vcd report lint fuzz fpga clean help
 
 all: build
 
@@ -17,6 +17,7 @@ help:
 	@echo "make vcd     write VCD timing diagrams to $(BUILD)/vcd and draw the 4-pixel one"
 	@echo "make report  measure and write $(BUILD)/report/report.md"
 	@echo "make lint    verilator -Wall lint and Yosys synthesis of rtl/"
+	@echo "make fpga    out-of-context place and route (nextpnr-ice40, HX8K and UP5K) into $(BUILD)/fpga; FPGA_ARGS adds scripts/fpga.sh options"
 	@echo "make fuzz    libFuzzer (clang-14) on the scene, ROM hex and CLI parsers, FUZZ_SECONDS in all (60)"
 	@echo "make clean   remove $(BUILD)"
 
@@ -49,6 +50,13 @@ report: build
 
 lint: build
 	cd $(BUILD) && ctest --output-on-failure -R '^rtl_(lint|yosys)'
+
+# Out-of-context place and route of specular_unit and specular_stream (harnesses in
+# rtl/fpga/) on the iCE40-HX8K and UP5K; prints and writes $(BUILD)/fpga/summary.md.
+# FPGA_ARGS passes options, e.g. FPGA_ARGS="--param CosAddrBits=9 --param CosRomFile=DIR/cos.hex".
+FPGA_ARGS ?=
+fpga: deps
+	bash scripts/fpga.sh --out $(BUILD)/fpga $(FPGA_ARGS)
 
 # libFuzzer targets of tests/fuzz, built with clang++-14 in $(BUILD)/fuzz (a CMake
 # configure of its own: the main build uses g++). `make test` replays their corpora.

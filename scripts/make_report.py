@@ -8,6 +8,7 @@ Every figure in the text is taken from the outputs of this run:
                               configurations (golden model), SPEC section 4 hard cases
   BUILD/bin/romgen + yosys    ROM images and ice40 cell counts per RTL configuration
   BUILD/bin/sim_regression    Verilator regression throughput (reduced random count)
+  scripts/fpga.sh             out-of-context place and route (nextpnr-ice40, HX8K and UP5K)
 Missing programs are reported in the text, not silently skipped.
 
 usage: scripts/make_report.py --build build --out build/report [--random N] [--jobs J]
@@ -223,32 +224,28 @@ class Report:
                 self.missing.append(f"synthesis of {name}: {r['error']}")
         return res
 
-    def pnr(self, addr_bits=(9, 10)):
-        """Place and route (nextpnr-ice40, HX8K) of the default logic with smaller ROM 12s:
-        the default 256-Kbit ROM 12 needs more block RAM than any iCE40 has."""
-        romgen = self.exe("romgen")
-        if not romgen:
-            self.missing.append("romgen was not built: no place and route")
+    def pnr(self):
+        """Out-of-context place and route (scripts/fpga.sh: harnesses rtl/fpga/, Yosys synth_ice40,
+        nextpnr-ice40) of the default specular_unit and specular_stream on the HX8K and the UP5K.
+        A configuration that does not fit is a row with fit = no, not a failure."""
+        if not shutil.which("nextpnr-ice40") or not shutil.which("yosys"):
+            self.missing.append("yosys or nextpnr-ice40 is not on PATH: no place and route")
             return []
-        rows = []
-        pat = re.compile(r"LUT4 (\d+), FF (\d+), SB_RAM40_4K (\d+), Fmax ([0-9.]+) MHz")
-        for bits in addr_bits:
-            log = os.path.join(self.logs, f"pnr_{bits}.log")
-            t0 = time.time()
-            try:
-                rc, _ = run(["bash", os.path.join(ROOT, "scripts", "synth_pnr.sh"), romgen, str(bits),
-                             os.path.join(self.out, "pnr", str(bits))], log, timeout=900)
-            except subprocess.TimeoutExpired:
-                rc = -1
-            self.timings[f"place and route, CosAddrBits={bits}"] = time.time() - t0
-            with open(log) as f:
-                m = pat.search(f.read()) if rc == 0 else None
-            if not m:
-                self.missing.append(f"place and route with CosAddrBits={bits} failed (see logs/pnr_{bits}.log)")
-                continue
-            rows.append({"cos_addr_bits": bits, "lut4": int(m[1]), "ff": int(m[2]), "bram": int(m[3]),
-                         "fmax_mhz": float(m[4])})
-        return rows
+        out = os.path.join(self.out, "fpga")
+        log = os.path.join(self.logs, "fpga.log")
+        t0 = time.time()
+        try:
+            rc, _ = run(["bash", os.path.join(ROOT, "scripts", "fpga.sh"), "--out", out], log, timeout=3600)
+        except subprocess.TimeoutExpired:
+            rc = -1
+        self.timings["place and route (scripts/fpga.sh)"] = time.time() - t0
+        try:
+            runs = json.load(open(os.path.join(out, "summary.json")))["runs"]
+        except (OSError, ValueError, KeyError):
+            runs = []
+        if rc != 0 or not runs:
+            self.missing.append(f"scripts/fpga.sh failed (exit {rc}), see logs/fpga.log")
+        return runs
 
     def sim(self):
         exe = self.exe("sim_regression")
@@ -609,16 +606,33 @@ class Report:
         else:
             w("\nCycles per pixel: not measured in this run (no regression).\n")
         if pnr:
-            w("Clock frequency after place and route (`scripts/synth_pnr.sh`: Yosys `synth_ice40`, nextpnr-ice40 "
-              "`--hx8k --package ct256 --seed 1`) of the default logic with ROM 12 regenerated with fewer address bits, "
-              "because the default 256-Kbit ROM 12 needs more block RAM than any iCE40 has (32 on the HX8K). At one "
-              "pixel per clock the pixel rate equals the clock.\n")
-            w("| ROM 12 address bits | LUT4 | FF | SB_RAM40_4K | Fmax (MHz) | pixels per second |")
-            w("|---|---|---|---|---|---|")
+            w("Out-of-context place and route of the default configuration (`scripts/fpga.sh`, `make fpga`; "
+              "harnesses with registered IO in `rtl/fpga/`): Yosys `synth_ice40` (`-dsp` on the UP5K), "
+              "nextpnr-ice40 with a fixed seed and the frequency target shown. LCs: logic cells used after "
+              "packing; FFs: Yosys flip-flop count; both include the harness (serial-in input register, output "
+              "register and XOR tree). Pixels per second: Fmax at one pixel per clock.\n")
+            w("| core | device | fit | LCs | FFs | BRAMs | DSPs | Fmax (MHz) | target (MHz) | pixels per second |")
+            w("|---|---|---|---|---|---|---|---|---|---|")
             for r in pnr:
-                w(f"| {r['cos_addr_bits']} | {r['lut4']} | {r['ff']} | {r['bram']} | {r['fmax_mhz']:.2f} | "
-                  f"{r['fmax_mhz'] * 1e6:.3g} |")
-            w("")
+                y, npr = r.get("yosys", {}), r.get("nextpnr", {})
+                fit = {True: "yes", False: "no"}.get(r.get("fit"), "error")
+                lc = r.get("luts")
+                lcs = f"{lc} / {npr['ICESTORM_LC']['available']}" if lc is not None and "ICESTORM_LC" in npr else "-"
+                bram = npr.get("ICESTORM_RAM", {}).get("used", y.get("bram")) if r.get("fit") else y.get("bram")
+                dsp = npr.get("ICESTORM_DSP", {}).get("used", y.get("dsp")) if r.get("fit") else y.get("dsp")
+                fm = r.get("fmax_mhz")
+                fms = "-" if fm is None else f"{fm:.2f}" + ("" if r.get("timing_met") else " (missed)")
+                w(f"| {r['core']} | {r['part']} | {fit} | {lcs} | {y.get('ff', '-')} | {bram} | {dsp} | {fms} | "
+                  f"{r['target_mhz']:g} | {'-' if fm is None else f'{fm * 1e6:.3g}'} |")
+            notes = []
+            for r in pnr:
+                if r.get("fit") is not True:
+                    notes.append(f"- {r['core']} on {r['part']}: {r.get('status')}: {r.get('reason', '')}")
+                cp = r.get("critical_path")
+                if cp:
+                    notes.append(f"- {r['core']} on {r['part']}: critical path {cp['total_ns']} ns from net "
+                                 f"`{cp['from_net']}` to net `{cp['to_net']}` (through {', '.join(cp.get('through', [])) or '-'})")
+            w("\n" + "\n".join(notes) + "\n" if notes else "")
         if hw:
             w("![hardware](hardware.png)\n")
 

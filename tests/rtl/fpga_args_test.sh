@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# ctest fpga_args: scripts/fpga.sh rejects bad arguments with exit 2 and a message naming
+# the argument and its allowed values, before running any tool (no place and route here).
+set -u
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
+fail=0
+expect() {  # expect REGEX ARGS...: exit 2 and stderr matching REGEX
+  local re=$1; shift
+  local err rc
+  err=$(bash "$root/scripts/fpga.sh" "$@" 2>&1 > /dev/null); rc=$?
+  if [ "$rc" != 2 ] || ! grep -Eq -- "$re" <<< "$err"; then
+    echo "FAIL: fpga.sh $* -> exit $rc (want 2), stderr: $err"; fail=1
+  else
+    echo "ok: fpga.sh $* -> exit 2: $(head -n 1 <<< "$err")"
+  fi
+}
+expect "--device must be one of hx8k, up5k, all \(got 'virtex7'\)" --device virtex7
+expect "--top must be one of unit, stream, all \(got 'core'\)" --top core
+expect "--param must be NAME=VALUE" --param CosAddrBits
+expect "--param name must be a Verilog identifier" --param 9x=1
+expect "string value must not contain quotes" --param 'CosRomFile=a"b'
+expect "--seed must be a non-negative integer" --seed abc
+expect "must be a positive number of MHz" --freq-hx8k 0
+expect "--out needs a value" --out
+expect "unknown argument '--bogus'" --bogus
+exit $fail
