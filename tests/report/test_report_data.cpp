@@ -63,8 +63,9 @@ TEST_CASE("report_data: hard cases are all present and finite", "[report_data]")
     CHECK(c.at("finite").get<bool>());
     const double C = c.at("C").get<double>(), peak = c.at("device_peak").get<double>();
     const double err = c.at("device_max_abs_error").get<double>();
-    // Multiplier 13 gives I = (Cq * cosk + 2^15) >> 16 with cosk <= 2^16 - 1, so no pixel
-    // exceeds the quantized C, which is within half an LSB of C (C < 2 in every case).
+    // Multiplier 13 gives I = (Cq * cosk + 2^(D-1)) >> D with cosk <= 2^D (cos^k <= 1, D the
+    // ROM 12 fraction bits), so no pixel exceeds the quantized C, which is within half an
+    // LSB of C (C < 2 in every case).
     CHECK(peak <= C + lsb / 2);
     // Device error against C cos^n(psi_i): the regression's absolute budget for the minimax
     // ROM (sim/README.md (c): 0.02 C + 1 LSB over the lobe). Measured worst here 0.0093 at
@@ -86,7 +87,8 @@ TEST_CASE("report_data: hard cases are all present and finite", "[report_data]")
   CHECK(by_name("NaN in N1").at("status") == "invalid_input");
   // cos t1 <= 0: the whole span is past pi/2 from the normal, the device outputs 0.
   CHECK(by_name("cos t1 <= 0 (H1 below the surface)").at("device_peak").get<double>() == 0.0);
-  // The highlight's peak inside the span: C = 1 reaches the top code, 32768 * 65535 + 2^15 >> 16 = 32768.
+  // The highlight's peak inside the span: C = 1 reaches C's code (cos^k(0) = 1 exactly, or
+  // 2^D - 1 in the direct table, which rounds back to C: 32768 (2^D - 1) + 2^(D-1) >> D = 32768).
   CHECK(by_name("psi crosses 0 inside the span (peak)").at("device_peak").get<double>() == 1.0);
 }
 
