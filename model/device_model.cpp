@@ -71,6 +71,22 @@ RegisterLoad load_registers(const ScanlineSetup& s, double n, int l, const Forma
   return out;
 }
 
+Format Format::patent() {
+  Format f;
+  f.coef_bits = 18;
+  f.coef_frac = 15;
+  f.cos_interp = false;
+  f.cos_addr_bits = 12;
+  f.cos_data_bits = 16;
+  f.banks = {1, 2, 4, 16};
+  f.bank_max_n = {1, 2, 6, 1000};
+  return f;
+}
+
+int64_t Format::half_pi_code() const {
+  return static_cast<int64_t>(std::ceil(std::ldexp(std::numbers::pi_v<long double> / 2.0L, angle_frac)));
+}
+
 double coef_value(uint32_t code, const Format& f) {
   return std::ldexp(static_cast<double>(code), -f.coef_frac) * (std::numbers::pi / 2.0);
 }
@@ -86,10 +102,17 @@ DeviceModel::DeviceModel(Format f, std::vector<uint32_t> coef_rom, std::vector<u
   require(f_.len_bits >= 1 && f_.len_bits <= 24, "len_bits");
   require(f_.coef_bits >= 4 && f_.coef_bits <= 31 && f_.coef_frac >= 3 && f_.coef_frac <= f_.coef_bits,
           "coef_bits/coef_frac");
-  require(f_.psi_mul_frac >= 0 && f_.psi_mul_frac <= 40 && f_.coef_bits + 3 + f_.psi_mul_frac <= 63,
-          "psi_mul_frac (product must fit 63 bits)");
+  require(f_.psi_mul_frac >= 0 && f_.psi_mul_frac <= f_.angle_frac && f_.coef_bits + 1 + f_.psi_mul_frac <= 63,
+          "psi_mul_frac (at most angle_frac; the product must fit 63 bits)");
+  require(f_.acc_bits >= f_.angle_frac + 2, "acc_bits must hold the sign and an integer bit");
   require(f_.cos_addr_bits >= 1 && f_.cos_addr_bits < f_.coef_frac + f_.psi_mul_frac, "cos_addr_bits");
-  require(f_.cos_data_bits >= 1 && f_.cos_data_bits <= 31 && f_.c_bits + f_.cos_data_bits <= 63, "cos_data_bits");
+  require(f_.cos_data_bits >= 1 && f_.cos_data_bits <= 30 && f_.c_bits + f_.cos_data_bits + 1 <= 63,
+          "cos_data_bits");
+  if (f_.cos_interp) {
+    require(f_.cos_frac_bits >= 1 && f_.cos_addr_bits + f_.cos_frac_bits <= f_.coef_frac + f_.psi_mul_frac,
+            "cos_frac_bits (address and step weight must fit in the fraction of zeta)");
+    require(f_.cos_delta_bits >= 1 && f_.cos_word_bits() <= 32, "cos_delta_bits (ROM 12 word at most 32 bits)");
+  }
   require(!f_.banks.empty() && f_.banks.size() == f_.bank_max_n.size(), "banks/bank_max_n sizes");
   for (size_t j = 0; j < f_.banks.size(); ++j) {
     require(f_.banks[j] >= 1, "bank k must be >= 1");
@@ -104,7 +127,12 @@ DeviceModel::DeviceModel(Format f, std::vector<uint32_t> coef_rom, std::vector<u
           "cos^k ROM has " + std::to_string(cos_rom_.size()) + " words, expected " +
               std::to_string(f_.cos_rom_depth()));
   for (uint32_t w : coef_rom_) require((static_cast<uint64_t>(w) >> f_.coef_bits) == 0, "coefficient word too wide");
-  for (uint32_t w : cos_rom_) require((static_cast<uint64_t>(w) >> f_.cos_data_bits) == 0, "cos^k word too wide");
+  for (uint32_t w : cos_rom_) require((static_cast<uint64_t>(w) >> f_.cos_word_bits()) == 0, "cos^k word too wide");
+  if (f_.cos_interp)
+    for (uint32_t w : cos_rom_)
+      require((w >> f_.cos_delta_bits) <= (1U << f_.cos_data_bits) &&
+                  (w & ((1U << f_.cos_delta_bits) - 1)) <= (w >> f_.cos_delta_bits),
+              "cos^k word: value above 1 or step below 0");
 }
 
 int DeviceModel::bank_of(uint32_t n) const {
@@ -129,20 +157,36 @@ PixelTrace DeviceModel::trace(const Registers& raw, int i) const {
   PixelTrace t;
   // Reg 8 after i additions of reg 2 (adder 6), wrapping at acc_bits like the hardware.
   t.psi = sign_extend(r.psi0 + static_cast<int64_t>(i) * r.dpsi, f_.acc_bits);
-  const uint64_t mag = t.psi < 0 ? static_cast<uint64_t>(-t.psi) : static_cast<uint64_t>(t.psi);
-  // |psi| >= 8 rad is always past pi/2 / a because a >= pi/16 (romgen enforces coef >= 1/8).
-  t.far = (mag >> (f_.angle_frac + 3)) != 0;
+  const uint64_t acc_mask = (1ULL << f_.acc_bits) - 1;
+  const bool neg = t.psi < 0;
+  // One's complement: no carry chain in hardware; for negative psi it is |psi| - 1 code.
+  t.abs_psi = neg ? (~static_cast<uint64_t>(t.psi)) & acc_mask : static_cast<uint64_t>(t.psi);
+  const uint64_t half_pi = static_cast<uint64_t>(f_.half_pi_code());
+  t.far = neg ? t.abs_psi + 1 >= half_pi : t.abs_psi >= half_pi;  // exactly |psi| >= pi/2
   t.bank = bank_of(r.n);
   if (t.far || t.bank < 0) return t;
-  t.abs_psi_t = f_.psi_mul_frac <= f_.angle_frac ? mag >> (f_.angle_frac - f_.psi_mul_frac)
-                                                  : mag << (f_.psi_mul_frac - f_.angle_frac);
+  t.abs_psi_t = t.abs_psi >> (f_.angle_frac - f_.psi_mul_frac);  // < 2: 1 integer bit
   t.coef = coef_rom_[r.n];
   t.zeta = static_cast<uint64_t>(t.coef) * t.abs_psi_t;  // multiplier 11
-  const int drop = f_.coef_frac + f_.psi_mul_frac - f_.cos_addr_bits;
-  t.addr = (t.zeta + (1ULL << (drop - 1))) >> drop;  // round half up
-  t.overflow = (t.addr >> f_.cos_addr_bits) != 0;
-  if (t.overflow) return t;
-  t.cosk = cos_rom_[(static_cast<size_t>(t.bank) << f_.cos_addr_bits) + t.addr];
+  const int zf = f_.coef_frac + f_.psi_mul_frac;
+  if (f_.cos_interp) {
+    t.overflow = (t.zeta >> zf) != 0;
+    if (t.overflow) return t;
+    const int sa = zf - f_.cos_addr_bits;
+    t.addr = (t.zeta >> sa) & ((1ULL << f_.cos_addr_bits) - 1);
+    t.frac = static_cast<uint32_t>((t.zeta >> (sa - f_.cos_frac_bits)) & ((1ULL << f_.cos_frac_bits) - 1));
+    t.word = cos_rom_[(static_cast<size_t>(t.bank) << f_.cos_addr_bits) + t.addr];
+    const uint64_t v = t.word >> f_.cos_delta_bits;
+    const uint64_t d = t.word & ((1ULL << f_.cos_delta_bits) - 1);
+    t.cosk = static_cast<uint32_t>(v - ((d * t.frac + (1ULL << (f_.cos_frac_bits - 1))) >> f_.cos_frac_bits));
+  } else {
+    const int drop = zf - f_.cos_addr_bits;
+    t.addr = (t.zeta + (1ULL << (drop - 1))) >> drop;  // round half up
+    t.overflow = (t.addr >> f_.cos_addr_bits) != 0;
+    if (t.overflow) return t;
+    t.word = cos_rom_[(static_cast<size_t>(t.bank) << f_.cos_addr_bits) + t.addr];
+    t.cosk = t.word;
+  }
   // Multiplier 13, round half up back to the format of C.
   const uint64_t p = static_cast<uint64_t>(r.c) * t.cosk;
   t.intensity = static_cast<uint32_t>((p + (1ULL << (f_.cos_data_bits - 1))) >> f_.cos_data_bits);

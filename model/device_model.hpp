@@ -7,16 +7,25 @@
 //
 // Datapath, per pixel (block numbers of the patent):
 //   reg 8 (accumulator)  psi   signed AccBits, AngleFrac fraction bits; psi0 then psi + dpsi
-//   |psi|                      cos is even; |psi| >= 8 rad  -> pixel is 0 ("far")
-//   multiplier 11        zeta  = coef(n) * |psi|_t  where |psi|_t keeps 3 integer bits and
+//   |psi|                      one's complement magnitude: psi >= 0 ? psi : ~psi (= |psi| - 1
+//                              code; cos is even, the code is 2^-AngleFrac rad below |psi|)
+//   far                        |psi| >= pi/2 exactly (N.H < 0 there, the reference is 0):
+//                              |psi| code >= ceil(pi/2 * 2^AngleFrac)  -> pixel is 0
+//   multiplier 11        zeta  = coef(n) * |psi|_t where |psi|_t keeps 1 integer bit and
 //                              PsiMulFrac fraction bits (truncated) and coef is a(n)*2/pi
 //                              (unsigned, CoefBits, CoefFrac fraction bits), so zeta is in
-//                              quarter turns: zeta >= 1 means a*|psi| >= pi/2
-//   ROM 12 address             addr = round-half-up(zeta * 2^CosAddrBits);
-//                              addr >= 2^CosAddrBits -> pixel is 0
-//   ROM 12               cosk  = cos_k_rom[bank * 2^CosAddrBits + addr], CosDataBits fraction
-//                              bits, entry = min(round(cos^k(addr * pi/2 / 2^CosAddrBits) * 2^CosDataBits),
-//                              2^CosDataBits - 1)   (cos^k(0) = 1 saturates deliberately)
+//                              quarter turns: zeta >= 1 means a*|psi| >= pi/2 -> pixel is 0
+//   ROM 12, interpolated (cos_interp, the default build):
+//                        addr  = the CosAddrBits bits of zeta below the binary point,
+//                        t     = the next CosFracBits bits (the rest is truncated);
+//                        word  = cos_k_rom[bank * 2^CosAddrBits + addr] = {v, d}:
+//                              v = round(cos^k(addr * h) * 2^CosDataBits), h = pi/2 / 2^CosAddrBits
+//                              (CosDataBits + 1 bits: cos^k(0) = 1 is exact), d = v - v(addr + 1)
+//                              (CosDeltaBits bits, v(2^CosAddrBits) = 0)
+//                        cosk  = v - ((d * t + 2^(CosFracBits-1)) >> CosFracBits)
+//   ROM 12, direct (the patent's table, Format::patent()):
+//                        addr  = round-half-up(zeta * 2^CosAddrBits), >= 2^CosAddrBits -> 0
+//                        cosk  = min(round(cos^k(addr * h) * 2^CosDataBits), 2^CosDataBits - 1)
 //   multiplier 13        I     = (C * cosk + 2^(CosDataBits-1)) >> CosDataBits   (same format as C)
 //   decoder 10           bank  from n (bank_max_n table); n = 0 or n > 1000 -> every pixel 0
 #pragma once
@@ -29,22 +38,37 @@
 
 namespace specular::device {
 
+// The default build: interpolated ROM 12 of 8 banks x 256 entries (61,440 bits), minimax
+// coefficients, decoder table derived from the bank set (derive_bank_max_n). Format::patent()
+// is the patent's own configuration: direct 4096-entry table, banks {1, 2, 4, 16}, decoder
+// 1 | 2 | 3..6 | 7..1000 (with maclaurin coefficients a = sqrt(n/k) in ROM 9).
 struct Format {
   int c_bits = 16, c_frac = 15;            // reg 1 and the output: unsigned, 0 <= C < 2
   int angle_bits = 32, angle_frac = 28;    // reg 2 (dpsi) and reg 3 (psi0): signed radians
   int acc_bits = 44;                       // reg 8: angle_bits + 12, cannot overflow over 2048 adds
   int n_bits = 10;                         // reg 4
   int len_bits = 11;                       // counter 5
-  int coef_bits = 18, coef_frac = 15;      // ROM 9 words: a(n) * 2/pi
+  int coef_bits = 21, coef_frac = 18;      // ROM 9 words: a(n) * 2/pi
   int psi_mul_frac = 20;                   // fraction bits of |psi| kept at multiplier 11
-  int cos_addr_bits = 12;                  // ROM 12 address bits per bank
-  int cos_data_bits = 16;                  // ROM 12 word width (all fraction bits)
-  std::vector<int> banks{1, 2, 4, 16};     // k of each ROM 12 bank
-  std::vector<int> bank_max_n{1, 2, 6, 1000};  // decoder 10: bank j serves bank_max_n[j-1] < n <= bank_max_n[j]
+  bool cos_interp = true;                  // ROM 12 interpolated (false: direct table)
+  int cos_addr_bits = 8;                   // ROM 12 entries per bank: 2^cos_addr_bits
+  int cos_data_bits = 18;                  // fraction bits of cos^k (ROM 12 value / direct word)
+  int cos_delta_bits = 12;                 // interpolated: width of the step d to the next entry
+  int cos_frac_bits = 12;                  // interpolated: bits of zeta that weight the step
+  std::vector<int> banks{1, 2, 3, 4, 6, 8, 12, 16};            // k of each ROM 12 bank
+  std::vector<int> bank_max_n{1, 2, 3, 4, 6, 9, 13, 1000};     // decoder 10: bank j serves
+                                                               // bank_max_n[j-1] < n <= bank_max_n[j]
+
+  // The patent's configuration (bit-exact build option, see the header comment).
+  static Format patent();
 
   int max_n() const { return 1000; }
   int coef_rom_depth() const { return 1 << n_bits; }
   int cos_rom_depth() const { return static_cast<int>(banks.size()) << cos_addr_bits; }
+  // Bits of one ROM 12 word: {v, d} interpolated, the saturating value direct.
+  int cos_word_bits() const { return cos_interp ? cos_data_bits + 1 + cos_delta_bits : cos_data_bits; }
+  // ceil(pi/2 * 2^angle_frac): |psi| codes at or above it are at or past pi/2.
+  int64_t half_pi_code() const;
 };
 
 // Register contents as the device holds them (raw two's complement / unsigned codes).
@@ -84,14 +108,17 @@ RegisterLoad load_registers(const ScanlineSetup& s, double n, int l, const Forma
 // for the quantization analysis. Fields after the one that zeroed the pixel keep 0.
 struct PixelTrace {
   int64_t psi = 0;          // reg 8: psi0 + i*dpsi, acc_bits two's complement, angle_frac bits
-  bool far = false;         // |psi| >= 8 rad: pixel 0 without using the multiplier
-  uint64_t abs_psi_t = 0;   // |psi| truncated to 3 integer + psi_mul_frac fraction bits
+  uint64_t abs_psi = 0;     // one's complement magnitude (psi >= 0 ? psi : ~psi)
+  bool far = false;         // |psi| >= pi/2: pixel 0 without using the multiplier
+  uint64_t abs_psi_t = 0;   // |psi| truncated to 1 integer + psi_mul_frac fraction bits
   int bank = -1;            // decoder 10; -1: n = 0 or n > max_n (pixel 0)
   uint32_t coef = 0;        // ROM 9 word at address n
   uint64_t zeta = 0;        // coef * |psi|_t, coef_frac + psi_mul_frac fraction bits, quarter turns
-  uint64_t addr = 0;        // round-half-up(zeta * 2^cos_addr_bits), before the overflow test
-  bool overflow = false;    // addr >= 2^cos_addr_bits (a|psi| >= pi/2): pixel 0
-  uint32_t cosk = 0;        // ROM 12 word
+  uint64_t addr = 0;        // ROM 12 address (direct: rounded, before the overflow test)
+  uint32_t frac = 0;        // interpolated: the step weight t
+  bool overflow = false;    // a|psi| >= pi/2: pixel 0
+  uint32_t word = 0;        // ROM 12 word
+  uint32_t cosk = 0;        // cos^k, cos_data_bits fraction bits (interpolated or direct)
   uint32_t intensity = 0;   // multiplier 13 output
 };
 

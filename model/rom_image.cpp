@@ -1,6 +1,8 @@
 // ROM images and hex files; the format is documented in rom_image.hpp and roms/README.md.
 #include "rom_image.hpp"
 
+#include "decoder_table.hpp"
+
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -18,7 +20,46 @@ std::string cos_rom_file_name(const device::Format& f) {
     name += '_';
     name += std::to_string(k);
   }
+  // The interpolated table is a different format from the patent's direct one.
+  if (f.cos_interp) name += "_interp" + std::to_string(1 << f.cos_addr_bits);
   return name + ".hex";
+}
+
+std::string BuildConfig::coef_hex() const {
+  std::string p = policy;
+  for (char& ch : p)
+    if (ch == ':') ch = '_';
+  return dir + "/coef_" + p + ".hex";
+}
+std::string BuildConfig::cos_hex() const { return dir + "/" + cos_rom_file_name(f); }
+
+const std::vector<BuildConfig>& build_configs() {
+  static const std::vector<BuildConfig> configs = [] {
+    std::vector<BuildConfig> v;
+    v.push_back({"default", device::Format{}, "minimax", "roms"});
+    v.push_back({"patent", device::Format::patent(), "maclaurin", "roms/patent"});
+    // The default datapath with the patent's bank set: what the bank set buys.
+    device::Format b4;
+    b4.banks = {1, 2, 4, 16};
+    b4.bank_max_n = derive_bank_max_n(b4.banks, parse_coef_spec("minimax"));
+    v.push_back({"banks4-interp", b4, "minimax", "roms/variants/banks4-interp"});
+    // Half the ROM 12 entries: what the table size buys.
+    device::Format i128;
+    i128.cos_addr_bits = 7;
+    i128.cos_delta_bits = 13;
+    v.push_back({"interp128", i128, "minimax", "roms/variants/interp128"});
+    return v;
+  }();
+  return configs;
+}
+
+const BuildConfig& build_config(const std::string& name) {
+  std::string known;
+  for (const auto& c : build_configs()) {
+    if (c.name == name) return c;
+    known += (known.empty() ? "" : ", ") + c.name;
+  }
+  throw std::invalid_argument("unknown hardware configuration '" + name + "' (known: " + known + ")");
 }
 
 uint32_t coef_word(double a, const device::Format& f) {
@@ -57,18 +98,29 @@ std::vector<uint32_t> coef_rom_image(const device::Format& f, const CoefSpec& sp
 
 std::vector<uint32_t> cos_rom_image(const device::Format& f) {
   const int per_bank = 1 << f.cos_addr_bits;
-  const long double top = std::ldexp(1.0L, f.cos_data_bits) - 1.0L;
+  const long double one = std::ldexp(1.0L, f.cos_data_bits);
   std::vector<uint32_t> img;
   img.reserve(f.cos_rom_depth());
   for (int k : f.banks) {
-    for (int addr = 0; addr < per_bank; ++addr) {
-      // long double so that the rounding of the committed words does not hinge on the last
-      // bit of a double cos().
+    // long double so that the rounding of the committed words does not hinge on the last
+    // bit of a double cos(); entry per_bank (x = pi/2) is 0 exactly.
+    auto entry = [&](int addr) -> long double {
+      if (addr >= per_bank) return 0.0L;
       const long double x = std::numbers::pi_v<long double> / 2.0L * addr / per_bank;
-      long double v = std::round(std::pow(std::cos(x), static_cast<long double>(k)) *
-                                 std::ldexp(1.0L, f.cos_data_bits));
-      if (v > top) v = top;  // cos^k(0) = 1 saturates deliberately
-      img.push_back(static_cast<uint32_t>(v));
+      return std::round(std::pow(std::cos(x), static_cast<long double>(k)) * one);
+    };
+    for (int addr = 0; addr < per_bank; ++addr) {
+      const long double v = entry(addr);
+      if (!f.cos_interp) {
+        img.push_back(static_cast<uint32_t>(std::min(v, one - 1.0L)));  // cos^k(0) = 1 saturates (patent table)
+        continue;
+      }
+      const long double d = v - entry(addr + 1);
+      if (d < 0 || d >= std::ldexp(1.0L, f.cos_delta_bits))
+        throw std::invalid_argument("ROM 12 bank k = " + std::to_string(k) + ", entry " + std::to_string(addr) +
+                                    ": step " + std::to_string(static_cast<double>(d)) + " does not fit " +
+                                    std::to_string(f.cos_delta_bits) + " bits (--cos-delta-bits)");
+      img.push_back((static_cast<uint32_t>(v) << f.cos_delta_bits) | static_cast<uint32_t>(d));
     }
   }
   return img;
@@ -147,7 +199,7 @@ std::vector<uint32_t> read_hex(const std::string& path, int bits, int depth) {
 device::DeviceModel load_device_model(const device::Format& f, const std::string& coef_hex,
                                       const std::string& cos_hex) {
   return device::DeviceModel(f, read_hex(coef_hex, f.coef_bits, f.coef_rom_depth()),
-                             read_hex(cos_hex, f.cos_data_bits, f.cos_rom_depth()));
+                             read_hex(cos_hex, f.cos_word_bits(), f.cos_rom_depth()));
 }
 
 }  // namespace specular

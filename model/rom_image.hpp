@@ -8,8 +8,11 @@
 //   ROM 9  word n (0 <= n < 2^n_bits): round(a(n) * 2/pi * 2^coef_frac), a(n) from the
 //          coefficient policy for k = bank k of n; 0 where n = 0 or n > max_n (unused:
 //          decoder 10 forces those pixels to 0).
-//   ROM 12 word bank * 2^cos_addr_bits + addr:
-//          min(round(cos^k(addr * pi/2 / 2^cos_addr_bits) * 2^cos_data_bits), 2^cos_data_bits - 1)
+//   ROM 12 word bank * 2^cos_addr_bits + addr, h = pi/2 / 2^cos_addr_bits:
+//     interpolated  {v, d}: v = round(cos^k(addr * h) * 2^cos_data_bits) in the top
+//                   cos_data_bits + 1 bits, d = v - v(addr + 1) in the low cos_delta_bits
+//                   (v(2^cos_addr_bits) = 0); a step that does not fit throws
+//     direct        min(round(cos^k(addr * h) * 2^cos_data_bits), 2^cos_data_bits - 1)
 #pragma once
 
 #include "coefficients.hpp"
@@ -22,16 +25,35 @@
 namespace specular {
 
 // Default file names (relative to the repository root), used by rtl/ defaults, romgen and sim/.
-inline constexpr const char* kCoefMaclaurinHex = "roms/coef_maclaurin.hex";
+// Default build (Format{}): minimax ROM 9, interpolated ROM 12 of banks {1,2,3,4,6,8,12,16}.
 inline constexpr const char* kCoefMinimaxHex = "roms/coef_minimax.hex";
-inline constexpr const char* kCosHex = "roms/cos_k_1_2_4_16.hex";
+inline constexpr const char* kCosHex = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex";
+// The patent's build (Format::patent()): maclaurin ROM 9, direct ROM 12 of banks {1,2,4,16}.
+inline constexpr const char* kPatentCoefHex = "roms/patent/coef_maclaurin.hex";
+inline constexpr const char* kPatentCosHex = "roms/patent/cos_k_1_2_4_16.hex";
 
-// "cos_k_1_2_4_16.hex" for the bank set of `f`.
+// The hardware configurations this repository builds, simulates (sim_regression verilates
+// each with its parameters) and reports: name, formats, ROM 9 policy, and where romgen
+// writes their ROM files (`romgen --all`). The first is the RTL default, the second the
+// patent's own configuration.
+struct BuildConfig {
+  std::string name;
+  device::Format f;
+  std::string policy;  // ROM 9 coefficient policy (parse_coef_spec)
+  std::string dir;     // relative to the repository root
+  std::string coef_hex() const;
+  std::string cos_hex() const;
+};
+const std::vector<BuildConfig>& build_configs();
+// Throws std::invalid_argument naming the known configurations.
+const BuildConfig& build_config(const std::string& name);
+
+// "cos_k_1_2_4_16.hex" (direct) or "cos_k_1_2_4_16_interp256.hex" for the ROM 12 of `f`.
 std::string cos_rom_file_name(const device::Format& f);
 
 // ROM 9 word for coefficient a: round(a * 2/pi * 2^coef_frac). Throws std::invalid_argument
-// when a*2/pi is not in [1/8, 2^(coef_bits - coef_frac)): below 1/8 the device's
-// "|psi| >= 8 rad -> 0" shortcut would be wrong, above it the word does not fit.
+// when a*2/pi is not in [1/8, 2^(coef_bits - coef_frac)): above it the word does not fit;
+// below 1/8 no policy gives a sane coefficient (a < pi/16 would spread the lobe far past pi/2).
 uint32_t coef_word(double a, const device::Format& f);
 
 // Throws std::invalid_argument (naming n and k) when a policy gives an unusable coefficient.

@@ -1,126 +1,159 @@
 // Copyright (c) the specular_device authors.
 //
-// Multiplier 11 of patent UA 71489: zeta = a(n) * psi, turned into the ROM 12 address.
-// Two pipeline stages (latency 2): |psi| and its truncation are registered before the
-// multiplier, the rounded address and the zero flag after it. The split lifts the
-// iCE40-HX8K Fmax from 39 to about 55 MHz (scripts/synth_pnr.sh).
+// Multiplier 11 of patent UA 71489: zeta = a(n) * |psi|, turned into the ROM 12 address.
 // Bit-exact contract (model/device_model.hpp):
-//   |psi|            cos is even, so only the magnitude of register 8 matters
-//   far              |psi| >= 8 rad: the pixel is 0 (and |psi| fits 3 integer bits below)
-//   psi_t            |psi| truncated to 3 integer and PsiMulFrac fraction bits
-//   zeta             coef * psi_t, coef = a(n) * 2/pi from ROM 9 (CoefFrac fraction bits),
-//                    so zeta is in quarter turns (zeta >= 1 means a*|psi| >= pi/2)
-//   addr             round-half-up(zeta * 2^CosAddrBits)
-//   zero             far, or addr >= 2^CosAddrBits (zeta at or past pi/2, where ROM 12
-//                    has no entry: erratum of SPEC 5), or n invalid (decoder 10)
+//   |psi|   one's complement of register 8 (psi >= 0 ? psi : ~psi, one code below |psi| for
+//           negative psi): cos is even, and no carry chain is spent on the negation
+//   far     |psi| >= pi/2 exactly (the comparison allows for the one's complement): N.H < 0
+//           there and the reference is 0 (SPEC 5 erratum: where a(n) < 1 the lobe of
+//           cos^k(a psi) would otherwise run past pi/2)
+//   psi_t   |psi| truncated to 1 integer and PsiMulFrac fraction bits (|psi| < pi/2 < 2)
+//   zeta    coef * psi_t, coef = a(n) * 2/pi from ROM 9 (CoefFrac fraction bits), so zeta is
+//           in quarter turns: zeta >= 1 means a*|psi| >= pi/2, where ROM 12 has no entry
+//   interpolated ROM 12 (CosInterp = 1): addr = the CosAddrBits bits of zeta below the binary
+//           point, frac = the next CosFracBits bits (the rest truncated); zero when zeta >= 1
+//   direct ROM 12 (CosInterp = 0, the patent): addr = round-half-up(zeta * 2^CosAddrBits),
+//           zero when that reaches 2^CosAddrBits
+//   zero    far, or past a quarter turn, or n invalid (decoder 10)
+// Pipeline, every register enabled by en_i (stall): stage 1 |psi| and the coefficient;
+// stages 2 .. 1 + MulStages the multiplier tree (specular_pipe_mul) with far and n_valid
+// beside it; then the address register. Latency = Latency (2 + MulStages) clocks from the
+// pixel in register 8 to addr_o / frac_o / zero_o.
 
 module specular_angle_mul #(
   parameter int AccBits     = 44,
   parameter int AngleFrac   = 28,
-  parameter int CoefBits    = 18,
-  parameter int CoefFrac    = 15,
+  parameter int CoefBits    = 21,
+  parameter int CoefFrac    = 18,
   parameter int PsiMulFrac  = 20,
-  parameter int CosAddrBits = 12
+  parameter bit CosInterp   = 1'b1,
+  parameter int CosAddrBits = 8,
+  parameter int CosFracBits = 12
 ) (
   input  logic                          clk_i,
   input  logic                          rst_ni,
   input  logic                          en_i,      // pipeline advance (clock enable)
   input  logic signed [AccBits-1:0]     psi_i,     // register 8
-  input  logic        [CoefBits-1:0]    coef_i,    // ROM 9
-  input  logic                          n_valid_i, // decoder 10, for the pixel in stage 1
+  input  logic        [CoefBits-1:0]    coef_i,    // ROM 9, this pixel's span
+  input  logic                          n_valid_i, // decoder 10, this pixel's span
   output logic        [CosAddrBits-1:0] addr_o,    // ROM 12 address within the bank
+  output logic        [CosFracBits-1:0] frac_o,    // interpolation weight (0 when direct)
   output logic                          zero_o     // this pixel is 0
 );
 
-  localparam int PsiTBits  = 3 + PsiMulFrac;            // |psi| < 8 rad
+  localparam int PsiTBits  = 1 + PsiMulFrac;
+  localparam int MulStages = (PsiTBits > 1) ? $clog2(PsiTBits) : 1;
   localparam int ZetaBits  = CoefBits + PsiTBits;
   localparam int ZetaFrac  = CoefFrac + PsiMulFrac;
   localparam int DropBits  = ZetaFrac - CosAddrBits;    // bits below the ROM address
-  localparam int AddrWBits = ZetaBits - DropBits + 1;   // rounded address, with carry
+  // ceil(pi/2 * 2^AngleFrac) from pi/2 * 2^62 (pi is irrational, so floor + 1 is the ceiling).
+  localparam logic [63:0] PiHalfQ62 = 64'h6487_ED51_10B4_611A;
+  localparam logic [AccBits-1:0] HalfPiCode = AccBits'((PiHalfQ62 >> (62 - AngleFrac)) + 64'd1);
 
   if (PsiMulFrac > AngleFrac) begin : gen_frac_check
     $error("specular_angle_mul: PsiMulFrac must not exceed AngleFrac");
   end
-  if (AccBits < AngleFrac + 4) begin : gen_acc_check
-    $error("specular_angle_mul: AccBits must hold the sign and 3 integer bits");
+  if (AngleFrac > 62 || AccBits < AngleFrac + 2) begin : gen_acc_check
+    $error("specular_angle_mul: AccBits must hold the sign and an integer bit, AngleFrac <= 62");
   end
   if (DropBits < 1) begin : gen_drop_check
     $error("specular_angle_mul: CoefFrac + PsiMulFrac must exceed CosAddrBits");
   end
-  if (AddrWBits <= CosAddrBits) begin : gen_addr_check
-    $error("specular_angle_mul: zeta too narrow for the ROM address");
+  if (CosInterp && DropBits < CosFracBits) begin : gen_interp_check
+    $error("specular_angle_mul: zeta has too few fraction bits for CosAddrBits + CosFracBits");
   end
 
-  // |psi|: two's complement negate when negative. Register 8 never holds the most
-  // negative code (see the accumulator's width), so the magnitude fits AccBits - 1 bits.
-  logic [AccBits-1:0] psi_abs;
-  assign psi_abs = psi_i[AccBits-1] ? AccBits'(-psi_i) : AccBits'(psi_i);
-
-  logic far;
-  assign far = |psi_abs[AccBits-1:AngleFrac+3];
-
-  logic [PsiTBits-1:0] psi_t;
-  assign psi_t = psi_abs[AngleFrac+2 -: PsiTBits];      // truncation of low fraction bits
-
-  // Stage 1 registers: |psi|_t, the far flag, and the coefficient of this pixel's span
-  // (the copy also takes the block-RAM output delay of ROM 9 off the multiplier path).
-  logic [PsiTBits-1:0] psi_t_q;
-  logic                far_q;
+  // ---- Stage 1: one's complement magnitude, coefficient copy (off the ROM 9 output).
+  logic [AccBits-1:0] ones_d, ones_q;
+  logic               neg_q;
   logic [CoefBits-1:0] coef_q;
+  assign ones_d = psi_i ^ {AccBits{psi_i[AccBits-1]}};
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      psi_t_q <= '0;
-      far_q   <= 1'b0;
-      coef_q  <= '0;
-    end else if (en_i) begin
-      psi_t_q <= psi_t;
-      far_q   <= far;
-      coef_q  <= coef_i;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      ones_q <= ones_d;
+      neg_q  <= psi_i[AccBits-1];
+      coef_q <= coef_i;
     end
   end
 
-  // Stage 2: the multiplier proper.
+  // ---- Stages 2 .. 1 + MulStages: the multiplier tree; far and n_valid beside it.
+  logic far;
+  assign far = neg_q ? (ones_q >= HalfPiCode - AccBits'(1)) : (ones_q >= HalfPiCode);
+
+  logic [PsiTBits-1:0] psi_t;
+  assign psi_t = ones_q[AngleFrac -: PsiTBits];
+
   logic [ZetaBits-1:0] zeta;
-  assign zeta = ZetaBits'(coef_q) * ZetaBits'(psi_t_q);
+  specular_pipe_mul #(
+    .ABits (CoefBits),
+    .BBits (PsiTBits)
+  ) u_tree (
+    .clk_i (clk_i),
+    .en_i  (en_i),
+    .a_i   (coef_q),
+    .b_i   (psi_t),
+    .p_o   (zeta)
+  );
 
-  // Round half up: add half an address step, keep the bits from the address LSB up.
-  logic [ZetaBits:0] zeta_rnd;
-  assign zeta_rnd = {1'b0, zeta} + ((ZetaBits + 1)'(1) << (DropBits - 1));
+  logic n_valid_1, far_m, n_valid_m;
+  specular_delay #(.Width (1), .Depth (1)) u_nvalid_1 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (en_i), .d_i (n_valid_i), .q_o (n_valid_1));
+  specular_delay #(.Width (2), .Depth (MulStages)) u_flags_m (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (en_i), .d_i ({far, n_valid_1}), .q_o ({far_m, n_valid_m}));
 
-  logic [AddrWBits-1:0] addr_w;
-  assign addr_w = zeta_rnd[ZetaBits:DropBits];
-
-  logic past_quarter;
-  assign past_quarter = |addr_w[AddrWBits-1:CosAddrBits];
-
+  // ---- Last stage: ROM 12 address, interpolation weight, zero flag.
   logic [CosAddrBits-1:0] addr_d, addr_q;
-  logic                   zero_d, zero_q;
+  logic [CosFracBits-1:0] frac_d, frac_q;
+  logic                   past_quarter, zero_q;
 
-  assign addr_d = addr_w[CosAddrBits-1:0];
-  assign zero_d = far_q | past_quarter | ~n_valid_i;   // n_valid_i is aligned with stage 1
+  if (CosInterp) begin : gen_interp
+    assign past_quarter = |zeta[ZetaBits-1:ZetaFrac];
+    assign addr_d       = zeta[ZetaFrac-1 -: CosAddrBits];
+    assign frac_d       = zeta[DropBits-1 -: CosFracBits];
+    if (DropBits > CosFracBits) begin : gen_unused
+      logic unused_zeta_lsbs;
+      assign unused_zeta_lsbs = ^zeta[DropBits-CosFracBits-1:0];
+    end
+  end else begin : gen_direct
+    localparam int AddrWBits = ZetaBits - DropBits + 1;
+    logic [ZetaBits:0]    zeta_rnd;
+    logic [AddrWBits-1:0] addr_w;
+    assign zeta_rnd     = {1'b0, zeta} + ((ZetaBits + 1)'(1) << (DropBits - 1));  // round half up
+    assign addr_w       = zeta_rnd[ZetaBits:DropBits];
+    assign past_quarter = |addr_w[AddrWBits-1:CosAddrBits];
+    assign addr_d       = addr_w[CosAddrBits-1:0];
+    assign frac_d       = '0;
+    logic unused_zeta_lsbs;
+    assign unused_zeta_lsbs = ^zeta_rnd[DropBits-1:0];
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      addr_q <= addr_d;
+      frac_q <= frac_d;
+    end
+  end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      addr_q <= '0;
       zero_q <= 1'b0;
     end else if (en_i) begin
-      addr_q <= addr_d;
-      zero_q <= zero_d;
+      zero_q <= far_m | past_quarter | ~n_valid_m;
     end
   end
 
   assign addr_o = addr_q;
+  assign frac_o = frac_q;
   assign zero_o = zero_q;
 
-  // The rounding remainder below the address LSB is discarded.
-  logic unused_zeta_lsbs;
-  assign unused_zeta_lsbs = ^zeta_rnd[DropBits-1:0];
-
-  // Bits of |psi| below the multiplier's precision are deliberately dropped.
-  if (AngleFrac > PsiMulFrac) begin : gen_unused
-    logic unused_psi_lsbs;
-    assign unused_psi_lsbs = ^psi_abs[AngleFrac-PsiMulFrac-1:0];
+  // Bits of |psi| past pi/2 only matter through `far`; bits below the multiplier's
+  // precision are deliberately dropped.
+  logic unused_ones;
+  if (AngleFrac > PsiMulFrac) begin : gen_unused_low
+    assign unused_ones = ^ones_q[AngleFrac-PsiMulFrac-1:0];
+  end else begin : gen_no_low
+    assign unused_ones = 1'b0;
   end
 
 endmodule

@@ -14,7 +14,7 @@
 
 module specular_coef_rom #(
   parameter int NBits       = 10,
-  parameter int CoefBits    = 18,
+  parameter int CoefBits    = 21,
   parameter     CoefRomFile = "roms/coef_minimax.hex"
 ) (
   input  logic                clk_i,
@@ -29,7 +29,7 @@ module specular_coef_rom #(
   logic [CoefBits-1:0] coef_q;
 
   initial begin
-    $readmemh(CoefRomFile, mem);
+    $readmemh(CoefRomFile, mem, 0, Depth - 1);
   end
 
   always_ff @(posedge clk_i) begin

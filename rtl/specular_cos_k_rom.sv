@@ -1,34 +1,57 @@
 // Copyright (c) the specular_device authors.
 //
 // cos^k ROM, block 12 of patent UA 71489 (the "first ROM"): NumBanks banks of
-// 2^CosAddrBits words, one bank per k of the bank set (default {1, 2, 4, 16}). The
-// decoder's one-hot select (block 10) picks the bank through the top address bits.
-// Word bank * 2^CosAddrBits + i holds
-//   min(round(cos^k(i * pi/2 / 2^CosAddrBits) * 2^CosDataBits), 2^CosDataBits - 1),
-// so cos^k(0) = 1 saturates deliberately to the largest code.
+// 2^CosAddrBits words, one bank per k of the bank set; the decoder's one-hot select
+// (block 10) picks the bank through the top address bits. h = pi/2 / 2^CosAddrBits.
 //
-// Erratum (SPEC 5): the ROM covers only [0, pi/2). Multiplier 11 feeds it |zeta| (cos is
-// even) and flags zeta >= pi/2 as zero, so no address outside a bank is ever needed.
+// CosInterp = 1 (the default build): linear interpolation between entries. Word
+// bank * 2^CosAddrBits + i is {v, d}: v = round(cos^k(i h) * 2^CosDataBits) in
+// CosDataBits + 1 bits (cos^k(0) = 1 is exact), d = v - v(i + 1) in CosDeltaBits bits
+// (v(2^CosAddrBits) = 0). With frac_i = t (the CosFracBits of zeta below the address):
+//   cosk = v - ((d * t + 2^(CosFracBits-1)) >> CosFracBits)
+// The interpolated cos has a bounded relative error even next to its zero at pi/2, which a
+// direct table does not (n = 1); 256 entries per bank reach ten times the accuracy of the
+// patent's 4096 in a sixteenth of the words.
+// CosInterp = 0 (the patent's direct table): word = min(round(cos^k(i h) * 2^CosDataBits),
+// 2^CosDataBits - 1), cosk = word (cos^k(0) = 1 saturates deliberately).
 //
-// Contents: $readmemh(CosRomFile): one hex word per line, no comments, no @ addresses,
-// bank 0 first (format documented in roms/README.md). Synchronous read with read enable
-// (registered output, no reset) so synthesis maps it to block RAM (RE of SB_RAM40_4K).
+// Erratum (SPEC 5): only [0, pi/2) is stored; multiplier 11 feeds |zeta| (cos is even)
+// and flags zeta >= pi/2 as zero, so no address outside a bank is ever needed.
+//
+// Contents: $readmemh(CosRomFile, mem, 0, Depth - 1): one hex word per line, no comments,
+// no @ addresses, bank 0 first (roms/README.md). The testbenches check the file's length
+// against the parameters before elaborating (a short file would load silently here).
+// Synchronous read with read enable (block RAM, RE of SB_RAM40_4K), no reset.
+//
+// Pipeline, every register enabled by en_i: the ROM read, then (interpolated) the d * t
+// tree (specular_pipe_mul, clog2(CosFracBits) stages) and the subtraction; the direct
+// table is delayed by as many clocks, so both have Latency = 2 + clog2(CosFracBits).
 
 module specular_cos_k_rom #(
-  parameter int NumBanks    = 4,
-  parameter int CosAddrBits = 12,
-  parameter int CosDataBits = 16,
-  parameter     CosRomFile  = "roms/cos_k_1_2_4_16.hex"
+  parameter int NumBanks     = 8,
+  parameter int CosAddrBits  = 8,
+  parameter int CosDataBits  = 18,
+  parameter bit CosInterp    = 1'b1,
+  parameter int CosDeltaBits = 12,
+  parameter int CosFracBits  = 12,
+  parameter     CosRomFile   = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex"
 ) (
   input  logic                   clk_i,
-  input  logic                   en_i,     // read enable: holds the output while stalled
+  input  logic                   en_i,     // pipeline advance: holds every stage while stalled
   input  logic [NumBanks-1:0]    bank_i,   // one-hot from decoder 10 (all zero: bank 0)
-  input  logic [CosAddrBits-1:0] addr_i,   // |zeta| in units of pi/2 / 2^CosAddrBits
-  output logic [CosDataBits-1:0] cosk_o    // cos^k, all fraction bits
+  input  logic [CosAddrBits-1:0] addr_i,   // entry within the bank
+  input  logic [CosFracBits-1:0] frac_i,   // interpolation weight t
+  output logic [CosDataBits:0]   cosk_o    // cos^k, CosDataBits fraction bits (1.0 possible)
 );
 
-  localparam int BankBits = (NumBanks > 1) ? $clog2(NumBanks) : 1;
-  localparam int Depth    = NumBanks << CosAddrBits;
+  localparam int BankBits  = (NumBanks > 1) ? $clog2(NumBanks) : 1;
+  localparam int Depth     = NumBanks << CosAddrBits;
+  localparam int WordBits  = CosInterp ? CosDataBits + 1 + CosDeltaBits : CosDataBits;
+  localparam int MulStages = (CosFracBits > 1) ? $clog2(CosFracBits) : 1;
+
+  if (CosInterp && CosDeltaBits > CosDataBits) begin : gen_delta_check
+    $error("specular_cos_k_rom: CosDeltaBits must not exceed CosDataBits");
+  end
 
   // One-hot to binary bank number. With no bank selected (invalid n) bank 0 is read;
   // the pixel is forced to 0 downstream anyway.
@@ -44,9 +67,9 @@ module specular_cos_k_rom #(
 
   localparam int AddrBits = (NumBanks > 1) ? BankBits + CosAddrBits : CosAddrBits;
 
-  logic [CosDataBits-1:0] mem [Depth];
-  logic [CosDataBits-1:0] cosk_q;
-  logic [AddrBits-1:0]    addr;
+  logic [WordBits-1:0] mem [Depth];
+  logic [WordBits-1:0] word_q;
+  logic [AddrBits-1:0] addr;
 
   if (NumBanks > 1) begin : gen_multi_bank
     assign addr = {bank_idx, addr_i};
@@ -57,15 +80,64 @@ module specular_cos_k_rom #(
   end
 
   initial begin
-    $readmemh(CosRomFile, mem);
+    $readmemh(CosRomFile, mem, 0, Depth - 1);
   end
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      cosk_q <= mem[addr];
+      word_q <= mem[addr];
     end
   end
 
-  assign cosk_o = cosk_q;
+  logic [CosFracBits-1:0] frac_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      frac_q <= frac_i;
+    end
+  end
+
+  if (CosInterp) begin : gen_interp
+    logic [CosDataBits:0]              v, v_m;
+    logic [CosDeltaBits-1:0]           d;
+    logic [CosDeltaBits+CosFracBits-1:0] dt;
+    logic [CosDataBits:0]              cosk_q;
+    assign v = word_q[WordBits-1 -: CosDataBits + 1];
+    assign d = word_q[CosDeltaBits-1:0];
+
+    specular_pipe_mul #(
+      .ABits (CosDeltaBits),
+      .BBits (CosFracBits)
+    ) u_step (
+      .clk_i (clk_i),
+      .en_i  (en_i),
+      .a_i   (d),
+      .b_i   (frac_q),
+      .p_o   (dt)
+    );
+
+    specular_delay_nr #(.Width (CosDataBits + 1), .Depth (MulStages)) u_v (
+      .clk_i (clk_i), .en_i (en_i), .d_i (v), .q_o (v_m));
+
+    // Round half up; d * t / 2^CosFracBits <= d <= v, so no underflow.
+    logic [CosDeltaBits+CosFracBits:0] dt_rnd;
+    assign dt_rnd = {1'b0, dt} + (CosDeltaBits + CosFracBits + 1)'(1 << (CosFracBits - 1));
+
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        cosk_q <= v_m - (CosDataBits + 1)'(dt_rnd[CosDeltaBits+CosFracBits:CosFracBits]);
+      end
+    end
+    assign cosk_o = cosk_q;
+
+    logic unused_dt_lsbs;
+    assign unused_dt_lsbs = ^dt_rnd[CosFracBits-1:0];
+  end else begin : gen_direct
+    logic [CosDataBits-1:0] w_m;
+    specular_delay_nr #(.Width (CosDataBits), .Depth (MulStages + 1)) u_w (
+      .clk_i (clk_i), .en_i (en_i), .d_i (word_q), .q_o (w_m));
+    assign cosk_o = {1'b0, w_m};
+    logic unused_frac;
+    assign unused_frac = ^frac_q;
+  end
 
 endmodule

@@ -2,37 +2,59 @@
 //
 // Multiplier 13 of patent UA 71489 and the output register (output 27):
 //   I = (C * cosk + 2^(CosDataBits-1)) >> CosDataBits
-// C from register 1 (unsigned, CBits bits), cosk from ROM 12 (all CosDataBits bits are
-// fraction, cosk < 1), so I has the format of C and cannot overflow. zero_i forces 0: a
-// pixel flagged zero (far angle, zeta >= pi/2, invalid n), or no pixel at all (the
-// output reads 0 whenever no pixel is valid). en_i holds the register while the pixel
-// stream is stalled.
+// C from register 1 (unsigned, CBits bits, this pixel's span), cosk from ROM 12
+// (CosDataBits fraction bits, at most 1.0), so I has the format of C, cannot overflow, and
+// cosk = 1.0 gives I = C exactly. zero_i forces 0: a pixel flagged zero (far angle,
+// zeta >= pi/2, invalid n), or no pixel at all (a pipeline bubble), so the output reads 0
+// whenever no pixel is valid.
+// Pipeline, every register enabled by en_i (stall): the multiplier tree
+// (specular_pipe_mul over the CBits of C, clog2(CBits) stages) with the zero flag beside
+// it, then the rounding and the output register: Latency = 1 + clog2(CBits).
 
 module specular_intensity_mul #(
   parameter int CBits       = 16,
-  parameter int CosDataBits = 16
+  parameter int CosDataBits = 18
 ) (
-  input  logic                   clk_i,
-  input  logic                   rst_ni,
-  input  logic                   en_i,      // pipeline advance (clock enable)
-  input  logic [CBits-1:0]       c_i,       // register 1 (this pixel's span)
-  input  logic [CosDataBits-1:0] cosk_i,    // ROM 12
-  input  logic                   zero_i,
-  output logic [CBits-1:0]       intensity_o
+  input  logic                 clk_i,
+  input  logic                 rst_ni,
+  input  logic                 en_i,      // pipeline advance (clock enable)
+  input  logic [CBits-1:0]     c_i,       // register 1 (this pixel's span)
+  input  logic [CosDataBits:0] cosk_i,    // ROM 12
+  input  logic                 zero_i,
+  output logic [CBits-1:0]     intensity_o
 );
 
   if (CosDataBits < 1 || CBits < 1) begin : gen_width_check
     $error("specular_intensity_mul: widths must be >= 1");
   end
 
-  localparam int ProdBits = CBits + CosDataBits;
+  localparam int ProdBits  = CBits + CosDataBits + 1;
+  localparam int MulStages = (CBits > 1) ? $clog2(CBits) : 1;
 
-  logic [ProdBits-1:0] prod, prod_rnd;
-  assign prod     = ProdBits'(c_i) * ProdBits'(cosk_i);
+  logic [ProdBits-1:0] prod;
+  specular_pipe_mul #(
+    .ABits (CosDataBits + 1),
+    .BBits (CBits)
+  ) u_tree (
+    .clk_i (clk_i),
+    .en_i  (en_i),
+    .a_i   (cosk_i),
+    .b_i   (c_i),
+    .p_o   (prod)
+  );
+
+  // The flag travels as "keep" so that the reset state (0) zeroes the output: the tree
+  // registers have no reset and hold garbage until the first pixel passes.
+  logic keep_m;
+  specular_delay #(.Width (1), .Depth (MulStages)) u_keep (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (en_i), .d_i (~zero_i), .q_o (keep_m));
+
+  logic [ProdBits-1:0] prod_rnd;
   assign prod_rnd = prod + (ProdBits'(1) << (CosDataBits - 1));   // round half up
 
   logic [CBits-1:0] intensity_d, intensity_q;
-  assign intensity_d = zero_i ? '0 : prod_rnd[ProdBits-1:CosDataBits];
+  // C * cosk <= C * 2^CosDataBits, so the rounded quotient fits CBits.
+  assign intensity_d = keep_m ? prod_rnd[CosDataBits +: CBits] : '0;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -44,8 +66,8 @@ module specular_intensity_mul #(
 
   assign intensity_o = intensity_q;
 
-  // The discarded low product bits are the rounding remainder.
-  logic unused_prod_lsbs;
-  assign unused_prod_lsbs = ^prod_rnd[CosDataBits-1:0];
+  // The discarded low product bits are the rounding remainder; the top bit is 0 (see above).
+  logic unused_prod_bits;
+  assign unused_prod_bits = ^{prod_rnd[CosDataBits-1:0], prod_rnd[ProdBits-1]};
 
 endmodule

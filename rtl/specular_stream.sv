@@ -30,7 +30,8 @@
 // register 8 is empty or holds its span's last pixel.
 //
 // Timing: a span accepted at the edge ending cycle t has pixel i on the output in cycle
-// t + Latency + i (Latency = 5) when px_ready_i stays high; the next span's pixel 0
+// t + Latency + i (Latency = 19 with the default parameters: PipeDepth below) when
+// px_ready_i stays high; the next span's pixel 0
 // follows its previous span's last pixel in the next cycle, whatever l (one pixel per
 // clock sustained, no bubble between spans). Stalls (px_ready_i low) freeze every stage.
 //
@@ -39,11 +40,15 @@
 //   stage 0  registers 1 (C), 2 (dpsi), 4 (n), counter 5 and the tag load when a span is
 //            accepted; register 8 (accumulator 6/7/8) takes psi0 then psi + dpsi; ROM 9 is
 //            read with the span's n at the accept edge; decoder 10 decodes register 4
-//   stage 1  multiplier 11, first half (|psi| truncated, far flag, coefficient)
-//   stage 2  multiplier 11, second half (ROM 12 address, zero flag)
-//   stage 3  ROM 12 read (bank from decoder 10 of this pixel's span)
-//   stage 4  multiplier 13 and the output register (output 27)
-// C, the tag, the bank and the n-valid flag of each pixel travel beside it, so every
+//   stages 1 .. 7      multiplier 11: |psi| and pi/2 test, the multiplier tree (5 stages
+//                      for 21 bits of |psi|), the ROM 12 address / weight / zero flag
+//   stages 8 .. 13     ROM 12: block RAM read, interpolation tree d * t (4 stages),
+//                      cos^k = v - d t (the direct table is delayed as long)
+//   stages 14 .. 18    multiplier 13: tree over C (4 stages), rounding and the output
+//                      register (output 27)
+// (stage counts for the default widths; each block's latency follows its parameters).
+// Every stage holds at most one carry chain, which is what an iCE40 needs for 100 MHz.
+// C, the tag, the bank and the n-valid flag of each pixel travel beside it (specular_delay), so every
 // pixel uses its own span's values while consecutive spans overlap in the pipeline.
 // Register 3 (psi0) is the span bus itself: mux 7 takes psi0 straight from span_psi0_i.
 //
@@ -62,15 +67,19 @@ module specular_stream #(
   parameter int AccBits     = 44,
   parameter int NBits       = 10,
   parameter int LenBits     = 11,
-  parameter int CoefBits    = 18,
-  parameter int CoefFrac    = 15,
+  parameter int CoefBits    = 21,
+  parameter int CoefFrac    = 18,
   parameter int PsiMulFrac  = 20,
-  parameter int CosAddrBits = 12,
-  parameter int CosDataBits = 16,
-  parameter int NumBanks    = 4,
-  parameter logic [NumBanks*NBits-1:0] BankMaxN = {10'd1000, 10'd6, 10'd2, 10'd1},
+  parameter bit CosInterp   = 1'b1,
+  parameter int CosAddrBits = 8,
+  parameter int CosDataBits = 18,
+  parameter int CosDeltaBits = 12,
+  parameter int CosFracBits = 12,
+  parameter int NumBanks    = 8,
+  parameter logic [NumBanks*NBits-1:0] BankMaxN =
+      {10'd1000, 10'd13, 10'd9, 10'd6, 10'd4, 10'd3, 10'd2, 10'd1},
   parameter     CoefRomFile = "roms/coef_minimax.hex",
-  parameter     CosRomFile  = "roms/cos_k_1_2_4_16.hex",
+  parameter     CosRomFile  = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex",
   parameter int TagBits     = 16
 ) (
   input  logic                 clk_i,
@@ -90,8 +99,17 @@ module specular_stream #(
   output logic [TagBits-1:0]   px_tag_o
 );
 
-  // Register 8, the two stages of multiplier 11, the ROM 12 read, multiplier 13.
-  localparam int PipeDepth = 5;
+  // Stage latencies (see each block's header): register 8, multiplier 11 (|psi|, the
+  // multiplier tree, the address register), ROM 12 (read, interpolation tree, subtraction),
+  // multiplier 13 (tree, rounding and output register).
+  localparam int Mul11Stages = 2 + (((1 + PsiMulFrac) > 1) ? $clog2(1 + PsiMulFrac) : 1);
+  localparam int Rom12Stages = 2 + ((CosFracBits > 1) ? $clog2(CosFracBits) : 1);
+  localparam int Mul13Stages = 1 + ((CBits > 1) ? $clog2(CBits) : 1);
+  localparam int PipeDepth   = 1 + Mul11Stages + Rom12Stages + Mul13Stages;
+  // Accept cycle -> pixel 0 on the output (with px_ready_i high); read by the testbenches.
+  /* verilator lint_off UNUSEDPARAM */
+  localparam int Latency /*verilator public*/ = PipeDepth;
+  /* verilator lint_on UNUSEDPARAM */
 
   if (CFrac > CBits) begin : gen_c_check
     $error("specular_stream: CFrac must not exceed CBits");
@@ -228,46 +246,26 @@ module specular_stream #(
   );
 
   // ---------------------------------------------------------------------------------
-  // Per-pixel span values beside the datapath: stage 1 .. stage 4
+  // Per-pixel span values beside the datapath: each reaches its block with its pixel
   // ---------------------------------------------------------------------------------
-  logic [CBits-1:0]    c1_q, c2_q, c3_q;
-  logic [TagBits-1:0]  tag1_q, tag2_q, tag3_q, tag4_q;
-  logic [NumBanks-1:0] bank1_q, bank2_q;
-  logic                n_valid1_q;
-  logic                zero3_q;
+  logic [NumBanks-1:0] bank_rom;     // at the ROM 12 read
+  logic [CBits-1:0]    c_mul13;      // at multiplier 13
+  logic [TagBits-1:0]  tag_out;      // at the output register
 
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      c1_q       <= '0;
-      c2_q       <= '0;
-      c3_q       <= '0;
-      tag1_q     <= '0;
-      tag2_q     <= '0;
-      tag3_q     <= '0;
-      tag4_q     <= '0;
-      bank1_q    <= '0;
-      bank2_q    <= '0;
-      n_valid1_q <= 1'b0;
-    end else if (adv) begin
-      c1_q       <= c0;
-      c2_q       <= c1_q;
-      c3_q       <= c2_q;
-      tag1_q     <= tag0;
-      tag2_q     <= tag1_q;
-      tag3_q     <= tag2_q;
-      tag4_q     <= tag3_q;
-      bank1_q    <= bank0;
-      bank2_q    <= bank1_q;
-      n_valid1_q <= n_valid0;
-    end
-  end
+  specular_delay #(.Width (NumBanks), .Depth (Mul11Stages)) u_bank_line (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (bank0), .q_o (bank_rom));
+  specular_delay #(.Width (CBits), .Depth (Mul11Stages + Rom12Stages)) u_c_line (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (c0), .q_o (c_mul13));
+  specular_delay #(.Width (TagBits), .Depth (PipeDepth - 1)) u_tag_line (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (tag0), .q_o (tag_out));
 
   // ---------------------------------------------------------------------------------
-  // Stages 1-2: multiplier 11; stage 3: ROM 12; stage 4: multiplier 13
+  // Multiplier 11, ROM 12, multiplier 13
   // ---------------------------------------------------------------------------------
   logic [CosAddrBits-1:0] cos_addr;
-  logic                   zero_addr;
-  logic [CosDataBits-1:0] cosk;
+  logic [CosFracBits-1:0] cos_frac;
+  logic                   zero_addr, zero_cosk;
+  logic [CosDataBits:0]   cosk;
 
   specular_angle_mul #(
     .AccBits     (AccBits),
@@ -275,40 +273,44 @@ module specular_stream #(
     .CoefBits    (CoefBits),
     .CoefFrac    (CoefFrac),
     .PsiMulFrac  (PsiMulFrac),
-    .CosAddrBits (CosAddrBits)
+    .CosInterp   (CosInterp),
+    .CosAddrBits (CosAddrBits),
+    .CosFracBits (CosFracBits)
   ) u_mul11 (
     .clk_i     (clk_i),
     .rst_ni    (rst_ni),
     .en_i      (adv),
     .psi_i     (psi0),
     .coef_i    (coef0),
-    .n_valid_i (n_valid1_q),
+    .n_valid_i (n_valid0),
     .addr_o    (cos_addr),
+    .frac_o    (cos_frac),
     .zero_o    (zero_addr)
   );
 
   specular_cos_k_rom #(
-    .NumBanks    (NumBanks),
-    .CosAddrBits (CosAddrBits),
-    .CosDataBits (CosDataBits),
-    .CosRomFile  (CosRomFile)
+    .NumBanks     (NumBanks),
+    .CosAddrBits  (CosAddrBits),
+    .CosDataBits  (CosDataBits),
+    .CosInterp    (CosInterp),
+    .CosDeltaBits (CosDeltaBits),
+    .CosFracBits  (CosFracBits),
+    .CosRomFile   (CosRomFile)
   ) u_cos_k_rom12 (
     .clk_i  (clk_i),
     .en_i   (adv),
-    .bank_i (bank2_q),
+    .bank_i (bank_rom),
     .addr_i (cos_addr),
+    .frac_i (cos_frac),
     .cosk_o (cosk)
   );
 
-  // The zero flag travels alongside the ROM 12 read; a bubble is a zero pixel too, so
+  // The zero flag travels alongside ROM 12; a bubble is a zero pixel too, so
   // px_intensity_o reads 0 whenever px_valid_o is low.
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      zero3_q <= 1'b0;
-    end else if (adv) begin
-      zero3_q <= zero_addr | ~stage_valid[2];
-    end
-  end
+  logic valid_rom;
+  specular_delay #(.Width (1), .Depth (Rom12Stages)) u_zero_line (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (zero_addr), .q_o (zero_cosk));
+  assign valid_rom = stage_valid[Mul11Stages + Rom12Stages];
 
   specular_intensity_mul #(
     .CBits       (CBits),
@@ -317,13 +319,13 @@ module specular_stream #(
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),
     .en_i        (adv),
-    .c_i         (c3_q),
+    .c_i         (c_mul13),
     .cosk_i      (cosk),
-    .zero_i      (zero3_q),
+    .zero_i      (zero_cosk | ~valid_rom),
     .intensity_o (px_intensity_o)
   );
 
-  assign px_tag_o = tag4_q;
+  assign px_tag_o = tag_out;
 
   // ---------------------------------------------------------------------------------
   // Immediate assertions of the handshake invariants (Verilator --assert; the formal

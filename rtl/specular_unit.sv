@@ -22,11 +22,13 @@
 //   busy_o                line in progress ("End", 28)
 // Register values persist until rewritten (l included, see specular_down_counter).
 //
-// Protocol, start_i high in cycle s while idle (writes in cycle s apply to this line):
-//   busy_o   high in cycles s+1 .. s+6+l, low in s+7+l, when a new start is accepted
-//   valid_o  high in cycles s+6 .. s+6+l, pixel i in cycle s+6+i
-// i.e. latency 6 clocks to the first pixel, one pixel per clock, a line occupies l + 7
+// Protocol, start_i high in cycle s while idle (writes in cycle s apply to this line),
+// L = Latency (20 with the default parameters):
+//   busy_o   high in cycles s+1 .. s+L+l, low in s+L+1+l, when a new start is accepted
+//   valid_o  high in cycles s+L .. s+L+l, pixel i in cycle s+L+i
+// i.e. latency L clocks to the first pixel, one pixel per clock, a line occupies l + L + 1
 // clocks from start to the next accepted start. Writes and starts while busy are ignored.
+// (For lines back to back at one pixel per clock use specular_stream directly.)
 //
 // Structure: the host registers 1-4 and the line length l (written while idle) and the
 // patent's start latch sit in front of specular_stream, the one datapath of the core
@@ -34,7 +36,7 @@
 // multiplier 13: see rtl/specular_stream.sv). An accepted start latches for one cycle and
 // is then offered to the stream as one span, which takes it at once (the stream is empty
 // whenever this unit is idle); px_ready_i is tied high. The latch cycle plus the stream's
-// latency of 5 make the 6 clocks above.
+// latency make the L clocks above.
 //
 // Patent errata resolved here (SPEC 5): n has 10 bits (the patent's decoder has 9 inputs);
 // register 3 holds the unscaled -lambda and register 2 gamma/l (multiplier 11 applies
@@ -64,17 +66,20 @@ module specular_unit #(
   parameter int AccBits     /*verilator public*/ = 44,  // Format::acc_bits
   parameter int NBits       /*verilator public*/ = 10,  // Format::n_bits
   parameter int LenBits     /*verilator public*/ = 11,  // Format::len_bits
-  parameter int CoefBits    /*verilator public*/ = 18,  // Format::coef_bits
-  parameter int CoefFrac    /*verilator public*/ = 15,  // Format::coef_frac
+  parameter int CoefBits    /*verilator public*/ = 21,  // Format::coef_bits
+  parameter int CoefFrac    /*verilator public*/ = 18,  // Format::coef_frac
   parameter int PsiMulFrac  /*verilator public*/ = 20,  // Format::psi_mul_frac
-  parameter int CosAddrBits /*verilator public*/ = 12,  // Format::cos_addr_bits
-  parameter int CosDataBits /*verilator public*/ = 16,  // Format::cos_data_bits
-  parameter int NumBanks    /*verilator public*/ = 4,   // Format::banks.size()
+  parameter bit CosInterp   /*verilator public*/ = 1'b1,  // Format::cos_interp
+  parameter int CosAddrBits /*verilator public*/ = 8,   // Format::cos_addr_bits
+  parameter int CosDataBits /*verilator public*/ = 18,  // Format::cos_data_bits
+  parameter int CosDeltaBits /*verilator public*/ = 12, // Format::cos_delta_bits
+  parameter int CosFracBits /*verilator public*/ = 12,  // Format::cos_frac_bits
+  parameter int NumBanks    /*verilator public*/ = 8,   // Format::banks.size()
   // Format::bank_max_n, NBits bits per bank, bank 0 in the least significant bits.
   parameter logic [NumBanks*NBits-1:0] BankMaxN /*verilator public*/ =
-      {10'd1000, 10'd6, 10'd2, 10'd1},
+      {10'd1000, 10'd13, 10'd9, 10'd6, 10'd4, 10'd3, 10'd2, 10'd1},
   parameter     CoefRomFile  = "roms/coef_minimax.hex",
-  parameter     CosRomFile   = "roms/cos_k_1_2_4_16.hex"
+  parameter     CosRomFile   = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex"
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
@@ -93,6 +98,15 @@ module specular_unit #(
   output logic                 valid_o,
   output logic                 busy_o
 );
+
+  // The start latch cycle plus the stream's latency (specular_stream: PipeDepth, the same
+  // formula); the regression checks the measured latency against this value.
+  /* verilator lint_off UNUSEDPARAM */
+  localparam int Latency /*verilator public*/ = 1 + 1
+      + 2 + (((1 + PsiMulFrac) > 1) ? $clog2(1 + PsiMulFrac) : 1)
+      + 2 + ((CosFracBits > 1) ? $clog2(CosFracBits) : 1)
+      + 1 + ((CBits > 1) ? $clog2(CBits) : 1);
+  /* verilator lint_on UNUSEDPARAM */
 
   // ---------------------------------------------------------------------------------
   // Host registers 1-4 and the line length (inputs 15..24; writes only while idle)
@@ -191,8 +205,11 @@ module specular_unit #(
     .CoefBits    (CoefBits),
     .CoefFrac    (CoefFrac),
     .PsiMulFrac  (PsiMulFrac),
+    .CosInterp   (CosInterp),
     .CosAddrBits (CosAddrBits),
     .CosDataBits (CosDataBits),
+    .CosDeltaBits (CosDeltaBits),
+    .CosFracBits (CosFracBits),
     .NumBanks    (NumBanks),
     .BankMaxN    (BankMaxN),
     .CoefRomFile (CoefRomFile),

@@ -1,10 +1,11 @@
-# ctest roms_up_to_date: regenerate the ROMs into TMP and compare with the committed SRC.
+# ctest roms_up_to_date: regenerate every build configuration's ROMs (romgen --all) into TMP and
+# compare with the committed SRC.
 file(REMOVE_RECURSE ${TMP})
-execute_process(COMMAND ${ROMGEN} --out-dir ${TMP} --quiet RESULT_VARIABLE rc)
+execute_process(COMMAND ${ROMGEN} --all --out-dir ${TMP} --quiet RESULT_VARIABLE rc)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "romgen failed (${rc})")
 endif()
-file(GLOB generated RELATIVE ${TMP} ${TMP}/*.hex)
+file(GLOB_RECURSE generated RELATIVE ${TMP} ${TMP}/*.hex)
 if(NOT generated)
   message(FATAL_ERROR "romgen wrote no .hex files")
 endif()

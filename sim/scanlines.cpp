@@ -150,8 +150,9 @@ std::vector<Scanline> deterministic_scanlines(const device::Format& f) {
     }
   }
 
-  // Raw register patterns the setup does not produce: invalid n, |psi| >= 8 rad, extreme
-  // codes, accumulator range.
+  // Raw register patterns the setup does not produce: invalid n, |psi| around pi/2 (every
+  // code across the boundary, both signs: the one's complement magnitude), |psi| >= 8 rad,
+  // extreme codes, accumulator range.
   const int64_t amax = (int64_t{1} << (f.angle_bits - 1)) - 1, amin = -(int64_t{1} << (f.angle_bits - 1));
   const uint32_t cmax = (1u << f.c_bits) - 1;
   auto raw = [&](uint32_t c, int64_t psi0, int64_t dpsi, uint32_t n, uint32_t len, const std::string& what) {
@@ -170,6 +171,11 @@ std::vector<Scanline> deterministic_scanlines(const device::Format& f) {
     raw(cmax, (int64_t{8} << f.angle_frac) - 64, 1, n, 255, "|psi|=8-boundary");
     raw(cmax, -(int64_t{8} << f.angle_frac) - 64, 1, n, 255, "|psi|=-8-boundary");
     raw(1, -small, 1, n, 255, "C=1lsb");
+  }
+  const int64_t hp = f.half_pi_code();
+  for (uint32_t n : {1u, 2u, 3u, 4u, 6u, 9u, 13u, 15u, 100u}) {
+    raw(cmax, hp - 128, 1, n, 255, "psi=+pi/2-boundary");
+    raw(cmax, -hp + 128, -1, n, 255, "psi=-pi/2-boundary");
   }
   return out;
 }

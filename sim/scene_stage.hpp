@@ -49,8 +49,9 @@ struct SceneStats {
   std::vector<std::string> images;  // files written (empty when this policy wrote none)
 
   bool ok() const {
-    return checks.mismatches == 0 && checks.protocol_errors == 0 && checks.quant_violations == 0 &&
-           checks.rel_violations == 0 && checks.abs_violations == 0 && checks.latency.size() <= 1;
+    return checks.lines > 0 && checks.mismatches == 0 && checks.protocol_errors == 0 &&
+           checks.quant_violations == 0 && checks.rel_violations == 0 && checks.abs_violations == 0 &&
+           checks.latency.size() == 1 && checks.latency.begin()->first == checks.expected_latency;
   }
   nlohmann::json to_json() const;
 };

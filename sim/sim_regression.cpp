@@ -1,8 +1,10 @@
 // sim_regression: rtl/specular_unit (Verilator) against the golden model and the double
-// references, for both coefficient policies. Run from the repository root (ROM paths are
-// relative). Exit 0 when every check passes, 1 on any failure, 2 on bad arguments.
-//   sim_regression                          full regression, both policies, summary table
-//   sim_regression --seed S --random N --policy minimax|maclaurin|both --json FILE
+// references, for every hardware configuration of build_configs() (rom_image.hpp), each
+// verilated with its parameters; then rtl/specular_stream. Run from the repository root
+// (ROM paths are relative). Exit 0 when every check passes, 1 on any failure, 2 on bad
+// arguments.
+//   sim_regression                          full regression, every configuration, summary table
+//   sim_regression --seed S --random N --config default|patent|banks4-interp|interp128|all --json FILE
 //   sim_regression --vcd-dir DIR --vcd-only DIR/line_l3.vcd (l = 3) and DIR/line_long.vcd
 //   sim_regression --scenes-dir DIR --images-dir DIR   every DIR/*.json through the RTL, PNGs
 //   sim_regression --no-scenes                         regression lines only
@@ -13,11 +15,15 @@
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 #pragma GCC diagnostic ignored "-Wpedantic"  // anonymous structs in Verilator's public-parameter headers
-#include "Vspecular_unit_maclaurin.h"
-#include "Vspecular_unit_maclaurin_specular_unit.h"
-#include "Vspecular_unit_minimax.h"
-#include "Vspecular_unit_minimax_specular_unit.h"
-#include "Vspecular_stream_minimax.h"
+#include "Vspecular_stream_default.h"
+#include "Vspecular_unit_banks4_interp.h"
+#include "Vspecular_unit_banks4_interp_specular_unit.h"
+#include "Vspecular_unit_default.h"
+#include "Vspecular_unit_default_specular_unit.h"
+#include "Vspecular_unit_interp128.h"
+#include "Vspecular_unit_interp128_specular_unit.h"
+#include "Vspecular_unit_patent.h"
+#include "Vspecular_unit_patent_specular_unit.h"
 #pragma GCC diagnostic pop
 #include "cli_parse.hpp"
 #include "coefficients.hpp"
@@ -54,20 +60,37 @@ bool format_matches_rtl(const Format& f, std::string& why) {
       {"acc_bits", f.acc_bits, Root::AccBits},        {"n_bits", f.n_bits, Root::NBits},
       {"len_bits", f.len_bits, Root::LenBits},        {"coef_bits", f.coef_bits, Root::CoefBits},
       {"coef_frac", f.coef_frac, Root::CoefFrac},     {"psi_mul_frac", f.psi_mul_frac, Root::PsiMulFrac},
+      {"cos_interp", f.cos_interp ? 1 : 0, static_cast<int>(Root::CosInterp)},
       {"cos_addr_bits", f.cos_addr_bits, Root::CosAddrBits},
       {"cos_data_bits", f.cos_data_bits, Root::CosDataBits},
+      {"cos_delta_bits", f.cos_delta_bits, Root::CosDeltaBits},
+      {"cos_frac_bits", f.cos_frac_bits, Root::CosFracBits},
       {"banks", static_cast<int>(f.banks.size()), Root::NumBanks}};
   for (const auto& it : items)
     if (it.model != it.rtl) {
       why = std::string(it.name) + ": Format has " + std::to_string(it.model) + ", the RTL " + std::to_string(it.rtl);
       return false;
     }
-  uint64_t packed = 0;
-  for (size_t j = 0; j < f.bank_max_n.size(); ++j) packed |= static_cast<uint64_t>(f.bank_max_n[j]) << (j * f.n_bits);
-  if (packed != static_cast<uint64_t>(Root::BankMaxN)) {
-    why = "decoder table (bank_max_n / BankMaxN) differs";
-    return false;
-  }
+  // BankMaxN: NumBanks fields of NBits, bank 0 in the least significant bits; wider than 64
+  // bits it is a VlWide of 32-bit words.
+  auto field = [&](size_t j) -> uint32_t {
+    const size_t lo = j * static_cast<size_t>(f.n_bits);
+    uint64_t v = 0;
+    for (int b = 0; b < f.n_bits; ++b) {
+      const size_t bit = lo + static_cast<size_t>(b);
+      if constexpr (std::is_integral_v<std::decay_t<decltype(Root::BankMaxN)>>) {
+        v |= ((static_cast<uint64_t>(Root::BankMaxN) >> bit) & 1ULL) << b;
+      } else {
+        v |= static_cast<uint64_t>((Root::BankMaxN[bit / 32] >> (bit % 32)) & 1U) << b;
+      }
+    }
+    return static_cast<uint32_t>(v);
+  };
+  for (size_t j = 0; j < f.bank_max_n.size(); ++j)
+    if (field(j) != static_cast<uint32_t>(f.bank_max_n[j])) {
+      why = "decoder table (bank_max_n / BankMaxN) differs at bank " + std::to_string(j);
+      return false;
+    }
   return true;
 }
 
@@ -84,9 +107,10 @@ specular::device::Registers vcd_line(const Format& f, int l) {
 }
 
 template <class V>
-int write_vcds(const Format& f, const std::string& dir, const std::string& coef_hex) {
+int write_vcds(const specular::BuildConfig& bc, const std::string& dir) {
+  const Format& f = bc.f;
   std::filesystem::create_directories(dir);
-  Harness<V> h("specular_unit", specular::load_device_model(f, coef_hex, specular::kCosHex));
+  Harness<V> h("specular_unit", specular::load_device_model(f, bc.coef_hex(), bc.cos_hex()));
   std::mt19937_64 rng(1);
   for (auto [name, l] : {std::pair<const char*, int>{"line_l3.vcd", 3}, {"line_long.vcd", 40}}) {
     const std::string path = (std::filesystem::path(dir) / name).string();
@@ -108,10 +132,11 @@ int write_vcds(const Format& f, const std::string& dir, const std::string& coef_
 
 // The stream: spans of l = 0, 1, 3, 0 back to back, then the same under px_ready_i
 // toggling every clock, so the waveform shows the handshake and a stall.
-int write_stream_vcd(const Format& f, const std::string& dir) {
+int write_stream_vcd(const specular::BuildConfig& bc, const std::string& dir) {
+  const Format& f = bc.f;
   std::filesystem::create_directories(dir);
-  StreamHarness<Vspecular_stream_minimax> h("specular_stream", specular::load_device_model(f, specular::kCoefMinimaxHex,
-                                                                                         specular::kCosHex), 16);
+  StreamHarness<Vspecular_stream_default> h("specular_stream",
+                                            specular::load_device_model(f, bc.coef_hex(), bc.cos_hex()), 16);
   const std::string path = (std::filesystem::path(dir) / "stream.vcd").string();
   h.open_vcd(path);
   std::vector<specular::device::Span> spans;
@@ -142,17 +167,23 @@ int write_stream_vcd(const Format& f, const std::string& dir) {
 
 // The regression lines, then (same device instance, same checker and budgets) every scene;
 // the scene images are written when images_dir is not empty.
-template <class V>
-PolicyStats run_policy(const Format& f, const std::string& policy, const std::string& coef_hex, Budget budget,
-                       const std::vector<Scanline>& det, const std::vector<Scanline>& rnd, uint64_t seed,
-                       const std::vector<LoadedScene>& scenes, const std::string& images_dir,
-                       std::vector<SceneStats>& scene_stats) {
+template <class V, class Root>
+PolicyStats run_config(const specular::BuildConfig& bc, Budget budget, const std::vector<Scanline>& det,
+                       const std::vector<Scanline>& rnd, uint64_t seed, const std::vector<LoadedScene>& scenes,
+                       const std::string& images_dir, std::vector<SceneStats>& scene_stats) {
+  const Format& f = bc.f;
+  const std::string& policy = bc.name;
+  std::string why;
+  if (!format_matches_rtl<Root>(f, why))
+    throw std::runtime_error("configuration " + bc.name + ": the verilated parameters differ from its device::Format: " +
+                             why);
   PolicyStats st;
   st.policy = policy;
   st.budget = budget;
+  st.expected_latency = Root::Latency;
   const auto t0 = std::chrono::steady_clock::now();
-  Harness<V> h("specular_unit", specular::load_device_model(f, coef_hex, specular::kCosHex));
-  const specular::CoefSpec spec = specular::parse_coef_spec(policy);
+  Harness<V> h("specular_unit", specular::load_device_model(f, bc.coef_hex(), bc.cos_hex()));
+  const specular::CoefSpec spec = specular::parse_coef_spec(bc.policy);
   std::vector<double> a(f.coef_rom_depth(), 0.0);
   for (int n = 1; n <= f.max_n(); ++n) a[n] = specular::coefficient(n, f.banks[h.model().bank_of(n)], spec);
   const Checker checker(h.model(), a, budget);
@@ -186,6 +217,7 @@ PolicyStats run_policy(const Format& f, const std::string& policy, const std::st
   for (const auto& ls : scenes) {
     SceneStats ss = run_scene(h, checker, policy, ls, images_dir, rng);
     ss.checks.budget = budget;
+    ss.checks.expected_latency = st.expected_latency;
     scene_stats.push_back(std::move(ss));
   }
   return st;
@@ -285,7 +317,7 @@ void print_table(const std::vector<PolicyStats>& all) {
   };
   std::vector<std::string> head;
   for (const auto& s : all) head.push_back(s.policy);
-  line("policy", head);
+  line("configuration", head);
   std::printf("|%s|", std::string(w0 + 2, '-').c_str());
   for (size_t j = 0; j < all.size(); ++j) std::printf("%s|", std::string(w[j] + 2, '-').c_str());
   std::printf("\n");
@@ -298,19 +330,19 @@ int main(int argc, char** argv) {
   const Format f;
   uint64_t seed = 20260522;
   int random_lines = 100000;
-  std::string policy = "both", vcd_dir, json_path, scenes_dir = "scenes", images_dir = "build/scenes";
+  std::string config = "all", vcd_dir, json_path, scenes_dir = "scenes", images_dir = "build/scenes";
   bool vcd_only = false, no_scenes = false;
   uint64_t stream_spans = 1000000;
 
   CLI::App app{"Verilator regression of specular_unit against the golden model"};
   app.add_option("--seed", seed, "seed of the random scanlines")->capture_default_str();
-  app.add_option("--random", random_lines, "random scanlines per policy")
+  app.add_option("--random", random_lines, "random scanlines per configuration")
       ->check(CLI::Range(0, 10000000))
       ->capture_default_str();
-  app.add_option("--policy", policy, "coefficient policy to simulate")
-      ->check(CLI::IsMember({"minimax", "maclaurin", "both"}))
+  app.add_option("--config", config, "hardware configuration to simulate (rom_image.hpp build_configs)")
+      ->check(CLI::IsMember({"default", "patent", "banks4-interp", "interp128", "all"}))
       ->capture_default_str();
-  app.add_option("--vcd-dir", vcd_dir, "write line_l3.vcd and line_long.vcd (minimax build) into DIR");
+  app.add_option("--vcd-dir", vcd_dir, "write line_l3.vcd, line_long.vcd and stream.vcd (default build) into DIR");
   app.add_flag("--vcd-only", vcd_only, "only write the VCD files, no regression")->needs("--vcd-dir");
   app.add_option("--json", json_path, "also write the summary as JSON to FILE");
   app.add_option("--scenes-dir", scenes_dir, "run every DIR/*.json scene through the RTL")->capture_default_str();
@@ -322,9 +354,10 @@ int main(int argc, char** argv) {
       ->capture_default_str();
   if (const auto exit_code = specular::parse_command_line(app, argc, argv, "sim_regression")) return *exit_code;
 
+  // The RTL defaults are the default configuration: Format{} (the others are checked as
+  // they run, against their own Format).
   std::string why;
-  if (!format_matches_rtl<Vspecular_unit_minimax_specular_unit>(f, why) ||
-      !format_matches_rtl<Vspecular_unit_maclaurin_specular_unit>(f, why)) {
+  if (!format_matches_rtl<Vspecular_unit_default_specular_unit>(f, why)) {
     std::cerr << "sim_regression: the RTL parameter defaults differ from device::Format: " << why << "\n";
     return 1;
   }
@@ -353,26 +386,45 @@ int main(int argc, char** argv) {
   }
   try {
     if (!vcd_dir.empty()) {
-      int rc = write_vcds<Vspecular_unit_minimax>(f, vcd_dir, specular::kCoefMinimaxHex);
-      if (rc == 0) rc = write_stream_vcd(f, vcd_dir);
+      int rc = write_vcds<Vspecular_unit_default>(specular::build_config("default"), vcd_dir);
+      if (rc == 0) rc = write_stream_vcd(specular::build_config("default"), vcd_dir);
       if (rc != 0 || vcd_only) return rc;
     }
 
-    std::cout << "seed: " << seed << " (override with --seed), random scanlines per policy: " << random_lines << "\n";
+    std::cout << "seed: " << seed << " (override with --seed), random scanlines per configuration: " << random_lines
+              << "\n";
     const auto det = deterministic_scanlines(f);
     const auto rnd = random_scanlines(f, seed, random_lines);
     std::cout << "deterministic scanlines: " << det.size() << "\n";
     if (!scenes.empty()) std::cout << "scenes: " << scenes.size() << " from " << scenes_dir << ", images into " << images_dir << "\n";
     std::vector<PolicyStats> all;
     std::vector<SceneStats> scene_stats;
-    // Images come from the first policy simulated (minimax unless --policy maclaurin).
-    if (policy == "minimax" || policy == "both")
-      all.push_back(run_policy<Vspecular_unit_minimax>(f, "minimax", specular::kCoefMinimaxHex, {0.0025, 0.02}, det,
-                                                       rnd, seed, scenes, images_dir, scene_stats));
-    if (policy == "maclaurin" || policy == "both")
-      all.push_back(run_policy<Vspecular_unit_maclaurin>(f, "maclaurin", specular::kCoefMaclaurinHex,
-                                                         {0.012, 0.025}, det, rnd, seed, scenes,
-                                                         policy == "both" ? std::string() : images_dir, scene_stats));
+    // Budgets (fractions of C cos^n and of C; n = 1 enforced where the reference is at least
+    // 4 LSB): the goals of the interpolated builds, the patent's 1.2 % with n = 1 reported only.
+    // Images come from the first configuration simulated; scenes run on default and patent.
+    const bool every = config == "all";
+    auto want = [&](const char* name) { return every || config == name; };
+    const std::vector<LoadedScene> none;
+    std::string images = images_dir;
+    auto take_images = [&]() {
+      std::string d = images;
+      images.clear();
+      return d;
+    };
+    if (want("default"))
+      all.push_back(run_config<Vspecular_unit_default, Vspecular_unit_default_specular_unit>(
+          specular::build_config("default"), {0.0010, 0.01, 4.0}, det, rnd, seed, scenes, take_images(), scene_stats));
+    if (want("patent"))
+      all.push_back(run_config<Vspecular_unit_patent, Vspecular_unit_patent_specular_unit>(
+          specular::build_config("patent"), {0.012, 0.025, 0.0}, det, rnd, seed, scenes, take_images(), scene_stats));
+    if (want("banks4-interp"))
+      all.push_back(run_config<Vspecular_unit_banks4_interp, Vspecular_unit_banks4_interp_specular_unit>(
+          specular::build_config("banks4-interp"), {0.0020, 0.02, 4.0}, det, rnd, seed, every ? none : scenes,
+          take_images(), scene_stats));
+    if (want("interp128"))
+      all.push_back(run_config<Vspecular_unit_interp128, Vspecular_unit_interp128_specular_unit>(
+          specular::build_config("interp128"), {0.0010, 0.01, 4.0}, det, rnd, seed, every ? none : scenes,
+          take_images(), scene_stats));
     print_table(all);
     if (!scene_stats.empty()) {
       std::cout << "\nScenes (every span through the RTL; device error = RTL - C cos^n(psi_i) from the loaded registers,\n"
@@ -384,13 +436,14 @@ int main(int argc, char** argv) {
           break;
         }
     }
-    // Stream stage: random spans, then every scene back to back (minimax ROM).
+    // Stream stage: random spans, then every scene back to back (default build).
     StreamStats stream;
     std::vector<SceneStreamStats> scene_streams;
     const bool run_stream = stream_spans > 0 || !scenes.empty();
     if (run_stream) {
-      StreamHarness<Vspecular_stream_minimax> sh(
-          "specular_stream", specular::load_device_model(f, specular::kCoefMinimaxHex, specular::kCosHex), 16);
+      const auto& bc = specular::build_config("default");
+      StreamHarness<Vspecular_stream_default> sh("specular_stream",
+                                                 specular::load_device_model(bc.f, bc.coef_hex(), bc.cos_hex()), 16);
       if (stream_spans > 0) stream = run_stream_stage(sh, seed, stream_spans);
       for (const auto& ls : scenes) {
         uint64_t reg_cycles = 0;
@@ -422,12 +475,17 @@ int main(int argc, char** argv) {
       for (const auto& msg : s.failures) std::cout << "FAIL " << msg << "\n";
       for (const auto& [n, cnt] : s.rel_violations_by_n)
         std::cout << "FAIL " << s.policy << ": " << cnt << " epicenter pixels over budget at n = " << n << "\n";
-      if (s.latency.size() > 1) std::cout << "FAIL " << s.policy << ": latency not constant\n";
+      if (s.latency.size() != 1 || s.latency.begin()->first != s.expected_latency)
+        std::cout << "FAIL " << s.policy << ": latency not the documented " << s.expected_latency << " clocks\n";
     }
     for (const auto& s : scene_stats) {
       ok = ok && s.ok();
       for (const auto& msg : s.checks.failures) std::cout << "FAIL " << msg << "\n";
-      if (s.checks.latency.size() > 1) std::cout << "FAIL " << s.checks.policy << ": latency not constant\n";
+      if (s.checks.latency.size() > 1 || (s.checks.latency.size() == 1 &&
+                                          s.checks.latency.begin()->first != s.checks.expected_latency))
+        std::cout << "FAIL " << s.checks.policy << ": latency not the documented " << s.checks.expected_latency
+                  << " clocks\n";
+      if (s.checks.lines == 0) std::cout << "FAIL " << s.checks.policy << ": no spans\n";
     }
     if (stream_spans > 0) {
       ok = ok && stream.ok();
@@ -438,13 +496,13 @@ int main(int argc, char** argv) {
       if (!s.ok()) std::cout << "FAIL stream scene " << s.name << "\n";
     }
     if (!json_path.empty()) {
-      nlohmann::json j = {{"seed", seed}, {"random_lines_per_policy", random_lines}, {"ok", ok}};
-      for (const auto& s : all) j["policies"][s.policy] = s.to_json();
-      // scenes.<name>: the first policy's figures at the top level, every policy under by_policy.
+      nlohmann::json j = {{"seed", seed}, {"random_lines_per_config", random_lines}, {"ok", ok}};
+      for (const auto& s : all) j["configs"][s.policy] = s.to_json();
+      // scenes.<name>: the first configuration's figures at the top level, every one under by_config.
       for (const auto& s : scene_stats) {
         nlohmann::json& sj = j["scenes"][s.name];
         if (sj.is_null()) sj = s.to_json();
-        sj["by_policy"][s.policy] = s.to_json();
+        sj["by_config"][s.policy] = s.to_json();
       }
       if (!scene_stats.empty()) {
         j["scenes_dir"] = scenes_dir;

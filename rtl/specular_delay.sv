@@ -1,0 +1,43 @@
+// Copyright (c) the specular_device authors.
+//
+// Delay line of Depth registers with a common enable (pipeline stall) and asynchronous
+// reset to 0: carries per-pixel side values (C, tag, bank, flags) beside the datapath so
+// they reach each block in the same clock as their pixel. Depth = 0 is a wire.
+
+module specular_delay #(
+  parameter int Width = 1,
+  parameter int Depth = 1
+) (
+  input  logic             clk_i,
+  input  logic             rst_ni,
+  input  logic             en_i,
+  input  logic [Width-1:0] d_i,
+  output logic [Width-1:0] q_o
+);
+
+  if (Width < 1 || Depth < 0) begin : gen_param_check
+    $error("specular_delay: Width must be >= 1 and Depth >= 0");
+  end
+
+  if (Depth == 0) begin : gen_wire
+    logic unused_clk;
+    assign unused_clk = clk_i ^ rst_ni ^ en_i;
+    assign q_o = d_i;
+  end else begin : gen_regs
+    logic [Width-1:0] pipe_q [Depth];
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        for (int i = 0; i < Depth; i++) begin
+          pipe_q[i] <= '0;
+        end
+      end else if (en_i) begin
+        pipe_q[0] <= d_i;
+        for (int i = 1; i < Depth; i++) begin
+          pipe_q[i] <= pipe_q[i-1];
+        end
+      end
+    end
+    assign q_o = pipe_q[Depth-1];
+  end
+
+endmodule
