@@ -1,0 +1,385 @@
+// Copyright (c) the specular_device authors.
+//
+// specular_stream_fv: formal property harness of specular_stream's handshakes (issue 7,
+// item 5). Run by scripts/formal.sh (ctest rtl_formal_stream): Yosys read_verilog -formal,
+// Yosys sat -tempinduct: base case from reset plus induction (an unbounded proof).
+// Everything below the instance is under `ifdef FORMAL; this file lives in rtl/formal/ so
+// the rtl/*.sv globs of the Verilator and synthesis builds do not pick it up.
+//
+// REDUCED PARAMETERS. The solver cannot handle the production widths (a 44-bit
+// accumulator, 21-bit multiplier trees, an 8 x 256-word ROM, 11-bit span length) in useful
+// time, so the core is instantiated with small widths that satisfy every parameter check
+// of the RTL (specular_stream, specular_angle_mul, specular_accumulator, specular_decoder):
+//   CBits 4, CFrac 3, AngleBits 8, AngleFrac 4, AccBits 12 (>= AngleBits + LenBits + 1),
+//   NBits 4, LenBits 3 (spans of 1..8 pixels), CoefBits 4, CoefFrac 2, PsiMulFrac 2 (the
+//   smallest the pi/2 test allows), CosInterp 0 (the direct table), CosAddrBits 2,
+//   CosDataBits 4, CosDeltaBits 4, CosFracBits 1, NumBanks 2, BankMaxN {15, 1}, TagBits 2,
+//   ROMs rtl/formal/coef_fv.hex (16 words) and rtl/formal/cos_k_fv.hex (2 banks x 4 words).
+// The handshake control (specular_control), counter 5, the stage valids and the tag
+// pipeline do not depend on the widths except through PipeDepth (12 stages here, 20 at
+// the defaults; the same shift-register structure at any depth), so the properties carry
+// over; the datapath values are free-running data to these properties
+// (the solver picks any span values; bit-exactness is the simulation regression's job).
+//
+// Properties (asserted whenever rst_ni is high), under two assumptions: the design starts
+// in reset (rst_ni low in the first cycle; it may be pulsed again at any later cycle) and
+// the span source follows AXI4-Stream (span_valid_i, once high, stays high with all
+// span_*_i stable until accepted; a reset releases it):
+//   P1 stall     after a cycle with px_valid_o && !px_ready_i, px_valid_o is still high and
+//                px_intensity_o, px_last_o, px_tag_o are unchanged
+//   P2 owed      owed = sum of (l + 1) over accepted spans - transfers; px_valid_o -> owed != 0
+//   P3 order     a FIFO of accepted (l, tag) and the index of the next pixel in the head
+//                span: px_valid_o -> FIFO not empty, px_last_o == (index == l of head),
+//                px_tag_o == tag of head. The head pops when its pixel l is transferred, so
+//                every span gives exactly l + 1 pixels, in order, last on pixel l, its tag.
+//   P4 bubble    once span_valid_i and px_ready_i have both been high (rst_ni high) for
+//                Latency (12 here) consecutive cycles, px_valid_o is high; so with spans always
+//                offered and ready always high the output carries a pixel every clock,
+//                whatever the span lengths (l = 0 included) and across span changes
+//   P5 reset     after a reset px_valid_o stays low until a span has been accepted
+// Strengthening invariants (needed for induction, proven like the properties) relate the
+// harness state to the stage valids, last flags, counter 5 and the tag registers of the
+// core. Those are read through probe wires that scripts/formal.sh connects to the
+// flattened instance (connect -set after flatten; Yosys has no hierarchical references):
+//   p_vld  = u_dut.u_control14.vld_q   p_last = u_dut.u_control14.last_q
+//   p_cnt  = u_dut.cnt0                p_tag0 = u_dut.tag0
+//   p_tagline[j-1] = u_dut.u_tag_line.gen_regs.pipe_q[j-1], the tag of stage j >= 1
+// Latency (the core's PipeDepth) is a parameter set by scripts/formal.sh.
+
+module specular_stream_fv #(
+  parameter int CBits       = 4,
+  parameter int CFrac       = 3,
+  parameter int AngleBits   = 8,
+  parameter int AngleFrac   = 4,
+  parameter int AccBits     = 12,
+  parameter int NBits       = 4,
+  parameter int LenBits     = 3,
+  parameter int CoefBits    = 4,
+  parameter int CoefFrac    = 2,
+  parameter int PsiMulFrac  = 2,
+  parameter bit CosInterp   = 1'b0,
+  parameter int CosAddrBits = 2,
+  parameter int CosDataBits = 4,
+  parameter int CosDeltaBits = 4,
+  parameter int CosFracBits = 1,
+  parameter int NumBanks    = 2,
+  parameter logic [NumBanks*NBits-1:0] BankMaxN = {4'd15, 4'd1},
+  parameter     CoefRomFile = "rtl/formal/coef_fv.hex",
+  parameter     CosRomFile  = "rtl/formal/cos_k_fv.hex",
+  parameter int TagBits     = 2,
+  // Cycles from the accept edge to pixel 0 on the output: the core's PipeDepth (12 with
+  // the widths above). scripts/formal.sh sets it from the core's tag delay line (depth
+  // PipeDepth - 1); a wrong value fails on the probe widths.
+  parameter int Latency     = 12
+) (
+  input  logic                 clk_i,
+  input  logic                 rst_ni,
+  input  logic                 span_valid_i,
+  input  logic [CBits-1:0]     span_c_i,
+  input  logic [AngleBits-1:0] span_psi0_i,
+  input  logic [AngleBits-1:0] span_dpsi_i,
+  input  logic [NBits-1:0]     span_n_i,
+  input  logic [LenBits-1:0]   span_len_i,
+  input  logic [TagBits-1:0]   span_tag_i,
+  input  logic                 px_ready_i,
+  output logic                 span_ready_o,
+  output logic                 px_valid_o,
+  output logic [CBits-1:0]     px_intensity_o,
+  output logic                 px_last_o,
+  output logic [TagBits-1:0]   px_tag_o
+);
+
+  specular_stream #(
+    .CBits       (CBits),
+    .CFrac       (CFrac),
+    .AngleBits   (AngleBits),
+    .AngleFrac   (AngleFrac),
+    .AccBits     (AccBits),
+    .NBits       (NBits),
+    .LenBits     (LenBits),
+    .CoefBits    (CoefBits),
+    .CoefFrac    (CoefFrac),
+    .PsiMulFrac  (PsiMulFrac),
+    .CosInterp   (CosInterp),
+    .CosAddrBits (CosAddrBits),
+    .CosDataBits (CosDataBits),
+    .CosDeltaBits (CosDeltaBits),
+    .CosFracBits (CosFracBits),
+    .NumBanks    (NumBanks),
+    .BankMaxN    (BankMaxN),
+    .CoefRomFile (CoefRomFile),
+    .CosRomFile  (CosRomFile),
+    .TagBits     (TagBits)
+  ) u_dut (
+    .clk_i          (clk_i),
+    .rst_ni         (rst_ni),
+    .span_valid_i   (span_valid_i),
+    .span_ready_o   (span_ready_o),
+    .span_c_i       (span_c_i),
+    .span_psi0_i    (span_psi0_i),
+    .span_dpsi_i    (span_dpsi_i),
+    .span_n_i       (span_n_i),
+    .span_len_i     (span_len_i),
+    .span_tag_i     (span_tag_i),
+    .px_valid_o     (px_valid_o),
+    .px_ready_i     (px_ready_i),
+    .px_intensity_o (px_intensity_o),
+    .px_last_o      (px_last_o),
+    .px_tag_o       (px_tag_o)
+  );
+
+`ifdef FORMAL
+  // Spans in flight: at most one per stage (l = 0 spans), so 2^SlotBits > Latency FIFO
+  // slots never overflow.
+  localparam int SlotBits  = $clog2(Latency + 1);
+  localparam int Slots     = 1 << SlotBits;
+  localparam int IdxBits   = LenBits + 1;            // ghost pixel index, no wrap
+  localparam int OweBits   = $clog2((1 << LenBits) + Latency) + 1;  // owed <= 2^l + Latency - 1
+  localparam int StreakBits = $clog2(Latency + 1);
+  localparam int SpanBits  = CBits + 2 * AngleBits + NBits + LenBits + TagBits;
+  localparam int PixBits   = CBits + 1 + TagBits;
+
+  logic accept, xfer;
+  assign accept = span_valid_i && span_ready_o;
+  assign xfer   = px_valid_o && px_ready_i;
+
+  // ---------------------------------------------------------------------------------
+  // Assumptions: start in reset; AXI4-Stream source on the span side
+  // ---------------------------------------------------------------------------------
+  logic f_started_q = 1'b0;
+  always_ff @(posedge clk_i) begin
+    f_started_q <= 1'b1;
+  end
+  always_comb begin
+    if (!f_started_q) begin
+      assume (!rst_ni);
+    end
+  end
+
+  logic [SpanBits-1:0] span_bus, span_held_q;
+  logic                span_pend_q;
+  assign span_bus = {span_c_i, span_psi0_i, span_dpsi_i, span_n_i, span_len_i, span_tag_i};
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      span_pend_q <= 1'b0;
+      span_held_q <= '0;
+    end else begin
+      span_pend_q <= span_valid_i && !span_ready_o;
+      span_held_q <= span_bus;
+    end
+  end
+  always_comb begin
+    if (rst_ni && span_pend_q) begin
+      assume (span_valid_i);
+      assume (span_bus == span_held_q);
+    end
+  end
+
+  // ---------------------------------------------------------------------------------
+  // P1: valid held and pixel stable while stalled
+  // ---------------------------------------------------------------------------------
+  logic               stall_q;
+  logic [PixBits-1:0] px_held_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      stall_q   <= 1'b0;
+      px_held_q <= '0;
+    end else begin
+      stall_q   <= px_valid_o && !px_ready_i;
+      px_held_q <= {px_intensity_o, px_last_o, px_tag_o};
+    end
+  end
+  always_comb begin
+    if (rst_ni && stall_q) begin
+      assert (px_valid_o);
+      assert ({px_intensity_o, px_last_o, px_tag_o} == px_held_q);
+    end
+  end
+
+  // ---------------------------------------------------------------------------------
+  // P2: pixels owed; P5: nothing out after reset before an accept
+  // ---------------------------------------------------------------------------------
+  logic [OweBits-1:0] owed_q;
+  logic               seen_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      owed_q <= '0;
+      seen_q <= 1'b0;
+    end else begin
+      owed_q <= owed_q + (accept ? OweBits'(span_len_i) + OweBits'(1) : '0)
+                       - (xfer ? OweBits'(1) : '0);
+      seen_q <= seen_q | accept;
+    end
+  end
+  always_comb begin
+    if (rst_ni && px_valid_o) begin
+      assert (owed_q != '0);
+      assert (seen_q);
+    end
+    if (!rst_ni) begin
+      assert (!px_valid_o);
+    end
+  end
+
+  // ---------------------------------------------------------------------------------
+  // P3: spans in order, l + 1 pixels each, last on pixel l, the span's tag
+  // ---------------------------------------------------------------------------------
+  logic [Slots*LenBits-1:0] q_len_q;
+  logic [Slots*TagBits-1:0] q_tag_q;
+  logic [SlotBits-1:0]      q_head_q, q_tail;
+  logic [SlotBits:0]        q_cnt_q;
+  logic [LenBits-1:0]       q_idx_q, head_len;
+  logic [TagBits-1:0]       head_tag;
+  logic                     pop;
+
+  assign q_tail   = q_head_q + SlotBits'(q_cnt_q);
+  assign head_len = q_len_q[q_head_q * LenBits +: LenBits];
+  assign head_tag = q_tag_q[q_head_q * TagBits +: TagBits];
+  assign pop      = xfer && (q_idx_q == head_len);
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      q_len_q  <= '0;
+      q_tag_q  <= '0;
+      q_head_q <= '0;
+      q_cnt_q  <= '0;
+      q_idx_q  <= '0;
+    end else begin
+      if (accept) begin
+        q_len_q[q_tail * LenBits +: LenBits] <= span_len_i;
+        q_tag_q[q_tail * TagBits +: TagBits] <= span_tag_i;
+      end
+      if (pop) begin
+        q_head_q <= q_head_q + 1'b1;
+      end
+      q_cnt_q <= q_cnt_q + (accept ? 1'b1 : 1'b0) - (pop ? 1'b1 : 1'b0);
+      if (xfer) begin
+        q_idx_q <= pop ? '0 : q_idx_q + 1'b1;
+      end
+    end
+  end
+  always_comb begin
+    if (rst_ni) begin
+      assert (q_cnt_q <= (SlotBits + 1)'(Latency));
+      if (px_valid_o) begin
+        assert (q_cnt_q != '0);
+        assert (px_last_o == (q_idx_q == head_len));
+        assert (px_tag_o == head_tag);
+      end
+    end
+  end
+
+  // ---------------------------------------------------------------------------------
+  // P4: no bubble with spans always offered and ready always high
+  // ---------------------------------------------------------------------------------
+  logic [StreakBits-1:0] streak_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      streak_q <= '0;
+    end else if (span_valid_i && px_ready_i) begin
+      if (streak_q != StreakBits'(Latency)) begin
+        streak_q <= streak_q + 1'b1;
+      end
+    end else begin
+      streak_q <= '0;
+    end
+  end
+  always_comb begin
+    if (rst_ni && streak_q == StreakBits'(Latency)) begin
+      assert (px_valid_o);
+    end
+  end
+
+  // ---------------------------------------------------------------------------------
+  // Strengthening invariants on the core's state (probes connected by scripts/formal.sh)
+  // ---------------------------------------------------------------------------------
+  logic [Latency-1:0]         p_vld;     // stage j holds a pixel (0: register 8)
+  logic [Latency-1:1]         p_last;    // stage j's pixel is its span's last
+  logic [LenBits-1:0]         p_cnt;     // counter 5
+  logic [TagBits-1:0]             p_tag0;     // the tag register (stage 0's span)
+  logic [(Latency-1)*TagBits-1:0] p_tagline;  // the tag delay line, stages 1 ..
+  logic [Latency*TagBits-1:0]     p_tag;      // tag of stage j's span
+  assign p_tag = {p_tagline, p_tag0};
+
+  // Walk the stages from the output down: the FIFO slot and the pixel index each stage's
+  // pixel must have. A last flag moves to the next slot; pixels of a span are contiguous.
+  logic [Latency*SlotBits-1:0] e_slot;
+  logic [Latency*IdxBits-1:0]  e_idx;
+  logic [SlotBits:0]           n_last;   // spans whose last pixel is in stages 1..
+
+  assign e_slot[(Latency-1)*SlotBits +: SlotBits] = q_head_q;
+  assign e_idx[(Latency-1)*IdxBits +: IdxBits]    = IdxBits'(q_idx_q);
+  for (genvar j = Latency - 1; j >= 1; j--) begin : gen_walk
+    assign e_slot[(j-1)*SlotBits +: SlotBits] =
+        e_slot[j*SlotBits +: SlotBits] + SlotBits'(p_vld[j] && p_last[j]);
+    assign e_idx[(j-1)*IdxBits +: IdxBits] =
+        !p_vld[j] ? e_idx[j*IdxBits +: IdxBits] :
+        p_last[j] ? '0 : e_idx[j*IdxBits +: IdxBits] + 1'b1;
+  end
+
+  always_comb begin
+    n_last = '0;
+    for (int j = 1; j < Latency; j++) begin
+      n_last = n_last + (SlotBits + 1)'(p_vld[j] && p_last[j]);
+    end
+  end
+
+  logic [OweBits-1:0] owed_exp;
+  always_comb begin
+    owed_exp = p_vld[0] ? OweBits'(p_cnt) + OweBits'(1) : '0;
+    for (int j = 1; j < Latency; j++) begin
+      owed_exp = owed_exp + OweBits'(p_vld[j]);
+    end
+  end
+
+  for (genvar j = 0; j < Latency; j++) begin : gen_inv
+    logic [SlotBits-1:0] slot;
+    logic [IdxBits-1:0]  idx, len;
+    assign slot = e_slot[j*SlotBits +: SlotBits];
+    assign idx  = e_idx[j*IdxBits +: IdxBits];
+    assign len  = IdxBits'(q_len_q[slot * LenBits +: LenBits]);
+    always_comb begin
+      if (rst_ni && p_vld[j]) begin
+        assert (p_tag[j*TagBits +: TagBits] == q_tag_q[slot * TagBits +: TagBits]);
+        assert (idx <= len);
+      end
+    end
+    if (j >= 1) begin : gen_stage
+      always_comb begin
+        if (rst_ni) begin
+          assert (!p_last[j] || p_vld[j]);
+          assert (!p_vld[j] || p_last[j] || p_vld[j-1]);
+          if (p_vld[j]) begin
+            assert (p_last[j] == (idx == len));
+          end
+        end
+      end
+    end else begin : gen_reg8
+      always_comb begin
+        if (rst_ni && p_vld[0]) begin
+          assert (IdxBits'(p_cnt) == len - idx);
+        end
+      end
+    end
+  end
+
+  for (genvar k = 1; k <= Latency; k++) begin : gen_fill
+    always_comb begin
+      if (rst_ni && streak_q >= StreakBits'(k)) begin
+        assert (&p_vld[k-1:0]);
+      end
+    end
+  end
+
+  always_comb begin
+    if (rst_ni) begin
+      assert (q_cnt_q == n_last + (SlotBits + 1)'(p_vld[0]));
+      assert (owed_q == owed_exp);
+      assert (p_vld[Latency-1] || q_idx_q == '0);
+      assert (seen_q || owed_q == '0);
+    end
+  end
+`endif
+
+endmodule
