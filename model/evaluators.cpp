@@ -137,7 +137,10 @@ DeviceError device_error(const device::DeviceModel& dm, int n) {
   // n = 1: the epicenter would reach pi/2 where cos^n -> 0 and any fixed-point output has
   // unbounded relative error; stop at cos = 1/2 (the level where n = 2's epicenter ends).
   const double xe = n > 1 ? epicenter_end(n) : std::acos(0.5);
-  auto sweep = [&](double end, bool relative) {
+  const double lsb = std::ldexp(1.0, -f.c_frac);
+  const double xe_lsb = n > 1 ? epicenter_end(n) : kHalfPiE;
+  enum class Kind { rel, rel_lsb, abs };
+  auto sweep = [&](double end, Kind kind) {
     const DeviceLine d = make_device_line(f, n, end, kLen);
     const std::vector<uint32_t> out = dm.line(d.regs);
     for (int i = 0; i <= kLen; ++i) {
@@ -146,16 +149,20 @@ DeviceError device_error(const device::DeviceModel& dm, int n) {
       const double ref = d.c * std::pow(std::cos(psi), n);
       const double got = device::c_value(out[i], f);
       const double e = std::abs(got - ref);
-      if (relative) {
+      if (kind == Kind::rel) {
         if (psi <= xe) err.max_rel_epicenter = std::max(err.max_rel_epicenter, e / ref);
+      } else if (kind == Kind::rel_lsb) {
+        if (psi <= xe_lsb && ref >= 4 * lsb)
+          err.max_rel_epicenter_lsb = std::max(err.max_rel_epicenter_lsb, std::max(0.0, e - lsb) / ref);
       } else {
         err.max_abs_lobe = std::max(err.max_abs_lobe, e);
       }
     }
   };
-  sweep(xe, true);
-  sweep(std::min(kHalfPiE, 12.0 / std::sqrt(static_cast<double>(n))), false);
-  sweep(kHalfPiE, false);
+  sweep(xe, Kind::rel);
+  sweep(xe_lsb, Kind::rel_lsb);
+  sweep(std::min(kHalfPiE, 12.0 / std::sqrt(static_cast<double>(n))), Kind::abs);
+  sweep(kHalfPiE, Kind::abs);
   return err;
 }
 

@@ -99,9 +99,12 @@ DeviceLine make_device_line(const device::Format& f, int n, double end, int l);
 // epicenter error, [0, min(pi/2, 12/sqrt(n))] and [0, pi/2] for the absolute lobe error.
 // The reference is C cos^n(psi_i) at the exact (quantized) pixel angle, so the figure is
 // the device error alone, not the host's quantization of psi0/dpsi.
+// max_rel_epicenter_lsb is the goal metric of the hardware builds: (|err| - 1 output LSB) /
+// ref over the epicenter, n = 1 over all of [0, pi/2] wherever ref >= 4 output LSBs.
 struct DeviceError {
   double max_rel_epicenter = 0.0;
   double max_abs_lobe = 0.0;
+  double max_rel_epicenter_lsb = 0.0;
 };
 DeviceError device_error(const device::DeviceModel& dm, int n);
 

@@ -16,8 +16,8 @@
 //           zero when that reaches 2^CosAddrBits
 //   zero    far, or past a quarter turn, or n invalid (decoder 10)
 // Pipeline, every register enabled by en_i (stall): stage 1 |psi| and the coefficient;
-// stages 2 .. 1 + MulStages the multiplier tree (specular_pipe_mul) with far and n_valid
-// beside it; then the address register. Latency = Latency (2 + MulStages) clocks from the
+// stages 2 .. 1 + MulStages the radix-4 multiplier tree (specular_pipe_mul) with the pi/2 test
+// (stages 2 and 3) and n_valid beside it; then the address register. Latency = Latency (2 + MulStages) clocks from the
 // pixel in register 8 to addr_o / frac_o / zero_o.
 
 module specular_angle_mul #(
@@ -42,7 +42,8 @@ module specular_angle_mul #(
 );
 
   localparam int PsiTBits  = 1 + PsiMulFrac;
-  localparam int MulStages = (PsiTBits > 1) ? $clog2(PsiTBits) : 1;
+  // Radix-4 tree over the bits of |psi|_t (specular_pipe_mul).
+  localparam int MulStages = 1 + ((((PsiTBits + 1) / 2) > 1) ? $clog2((PsiTBits + 1) / 2) : 0);
   localparam int ZetaBits  = CoefBits + PsiTBits;
   localparam int ZetaFrac  = CoefFrac + PsiMulFrac;
   localparam int DropBits  = ZetaFrac - CosAddrBits;    // bits below the ROM address
@@ -59,6 +60,9 @@ module specular_angle_mul #(
   if (DropBits < 1) begin : gen_drop_check
     $error("specular_angle_mul: CoefFrac + PsiMulFrac must exceed CosAddrBits");
   end
+  if (MulStages < 2) begin : gen_stages_check
+    $error("specular_angle_mul: PsiMulFrac must be >= 2 (the pi/2 test needs two stages)");
+  end
   if (CosInterp && DropBits < CosFracBits) begin : gen_interp_check
     $error("specular_angle_mul: zeta has too few fraction bits for CosAddrBits + CosFracBits");
   end
@@ -67,40 +71,62 @@ module specular_angle_mul #(
   logic [AccBits-1:0] ones_d, ones_q;
   logic               neg_q;
   logic [CoefBits-1:0] coef_q;
+  logic [CoefBits+1:0] coef3_q;   // 3 * coef for the radix-4 digits of the tree
   assign ones_d = psi_i ^ {AccBits{psi_i[AccBits-1]}};
 
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      ones_q <= ones_d;
-      neg_q  <= psi_i[AccBits-1];
-      coef_q <= coef_i;
+      ones_q  <= ones_d;
+      neg_q   <= psi_i[AccBits-1];
+      coef_q  <= coef_i;
+      coef3_q <= (CoefBits + 2)'(coef_i) + ((CoefBits + 2)'(coef_i) << 1);
     end
   end
 
   // ---- Stages 2 .. 1 + MulStages: the multiplier tree; far and n_valid beside it.
+  // |psi| >= pi/2 is split over two stages so that no clock holds more than a half-width
+  // comparison: stage 2 compares the high and low halves with the constant (H, or H - 1 for
+  // negative psi, whose one's complement is one code low; H - 1 has the same high half
+  // because the low half of H is not 0), stage 3 combines them.
+  localparam int LoBits = AccBits / 2;
+  localparam logic [AccBits-1:0] HalfPiNeg = HalfPiCode - AccBits'(1);
+  if (HalfPiCode[LoBits-1:0] == '0) begin : gen_half_check
+    $error("specular_angle_mul: the low half of ceil(pi/2 * 2^AngleFrac) must not be 0");
+  end
+  logic gt_hi_q, eq_hi_q, ge_lo_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      gt_hi_q <= ones_q[AccBits-1:LoBits] > HalfPiCode[AccBits-1:LoBits];
+      eq_hi_q <= ones_q[AccBits-1:LoBits] == HalfPiCode[AccBits-1:LoBits];
+      ge_lo_q <= neg_q ? (ones_q[LoBits-1:0] >= HalfPiNeg[LoBits-1:0])
+                       : (ones_q[LoBits-1:0] >= HalfPiCode[LoBits-1:0]);
+    end
+  end
   logic far;
-  assign far = neg_q ? (ones_q >= HalfPiCode - AccBits'(1)) : (ones_q >= HalfPiCode);
+  assign far = gt_hi_q | (eq_hi_q & ge_lo_q);
 
   logic [PsiTBits-1:0] psi_t;
   assign psi_t = ones_q[AngleFrac -: PsiTBits];
 
   logic [ZetaBits-1:0] zeta;
   specular_pipe_mul #(
-    .ABits (CoefBits),
-    .BBits (PsiTBits)
+    .ABits  (CoefBits),
+    .BBits  (PsiTBits),
+    .Radix4 (1'b1)
   ) u_tree (
     .clk_i (clk_i),
     .en_i  (en_i),
     .a_i   (coef_q),
+    .a3_i  (coef3_q),
     .b_i   (psi_t),
     .p_o   (zeta)
   );
 
-  logic n_valid_1, far_m, n_valid_m;
-  specular_delay #(.Width (1), .Depth (1)) u_nvalid_1 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (en_i), .d_i (n_valid_i), .q_o (n_valid_1));
-  specular_delay #(.Width (2), .Depth (MulStages)) u_flags_m (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (en_i), .d_i ({far, n_valid_1}), .q_o ({far_m, n_valid_m}));
+  logic far_m, n_valid_m;
+  specular_delay #(.Width (1), .Depth (1 + MulStages)) u_nvalid_m (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (en_i), .d_i (n_valid_i), .q_o (n_valid_m));
+  specular_delay #(.Width (1), .Depth (MulStages - 1)) u_far_m (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (en_i), .d_i (far), .q_o (far_m));
 
   // ---- Last stage: ROM 12 address, interpolation weight, zero flag.
   logic [CosAddrBits-1:0] addr_d, addr_q;

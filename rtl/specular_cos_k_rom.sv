@@ -23,9 +23,10 @@
 // against the parameters before elaborating (a short file would load silently here).
 // Synchronous read with read enable (block RAM, RE of SB_RAM40_4K), no reset.
 //
-// Pipeline, every register enabled by en_i: the ROM read, then (interpolated) the d * t
-// tree (specular_pipe_mul, clog2(CosFracBits) stages) and the subtraction; the direct
-// table is delayed by as many clocks, so both have Latency = 2 + clog2(CosFracBits).
+// Pipeline, every register enabled by en_i: the ROM read (with 3t beside it), then
+// (interpolated) the radix-4 t * d tree (specular_pipe_mul, 1 + clog2(ceil(CosDeltaBits/2))
+// stages) and the subtraction; the direct table is delayed by as many clocks, so both
+// have Latency = 3 + clog2(ceil(CosDeltaBits / 2)).
 
 module specular_cos_k_rom #(
   parameter int NumBanks     = 8,
@@ -47,7 +48,8 @@ module specular_cos_k_rom #(
   localparam int BankBits  = (NumBanks > 1) ? $clog2(NumBanks) : 1;
   localparam int Depth     = NumBanks << CosAddrBits;
   localparam int WordBits  = CosInterp ? CosDataBits + 1 + CosDeltaBits : CosDataBits;
-  localparam int MulStages = (CosFracBits > 1) ? $clog2(CosFracBits) : 1;
+  // Radix-4 tree over the bits of d (specular_pipe_mul), t and 3t as the multiplicand.
+  localparam int MulStages = 1 + ((((CosDeltaBits + 1) / 2) > 1) ? $clog2((CosDeltaBits + 1) / 2) : 0);
 
   if (CosInterp && CosDeltaBits > CosDataBits) begin : gen_delta_check
     $error("specular_cos_k_rom: CosDeltaBits must not exceed CosDataBits");
@@ -90,9 +92,11 @@ module specular_cos_k_rom #(
   end
 
   logic [CosFracBits-1:0] frac_q;
+  logic [CosFracBits+1:0] frac3_q;   // 3 t, beside the block RAM read
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      frac_q <= frac_i;
+      frac_q  <= frac_i;
+      frac3_q <= (CosFracBits + 2)'(frac_i) + ((CosFracBits + 2)'(frac_i) << 1);
     end
   end
 
@@ -105,13 +109,15 @@ module specular_cos_k_rom #(
     assign d = word_q[CosDeltaBits-1:0];
 
     specular_pipe_mul #(
-      .ABits (CosDeltaBits),
-      .BBits (CosFracBits)
+      .ABits  (CosFracBits),
+      .BBits  (CosDeltaBits),
+      .Radix4 (1'b1)
     ) u_step (
       .clk_i (clk_i),
       .en_i  (en_i),
-      .a_i   (d),
-      .b_i   (frac_q),
+      .a_i   (frac_q),
+      .a3_i  (frac3_q),
+      .b_i   (d),
       .p_o   (dt)
     );
 
@@ -137,7 +143,7 @@ module specular_cos_k_rom #(
       .clk_i (clk_i), .en_i (en_i), .d_i (word_q), .q_o (w_m));
     assign cosk_o = {1'b0, w_m};
     logic unused_frac;
-    assign unused_frac = ^frac_q;
+    assign unused_frac = ^{frac_q, frac3_q};
   end
 
 endmodule

@@ -10,13 +10,22 @@
 // Erratum (SPEC 5): n up to 1000 needs 10 bits; the patent's decoder has 9 inputs.
 //
 // BankMaxN is packed, NBits bits per bank, bank 0 in the least significant bits:
-// the default is {10'd1000, 10'd6, 10'd2, 10'd1}. The limits must increase strictly.
+// the default here is the patent's {10'd1000, 10'd6, 10'd2, 10'd1}. The limits must
+// increase strictly.
+//
+// Registered = 0: combinational. Registered = 1 (the stream): the comparisons of n with
+// each limit are registered (enabled by en_i) and the one-hot select is formed from them,
+// so the outputs follow n_i one clock later and no clock holds a comparison and the
+// select logic behind it (an iCE40-UP5K critical path otherwise).
 
 module specular_decoder #(
   parameter int                      NBits    = 10,
   parameter int                      NumBanks = 4,
-  parameter logic [NumBanks*NBits-1:0] BankMaxN = {10'd1000, 10'd6, 10'd2, 10'd1}
+  parameter logic [NumBanks*NBits-1:0] BankMaxN = {10'd1000, 10'd6, 10'd2, 10'd1},
+  parameter bit                      Registered = 1'b0
 ) (
+  input  logic                clk_i,      // only with Registered
+  input  logic                en_i,       // only with Registered
   input  logic [NBits-1:0]    n_i,
   output logic [NumBanks-1:0] bank_o,     // one-hot bank select (all zero if invalid)
   output logic                n_valid_o
@@ -31,16 +40,39 @@ module specular_decoder #(
     end
   end
 
-  // Bank j is selected when n is above the previous limit and not above its own.
-  for (genvar j = 0; j < NumBanks; j++) begin : gen_bank
-    logic above_lo, below_hi;
-    if (j == 0) begin : gen_first
-      assign above_lo = (n_i != '0);
-    end else begin : gen_next
-      assign above_lo = (n_i > BankMaxN[(j-1)*NBits +: NBits]);
+  // le[j]: n <= limit of bank j; nz: n != 0. Bank j is selected when n is above the
+  // previous limit (not le[j-1]) and not above its own (le[j]).
+  logic [NumBanks-1:0] le_d, le;
+  logic                nz_d, nz;
+  for (genvar j = 0; j < NumBanks; j++) begin : gen_le
+    assign le_d[j] = (n_i <= BankMaxN[j*NBits +: NBits]);
+  end
+  assign nz_d = (n_i != '0);
+
+  if (Registered) begin : gen_reg
+    logic [NumBanks-1:0] le_q;
+    logic                nz_q;
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        le_q <= le_d;
+        nz_q <= nz_d;
+      end
     end
-    assign below_hi  = (n_i <= BankMaxN[j*NBits +: NBits]);
-    assign bank_o[j] = above_lo & below_hi;
+    assign le = le_q;
+    assign nz = nz_q;
+  end else begin : gen_comb
+    logic unused_clk;
+    assign unused_clk = clk_i ^ en_i;
+    assign le = le_d;
+    assign nz = nz_d;
+  end
+
+  for (genvar j = 0; j < NumBanks; j++) begin : gen_bank
+    if (j == 0) begin : gen_first
+      assign bank_o[j] = nz & le[0];
+    end else begin : gen_next
+      assign bank_o[j] = ~le[j-1] & le[j];
+    end
   end
 
   assign n_valid_o = |bank_o;

@@ -19,6 +19,7 @@ module specular_down_counter #(
   input  logic [LenBits-1:0] len_i,      // input 23
   input  logic               count_i,    // count pulse 34
   output logic               borrow_o,   // borrow 35: this count pulse passes zero
+  output logic               zero_o,     // the count is 0 (a register: no compare on the path)
   output logic [LenBits-1:0] count_o     // current count (for observation)
 );
 
@@ -28,32 +29,42 @@ module specular_down_counter #(
 
   logic [LenBits-1:0] len_q;
   logic [LenBits-1:0] cnt_d, cnt_q;
+  logic               zero_d, zero_q;
 
-  assign borrow_o = count_i && (cnt_q == '0);
+  // zero_q == (cnt_q == 0) always; kept as its own register so that the control unit's
+  // handshake (span_ready_o, the strobes) starts from a flip-flop, not an LenBits compare.
+  assign borrow_o = count_i && zero_q;
 
   always_comb begin
-    cnt_d = cnt_q;
+    cnt_d  = cnt_q;
+    zero_d = zero_q;
     if (len_we_i) begin
-      cnt_d = len_i;
+      cnt_d  = len_i;
+      zero_d = (len_i == '0);
     end else if (borrow_o) begin
-      cnt_d = len_q;               // reload: ready for the next line
+      cnt_d  = len_q;              // reload: ready for the next line
+      zero_d = (len_q == '0);
     end else if (count_i) begin
-      cnt_d = cnt_q - 1'b1;
+      cnt_d  = cnt_q - 1'b1;
+      zero_d = (cnt_q == LenBits'(1));
     end
   end
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      len_q <= '0;
-      cnt_q <= '0;
+      len_q  <= '0;
+      cnt_q  <= '0;
+      zero_q <= 1'b1;
     end else begin
       if (len_we_i) begin
         len_q <= len_i;
       end
-      cnt_q <= cnt_d;
+      cnt_q  <= cnt_d;
+      zero_q <= zero_d;
     end
   end
 
   assign count_o = cnt_q;
+  assign zero_o  = zero_q;
 
 endmodule

@@ -39,6 +39,7 @@ module specular_intensity_mul #(
     .clk_i (clk_i),
     .en_i  (en_i),
     .a_i   (cosk_i),
+    .a3_i  ('0),
     .b_i   (c_i),
     .p_o   (prod)
   );

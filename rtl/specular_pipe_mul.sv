@@ -1,46 +1,82 @@
 // Copyright (c) the specular_device authors.
 //
 // Pipelined unsigned multiplier p = a * b, exact, for the LUT fabric of an iCE40 (no DSP
-// needed): the BBits partial products (a << j where b[j] is set) are summed by a binary
-// tree of adders with a register after every level, so each clock holds at most one carry
-// chain. Latency = Stages = max(1, clog2(BBits)) clocks; a new operand pair every clock.
-// en_i freezes every stage (pipeline stall). No reset: the datapath carries no control
-// state, the valid bits beside it are reset.
-// Used by multiplier 11 (coef * |psi|), the ROM 12 interpolation (d * t) and
+// needed), one new operand pair every clock, en_i freezes every stage (pipeline stall).
+// No reset: the datapath carries no control state, the valid bits beside it are reset.
+//
+// Radix4 = 0: the BBits partial products (a << j where b[j] is set) are summed by a binary
+//   tree of adders with a register after every level: Stages = max(1, clog2(BBits)).
+// Radix4 = 1: b is taken two bits at a time; each digit selects 0, a, 2a or 3a (a3_i, which
+//   the caller computes a clock earlier, off this pipeline's path). The first stage only
+//   registers the selected rows (a multiplexer, no carry chain: the AND in front of an
+//   adder costs the UP5K its 50 MHz otherwise), then the binary tree adds them:
+//   Stages = 1 + clog2(ceil(BBits / 2)) (1 when BBits <= 2).
+// Either way no stage holds more than one carry chain.
+// Used by multiplier 11 (coef * |psi|), the ROM 12 interpolation (t * d) and
 // multiplier 13 (C * cos^k) of patent UA 71489.
 
 module specular_pipe_mul #(
-  parameter int ABits = 16,
-  parameter int BBits = 16
+  parameter int ABits  = 16,
+  parameter int BBits  = 16,
+  parameter bit Radix4 = 1'b0
 ) (
   input  logic                   clk_i,
   input  logic                   en_i,
   input  logic [ABits-1:0]       a_i,
+  input  logic [ABits+1:0]       a3_i,    // 3 * a_i (Radix4 only)
   input  logic [BBits-1:0]       b_i,
   output logic [ABits+BBits-1:0] p_o
 );
 
-  localparam int PBits  = ABits + BBits;
-  localparam int Stages = (BBits > 1) ? $clog2(BBits) : 1;
+  localparam int PBits   = ABits + BBits;
+  localparam int NRows   = Radix4 ? (BBits + 1) / 2 : BBits;
+  localparam int TreeLvl = (NRows > 1) ? $clog2(NRows) : 0;
+  // Radix-4 rows are registered once before the tree; a radix-2 tree needs at least one
+  // register even for a single row.
+  localparam int FirstLvl = Radix4 ? 1 : 0;
+  localparam int Levels   = (FirstLvl + TreeLvl > 0) ? FirstLvl + TreeLvl : 1;
 
   if (ABits < 1 || BBits < 1) begin : gen_width_check
     $error("specular_pipe_mul: widths must be >= 1");
   end
 
-  // rows[l][j]: row j after level l (level 0: the partial products, combinational).
-  // Level l has ceil(BBits / 2^l) rows.
-  logic [PBits-1:0] rows [Stages+1][BBits];
+  // rows[l][j]: row j after level l; level 0 is combinational.
+  logic [PBits-1:0] rows [Levels+1][NRows];
 
-  for (genvar j = 0; j < BBits; j++) begin : gen_pp
-    assign rows[0][j] = b_i[j] ? (PBits'(a_i) << j) : '0;
+  if (Radix4) begin : gen_r4
+    logic [2*NRows-1:0] b_pad;
+    assign b_pad = (2 * NRows)'(b_i);
+    for (genvar j = 0; j < NRows; j++) begin : gen_pp
+      logic [ABits+1:0] digit_row;
+      always_comb begin
+        unique case (b_pad[2*j +: 2])
+          2'd0:    digit_row = '0;
+          2'd1:    digit_row = (ABits + 2)'(a_i);
+          2'd2:    digit_row = (ABits + 2)'(a_i) << 1;
+          default: digit_row = a3_i;
+        endcase
+      end
+      assign rows[0][j] = PBits'(digit_row) << (2 * j);
+    end
+  end else begin : gen_r2
+    for (genvar j = 0; j < NRows; j++) begin : gen_pp
+      assign rows[0][j] = b_i[j] ? (PBits'(a_i) << j) : '0;
+    end
+    logic unused_a3;
+    assign unused_a3 = ^a3_i;
   end
 
-  for (genvar l = 1; l <= Stages; l++) begin : gen_level
-    localparam int NPrev = (BBits + (1 << (l - 1)) - 1) >> (l - 1);
-    localparam int NCur  = (BBits + (1 << l) - 1) >> l;
+  for (genvar l = 1; l <= Levels; l++) begin : gen_level
+    // Radix-4: level 1 registers the rows as they are; later levels add pairs.
+    localparam bit Adds  = !(Radix4 && l == 1);
+    localparam int Shift = Radix4 ? l - 1 : l;   // additions done up to this level
+    localparam int NPrev = Adds ? (NRows + (1 << (Shift - 1)) - 1) >> (Shift - 1) : NRows;
+    localparam int NCur  = (NRows + (1 << Shift) - 1) >> Shift;
     for (genvar j = 0; j < NCur; j++) begin : gen_row
       logic [PBits-1:0] sum;
-      if (2 * j + 1 < NPrev) begin : gen_add
+      if (!Adds) begin : gen_copy
+        assign sum = rows[l-1][j];
+      end else if (2 * j + 1 < NPrev) begin : gen_add
         assign sum = rows[l-1][2*j] + rows[l-1][2*j+1];
       end else begin : gen_pass
         assign sum = rows[l-1][2*j];
@@ -52,11 +88,11 @@ module specular_pipe_mul #(
       end
     end
     // Rows beyond NCur are not used at this level.
-    for (genvar j = NCur; j < BBits; j++) begin : gen_unused_row
+    for (genvar j = NCur; j < NRows; j++) begin : gen_unused_row
       assign rows[l][j] = '0;
     end
   end
 
-  assign p_o = rows[Stages][0];
+  assign p_o = rows[Levels][0];
 
 endmodule

@@ -30,7 +30,7 @@
 // register 8 is empty or holds its span's last pixel.
 //
 // Timing: a span accepted at the edge ending cycle t has pixel i on the output in cycle
-// t + Latency + i (Latency = 19 with the default parameters: PipeDepth below) when
+// t + Latency + i (Latency = 20 with the default parameters: PipeDepth below) when
 // px_ready_i stays high; the next span's pixel 0
 // follows its previous span's last pixel in the next cycle, whatever l (one pixel per
 // clock sustained, no bubble between spans). Stalls (px_ready_i low) freeze every stage.
@@ -40,11 +40,12 @@
 //   stage 0  registers 1 (C), 2 (dpsi), 4 (n), counter 5 and the tag load when a span is
 //            accepted; register 8 (accumulator 6/7/8) takes psi0 then psi + dpsi; ROM 9 is
 //            read with the span's n at the accept edge; decoder 10 decodes register 4
-//   stages 1 .. 7      multiplier 11: |psi| and pi/2 test, the multiplier tree (5 stages
+//   stage 1            register 8, high half (specular_accumulator splits the 44-bit add)
+//   stages 2 .. 8      multiplier 11: |psi| and pi/2 test, the multiplier tree (5 stages
 //                      for 21 bits of |psi|), the ROM 12 address / weight / zero flag
-//   stages 8 .. 13     ROM 12: block RAM read, interpolation tree d * t (4 stages),
+//   stages 9 .. 14     ROM 12: block RAM read, interpolation tree d * t (4 stages),
 //                      cos^k = v - d t (the direct table is delayed as long)
-//   stages 14 .. 18    multiplier 13: tree over C (4 stages), rounding and the output
+//   stages 15 .. 19    multiplier 13: tree over C (4 stages), rounding and the output
 //                      register (output 27)
 // (stage counts for the default widths; each block's latency follows its parameters).
 // Every stage holds at most one carry chain, which is what an iCE40 needs for 100 MHz.
@@ -102,10 +103,11 @@ module specular_stream #(
   // Stage latencies (see each block's header): register 8, multiplier 11 (|psi|, the
   // multiplier tree, the address register), ROM 12 (read, interpolation tree, subtraction),
   // multiplier 13 (tree, rounding and output register).
-  localparam int Mul11Stages = 2 + (((1 + PsiMulFrac) > 1) ? $clog2(1 + PsiMulFrac) : 1);
-  localparam int Rom12Stages = 2 + ((CosFracBits > 1) ? $clog2(CosFracBits) : 1);
+  localparam int Mul11Stages = 3 + (((2 + PsiMulFrac) / 2 > 1) ? $clog2((2 + PsiMulFrac) / 2) : 0);
+  localparam int Rom12Stages = 3 + (((CosDeltaBits + 1) / 2 > 1) ? $clog2((CosDeltaBits + 1) / 2) : 0);
   localparam int Mul13Stages = 1 + ((CBits > 1) ? $clog2(CBits) : 1);
-  localparam int PipeDepth   = 1 + Mul11Stages + Rom12Stages + Mul13Stages;
+  // Register 8 is two stages (specular_accumulator: low half, then high half).
+  localparam int PipeDepth   = 2 + Mul11Stages + Rom12Stages + Mul13Stages;
   // Accept cycle -> pixel 0 on the output (with px_ready_i high); read by the testbenches.
   /* verilator lint_off UNUSEDPARAM */
   localparam int Latency /*verilator public*/ = PipeDepth;
@@ -156,7 +158,7 @@ module specular_stream #(
   logic [NBits-1:0]     n0;
   logic [TagBits-1:0]   tag0;
   logic [LenBits-1:0]   cnt0;
-  logic                 unused_borrow;
+  logic                 unused_borrow, unused_cnt;
 
   specular_reg #(.Width (CBits)) u_reg1_c (
     .clk_i  (clk_i),
@@ -192,6 +194,7 @@ module specular_stream #(
 
   // The borrow equals count && cnt_zero; the control unit uses cnt_zero directly because
   // span_ready_o must be known before the edge at which the count pulse is given.
+  assign unused_cnt = ^cnt0;
   specular_down_counter #(.LenBits (LenBits)) u_counter5 (
     .clk_i    (clk_i),
     .rst_ni   (rst_ni),
@@ -199,12 +202,12 @@ module specular_stream #(
     .len_i    (span_len_i),
     .count_i  (count),
     .borrow_o (unused_borrow),
+    .zero_o   (cnt_zero),
     .count_o  (cnt0)
   );
-  assign cnt_zero = (cnt0 == '0);
 
-  // Accumulator: adder 6, mux 7, register 8
-  logic signed [AccBits-1:0] psi0;
+  // Accumulator: adder 6, mux 7, register 8 (psi of the pixel in stage 1)
+  logic signed [AccBits-1:0] psi1;
 
   specular_accumulator #(
     .AngleBits (AngleBits),
@@ -214,24 +217,29 @@ module specular_stream #(
     .rst_ni (rst_ni),
     .we_i   (strobe),
     .sel_i  (mux_sel),
+    .step_i (count),
     .psi0_i (span_psi0_i),
     .dpsi_i (dpsi0),
-    .psi_o  (psi0)
+    .psi_o  (psi1)
   );
 
-  // Decoder 10 (on register 4) and coefficient ROM 9 (read with the span's n on accept)
-  logic [NumBanks-1:0] bank0;
-  logic                n_valid0;
+  // Decoder 10 (on register 4, registered: its outputs belong to the pixel in stage 1) and
+  // coefficient ROM 9 (read with the span's n on accept)
+  logic [NumBanks-1:0] bank1;
+  logic                n_valid1;
   logic [CoefBits-1:0] coef0;
 
   specular_decoder #(
-    .NBits    (NBits),
-    .NumBanks (NumBanks),
-    .BankMaxN (BankMaxN)
+    .NBits      (NBits),
+    .NumBanks   (NumBanks),
+    .BankMaxN   (BankMaxN),
+    .Registered (1'b1)
   ) u_decoder10 (
+    .clk_i     (clk_i),
+    .en_i      (adv),
     .n_i       (n0),
-    .bank_o    (bank0),
-    .n_valid_o (n_valid0)
+    .bank_o    (bank1),
+    .n_valid_o (n_valid1)
   );
 
   specular_coef_rom #(
@@ -248,13 +256,16 @@ module specular_stream #(
   // ---------------------------------------------------------------------------------
   // Per-pixel span values beside the datapath: each reaches its block with its pixel
   // ---------------------------------------------------------------------------------
+  logic [CoefBits-1:0] coef1;        // at multiplier 11, beside psi1
   logic [NumBanks-1:0] bank_rom;     // at the ROM 12 read
   logic [CBits-1:0]    c_mul13;      // at multiplier 13
   logic [TagBits-1:0]  tag_out;      // at the output register
 
+  specular_delay_nr #(.Width (CoefBits), .Depth (1)) u_coef_line (
+    .clk_i (clk_i), .en_i (adv), .d_i (coef0), .q_o (coef1));
   specular_delay #(.Width (NumBanks), .Depth (Mul11Stages)) u_bank_line (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (bank0), .q_o (bank_rom));
-  specular_delay #(.Width (CBits), .Depth (Mul11Stages + Rom12Stages)) u_c_line (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (bank1), .q_o (bank_rom));
+  specular_delay #(.Width (CBits), .Depth (1 + Mul11Stages + Rom12Stages)) u_c_line (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (c0), .q_o (c_mul13));
   specular_delay #(.Width (TagBits), .Depth (PipeDepth - 1)) u_tag_line (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (tag0), .q_o (tag_out));
@@ -280,9 +291,9 @@ module specular_stream #(
     .clk_i     (clk_i),
     .rst_ni    (rst_ni),
     .en_i      (adv),
-    .psi_i     (psi0),
-    .coef_i    (coef0),
-    .n_valid_i (n_valid0),
+    .psi_i     (psi1),
+    .coef_i    (coef1),
+    .n_valid_i (n_valid1),
     .addr_o    (cos_addr),
     .frac_o    (cos_frac),
     .zero_o    (zero_addr)
@@ -310,7 +321,7 @@ module specular_stream #(
   logic valid_rom;
   specular_delay #(.Width (1), .Depth (Rom12Stages)) u_zero_line (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (zero_addr), .q_o (zero_cosk));
-  assign valid_rom = stage_valid[Mul11Stages + Rom12Stages];
+  assign valid_rom = stage_valid[1 + Mul11Stages + Rom12Stages];
 
   specular_intensity_mul #(
     .CBits       (CBits),

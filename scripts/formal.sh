@@ -103,6 +103,7 @@ yosys -q -l "$out/yosys_${tag}.log" -p "
   connect -nounset -set p_vld  u_dut.u_control14.vld_q
   connect -nounset -set p_last u_dut.u_control14.last_q
   connect -nounset -set p_cnt  u_dut.cnt0
+  connect -nounset -set p_zero u_dut.u_counter5.zero_q
   connect -nounset -set p_tag0 u_dut.tag0
   ${tag_probes}
   prep -top specular_stream_fv

@@ -170,76 +170,41 @@ json section_albedo() {
   return series;
 }
 
-// Decoder table for a bank set: bank j+1 takes over from bank j at the first n where its
-// device-independent error (float cos^k(a x), the config's policy) is not larger. For
-// {1, 2, 4, 16} this reproduces the patent's table (1 | 2 | 3..6 | 7..1000).
-std::vector<int> derive_bank_max_n(const std::vector<int>& banks, const CoefSpec& spec) {
-  std::vector<int> max_n;
-  int n = 1;
-  for (size_t j = 0; j + 1 < banks.size(); ++j) {
-    const int k0 = banks[j], k1 = banks[j + 1];
-    n = std::max(n, k0);
-    while (n < k1) {
-      const double e0 = max_rel_epicenter(ShapeFn(CoskEval(k0, coefficient(n, k0, spec))), n);
-      const double e1 = max_rel_epicenter(ShapeFn(CoskEval(k1, coefficient(n, k1, spec))), n);
-      if (e1 <= e0) break;
-      ++n;
-    }
-    max_n.push_back(n - 1 < k0 ? k0 : n - 1);
-    n = max_n.back() + 1;
-  }
-  max_n.push_back(1000);
-  return max_n;
-}
-
-struct HwConfig {
-  std::string name;
-  int addr, data;
-  std::string policy;
-  std::vector<int> banks;
-};
-
+// The hardware configurations are build_configs() (rom_image.hpp): the ones sim_regression
+// verilates and checks bit-exactly, so every figure here is one the RTL produces. Their
+// decoder tables come from derive_bank_max_n (decoder_table.hpp); tests/report checks the
+// patent's table 1 | 2 | 3..6 | 7..1000 for {1, 2, 4, 16}.
 json section_hardware(const std::vector<int>& ns) {
-  const std::vector<int> patent_banks{1, 2, 4, 16}, big_banks{1, 2, 3, 4, 6, 8, 12, 16};
-  const std::vector<HwConfig> configs{
-      {"default-maclaurin", 12, 16, "maclaurin", patent_banks},
-      {"default-minimax", 12, 16, "minimax", patent_banks},
-      {"addr10-minimax", 10, 16, "minimax", patent_banks},
-      {"addr11-minimax", 11, 16, "minimax", patent_banks},
-      {"addr13-minimax", 13, 16, "minimax", patent_banks},
-      {"data12-minimax", 12, 12, "minimax", patent_banks},
-      {"banks8-maclaurin", 12, 16, "maclaurin", big_banks},
-      {"banks8-minimax", 12, 16, "minimax", big_banks},
-  };
   json out = json::array();
-  for (const HwConfig& c : configs) {
-    device::Format f;
-    f.cos_addr_bits = c.addr;
-    f.cos_data_bits = c.data;
-    f.banks = c.banks;
+  for (const BuildConfig& c : build_configs()) {
+    const device::Format& f = c.f;
     const CoefSpec spec = parse_coef_spec(c.policy);
-    // Derived for every bank set, the patent's included (tests/report checks that the
-    // derivation gives the patent's table 1 | 2 | 3..6 | 7..1000 for {1, 2, 4, 16}).
-    f.bank_max_n = derive_bank_max_n(c.banks, spec);
     const auto t0 = std::chrono::steady_clock::now();
     const device::DeviceModel dm(f, coef_rom_image(f, spec), cos_rom_image(f));
-    json rel = json::array(), ab = json::array();
+    json rel = json::array(), ab = json::array(), rel_lsb = json::array();
     for (int n : ns) {
       const DeviceError e = device_error(dm, n);
       rel.push_back(num(e.max_rel_epicenter));
       ab.push_back(num(e.max_abs_lobe));
+      rel_lsb.push_back(num(e.max_rel_epicenter_lsb));
     }
     const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.push_back({{"name", c.name},
-                   {"cos_addr_bits", c.addr},
-                   {"cos_data_bits", c.data},
+                   {"cos_interp", f.cos_interp},
+                   {"cos_addr_bits", f.cos_addr_bits},
+                   {"cos_data_bits", f.cos_data_bits},
+                   {"cos_word_bits", f.cos_word_bits()},
+                   {"coef_bits", f.coef_bits},
                    {"policy", c.policy},
-                   {"banks", c.banks},
+                   {"banks", f.banks},
                    {"bank_max_n", f.bank_max_n},
+                   {"coef_rom", c.coef_hex()},
+                   {"cos_rom", c.cos_hex()},
                    {"coef_rom_bits", int64_t(f.coef_rom_depth()) * f.coef_bits},
-                   {"cos_rom_bits", int64_t(f.cos_rom_depth()) * f.cos_data_bits},
+                   {"cos_rom_bits", int64_t(f.cos_rom_depth()) * f.cos_word_bits()},
                    {"n", ns},
                    {"max_rel_epicenter", rel},
+                   {"max_rel_epicenter_lsb", rel_lsb},
                    {"max_abs_lobe", ab},
                    {"seconds", secs}});
   }

@@ -43,6 +43,7 @@
 // flattened instance (connect -set after flatten; Yosys has no hierarchical references):
 //   p_vld  = u_dut.u_control14.vld_q   p_last = u_dut.u_control14.last_q
 //   p_cnt  = u_dut.cnt0                p_tag0 = u_dut.tag0
+//   p_zero = u_dut.u_counter5.zero_q
 //   p_tagline[j-1] = u_dut.u_tag_line.gen_regs.pipe_q[j-1], the tag of stage j >= 1
 // Latency (the core's PipeDepth) is a parameter set by scripts/formal.sh.
 
@@ -297,6 +298,7 @@ module specular_stream_fv #(
   logic [Latency-1:0]         p_vld;     // stage j holds a pixel (0: register 8)
   logic [Latency-1:1]         p_last;    // stage j's pixel is its span's last
   logic [LenBits-1:0]         p_cnt;     // counter 5
+  logic                       p_zero;    // counter 5's registered "count is 0"
   logic [TagBits-1:0]             p_tag0;     // the tag register (stage 0's span)
   logic [(Latency-1)*TagBits-1:0] p_tagline;  // the tag delay line, stages 1 ..
   logic [Latency*TagBits-1:0]     p_tag;      // tag of stage j's span
@@ -374,6 +376,7 @@ module specular_stream_fv #(
 
   always_comb begin
     if (rst_ni) begin
+      assert (p_zero == (p_cnt == '0));
       assert (q_cnt_q == n_last + (SlotBits + 1)'(p_vld[0]));
       assert (owed_q == owed_exp);
       assert (p_vld[Latency-1] || q_idx_q == '0);
