@@ -7,9 +7,10 @@
 // cosk = 1.0 gives I = C exactly. zero_i forces 0: a pixel flagged zero (far angle,
 // zeta >= pi/2, invalid n), or no pixel at all (a pipeline bubble), so the output reads 0
 // whenever no pixel is valid.
-// Pipeline, every register enabled by en_i (stall): the multiplier tree
-// (specular_pipe_mul over the CBits of C, clog2(CBits) stages) with the zero flag beside
-// it, then the rounding and the output register: Latency = 1 + clog2(CBits).
+// Pipeline, every register enabled by en_i (stall): the radix-4 multiplier tree
+// (specular_pipe_mul over the bits of cos^k, 1 + clog2(ceil((CosDataBits + 1) / 2)) stages)
+// with the zero flag beside it, then the rounding and the output register:
+// Latency = 2 + clog2(ceil((CosDataBits + 1) / 2)).
 
 module specular_intensity_mul #(
   parameter int CBits       = 16,
@@ -19,6 +20,7 @@ module specular_intensity_mul #(
   input  logic                 rst_ni,
   input  logic                 en_i,      // pipeline advance (clock enable)
   input  logic [CBits-1:0]     c_i,       // register 1 (this pixel's span)
+  input  logic [CBits+1:0]     c3_i,      // 3 C, computed when the span was accepted
   input  logic [CosDataBits:0] cosk_i,    // ROM 12
   input  logic                 zero_i,
   output logic [CBits-1:0]     intensity_o
@@ -29,18 +31,20 @@ module specular_intensity_mul #(
   end
 
   localparam int ProdBits  = CBits + CosDataBits + 1;
-  localparam int MulStages = (CBits > 1) ? $clog2(CBits) : 1;
+  // Radix-4 tree over the bits of cos^k (specular_pipe_mul), C and 3C as the multiplicand.
+  localparam int MulStages = 1 + (((CosDataBits + 2) / 2 > 1) ? $clog2((CosDataBits + 2) / 2) : 0);
 
   logic [ProdBits-1:0] prod;
   specular_pipe_mul #(
-    .ABits (CosDataBits + 1),
-    .BBits (CBits)
+    .ABits  (CBits),
+    .BBits  (CosDataBits + 1),
+    .Radix4 (1'b1)
   ) u_tree (
     .clk_i (clk_i),
     .en_i  (en_i),
-    .a_i   (cosk_i),
-    .a3_i  ('0),
-    .b_i   (c_i),
+    .a_i   (c_i),
+    .a3_i  (c3_i),
+    .b_i   (cosk_i),
     .p_o   (prod)
   );
 

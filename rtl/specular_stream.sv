@@ -30,7 +30,7 @@
 // register 8 is empty or holds its span's last pixel.
 //
 // Timing: a span accepted at the edge ending cycle t has pixel i on the output in cycle
-// t + Latency + i (Latency = 20 with the default parameters: PipeDepth below) when
+// t + Latency + i (Latency = 21 with the default parameters: PipeDepth below) when
 // px_ready_i stays high; the next span's pixel 0
 // follows its previous span's last pixel in the next cycle, whatever l (one pixel per
 // clock sustained, no bubble between spans). Stalls (px_ready_i low) freeze every stage.
@@ -45,7 +45,7 @@
 //                      for 21 bits of |psi|), the ROM 12 address / weight / zero flag
 //   stages 9 .. 14     ROM 12: block RAM read, interpolation tree d * t (4 stages),
 //                      cos^k = v - d t (the direct table is delayed as long)
-//   stages 15 .. 19    multiplier 13: tree over C (4 stages), rounding and the output
+//   stages 15 .. 20    multiplier 13: radix-4 tree over cos^k (5 stages), rounding and the output
 //                      register (output 27)
 // (stage counts for the default widths; each block's latency follows its parameters).
 // Every stage holds at most one carry chain, which is what an iCE40 needs for 100 MHz.
@@ -105,7 +105,7 @@ module specular_stream #(
   // multiplier 13 (tree, rounding and output register).
   localparam int Mul11Stages = 3 + (((2 + PsiMulFrac) / 2 > 1) ? $clog2((2 + PsiMulFrac) / 2) : 0);
   localparam int Rom12Stages = 3 + (((CosDeltaBits + 1) / 2 > 1) ? $clog2((CosDeltaBits + 1) / 2) : 0);
-  localparam int Mul13Stages = 1 + ((CBits > 1) ? $clog2(CBits) : 1);
+  localparam int Mul13Stages = 2 + (((CosDataBits + 2) / 2 > 1) ? $clog2((CosDataBits + 2) / 2) : 0);
   // Register 8 is two stages (specular_accumulator: low half, then high half).
   localparam int PipeDepth   = 2 + Mul11Stages + Rom12Stages + Mul13Stages;
   // Accept cycle -> pixel 0 on the output (with px_ready_i high); read by the testbenches.
@@ -166,6 +166,16 @@ module specular_stream #(
     .we_i   (accept),
     .d_i    (span_c_i),
     .q_o    (c0)
+  );
+
+  // 3C for multiplier 13's radix-4 digits, computed once per span.
+  logic [CBits+1:0] c30;
+  specular_reg #(.Width (CBits + 2)) u_reg1_c3 (
+    .clk_i  (clk_i),
+    .rst_ni (rst_ni),
+    .we_i   (accept),
+    .d_i    ((CBits + 2)'(span_c_i) + ((CBits + 2)'(span_c_i) << 1)),
+    .q_o    (c30)
   );
 
   specular_reg #(.Width (AngleBits)) u_reg2_dpsi (
@@ -259,14 +269,15 @@ module specular_stream #(
   logic [CoefBits-1:0] coef1;        // at multiplier 11, beside psi1
   logic [NumBanks-1:0] bank_rom;     // at the ROM 12 read
   logic [CBits-1:0]    c_mul13;      // at multiplier 13
+  logic [CBits+1:0]    c3_mul13;     // 3 C (the radix-4 digits of multiplier 13)
   logic [TagBits-1:0]  tag_out;      // at the output register
 
   specular_delay_nr #(.Width (CoefBits), .Depth (1)) u_coef_line (
     .clk_i (clk_i), .en_i (adv), .d_i (coef0), .q_o (coef1));
   specular_delay #(.Width (NumBanks), .Depth (Mul11Stages)) u_bank_line (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (bank1), .q_o (bank_rom));
-  specular_delay #(.Width (CBits), .Depth (1 + Mul11Stages + Rom12Stages)) u_c_line (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (c0), .q_o (c_mul13));
+  specular_delay #(.Width (2 * CBits + 2), .Depth (1 + Mul11Stages + Rom12Stages)) u_c_line (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({c30, c0}), .q_o ({c3_mul13, c_mul13}));
   specular_delay #(.Width (TagBits), .Depth (PipeDepth - 1)) u_tag_line (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (tag0), .q_o (tag_out));
 
@@ -331,6 +342,7 @@ module specular_stream #(
     .rst_ni      (rst_ni),
     .en_i        (adv),
     .c_i         (c_mul13),
+    .c3_i        (c3_mul13),
     .cosk_i      (cosk),
     .zero_i      (zero_cosk | ~valid_rom),
     .intensity_o (px_intensity_o)

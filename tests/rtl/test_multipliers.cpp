@@ -360,7 +360,8 @@ TEST_CASE("multiplier 11, patent build: rounded 12-bit address, zero at 4096", "
 // ------------------------------------------------------------------------------------
 namespace {
 
-constexpr int kMul13Latency = 1 + ceil_log2(16);  // 5: tree over the 16 bits of C, output
+// 6: radix-4 tree over the 19 bits of cos^k (a row register + 4 adder levels), output.
+constexpr int kMul13Latency = 2 + ceil_log2((19 + 1) / 2);
 constexpr uint32_t kCosOne = 1u << 18;             // cos^k = 1.0
 
 struct IntensityItem {
@@ -392,11 +393,13 @@ int run_intensity(Vintensity_mul& dut, const std::vector<IntensityItem>& items, 
   std::mt19937 junk(3);
   auto apply = [](Vintensity_mul& m, const IntensityItem& it) {
     m.c_i = it.c;
+    m.c3_i = 3 * it.c;  // the stream computes 3C once per span
     m.cosk_i = it.cosk;
     m.zero_i = it.zero;
   };
   auto garbage = [&](Vintensity_mul& m) {
     m.c_i = junk() & 0xffff;
+    m.c3_i = 3 * m.c_i;
     m.cosk_i = junk() % (kCosOne + 1);
     m.zero_i = junk() & 1;
   };
@@ -459,6 +462,7 @@ TEST_CASE("multiplier 13: reset in flight zeroes the output until new pixels arr
   CHECK(run_intensity(dut, big, false) == 0);
   dut.en_i = 1;
   dut.c_i = 0xffff;
+  dut.c3_i = 3 * 0xffff;
   dut.cosk_i = kCosOne;
   dut.zero_i = 0;
   for (int i = 0; i < kMul13Latency; ++i) tick(dut);

@@ -30,12 +30,14 @@ using specular::rtl_test::tick;
 namespace {
 
 using R = Vunit_specular_unit;  // public parameters (/*verilator public*/)
-// Start in cycle s -> first valid pixel in s + L (L = 20 at commit 96cb58a): the start
-// latch, register 8 and the block latencies (multiplier 11: 2 + clog2(21), ROM 12:
-// 2 + clog2(12), multiplier 13: 1 + clog2(16)). The tests use the RTL's own Latency and
-// measure it; the protocol test bounds it by that sum.
+// Start in cycle s -> first valid pixel in s + L (L = 22): the start latch, register 8 (two
+// stages: the 44-bit add split in halves) and the block latencies, each a register stage
+// around a tree of radix-4 digits: multiplier 11: |psi|, 1 + clog2(11), address = 7;
+// ROM 12: read, 1 + clog2(6) over the 12 bits of d, subtraction = 6; multiplier 13:
+// 1 + clog2(10) over the 19 bits of cos^k, output = 6. The tests use the RTL's own Latency
+// and measure it; the protocol test requires it to be this sum.
 constexpr int kLatency = static_cast<int>(R::Latency);
-constexpr int kBlockLatency = 1 + (2 + 5) + (2 + 4) + (1 + 4);  // latch, mul 11, ROM 12, mul 13
+constexpr int kBlockLatency = 1 + 2 + 7 + 6 + 6;  // latch, register 8, mul 11, ROM 12, mul 13
 constexpr int kLineOverhead = kLatency + 1;  // start to next accepted start: l + L + 1 cycles
 
 struct Line {
@@ -184,9 +186,7 @@ TEST_CASE("specular_unit protocol: latency, l+1 pixels, busy, for l = 0..3", "[r
   ln.len = l;
   write_and_start(dut, ln);
   const Trace t = run_line(dut, static_cast<int>(l) + kLatency + 6);
-  // Register 8 takes one stage, or two where the 44-bit add is split in halves.
-  CHECK(kLatency >= kBlockLatency + 1);
-  CHECK(kLatency <= kBlockLatency + 2);
+  CHECK(kLatency == kBlockLatency);
   CHECK(t.first_valid == kLatency);
   CHECK(t.pixels.size() == l + 1);
   CHECK(t.valid_contiguous);
