@@ -16,7 +16,10 @@
 // strobe) holds the low LoBits of psi and the carry out of their addition; stage B (moved
 // by step_i, when A's pixel goes on) adds the high half with that carry one clock later.
 // psi_o = {high half of B, low half delayed into B}: psi one clock after the strobe that
-// made it, exact for every pixel.
+// made it, exact for every pixel. The stream writes stage A at every pipeline advance
+// (we_i = adv) rather than only on the strobe: where no strobe is due, stage A's pixel is
+// invalid (its valid bit is the control unit's), and a clock enable shared with the rest of
+// the pipeline keeps the strobe logic off the clock-enable network of an iCE40.
 
 module specular_accumulator #(
   parameter int AngleBits = 32,   // registers 2 and 3, signed, radians

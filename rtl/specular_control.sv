@@ -14,14 +14,13 @@
 // multiplier 11 (2 stages) -> ROM 12 -> multiplier 13 / output register); last_q marks
 // the pixel that took the borrow 35 of counter 5 (the last of its span).
 //
-// Handshake (AXI4-Stream rules on both sides):
-//   adv           = !px_valid_o || px_ready_i: every stage register moves when the output
-//                   register is empty or being taken, and holds otherwise
-//   span_ready_o  = adv && (register 8 empty || it holds its span's last pixel)
-// span_ready_o therefore depends combinationally on px_ready_i and on state, never on
-// span_valid_i. With px_ready_i high a new span's first pixel enters register 8 on the
-// edge at which the previous span's last pixel leaves it: one pixel per clock, l = 0
-// spans included.
+// Handshake (AXI4-Stream rules on the span side; the pixel side is specular_out_buf):
+//   adv_i         every stage register moves at this edge (a register of the output
+//                 buffer: high whenever the buffer has room for the last stage's pixel)
+//   span_ready_o  = adv_i && (register 8 empty || it holds its span's last pixel)
+// span_ready_o therefore depends on registers only, never on span_valid_i or px_ready_i.
+// With adv_i high a new span's first pixel enters register 8 on the edge at which the
+// previous span's last pixel leaves it: one pixel per clock, l = 0 spans included.
 
 module specular_control #(
   parameter int PipeDepth = 5
@@ -30,16 +29,15 @@ module specular_control #(
   input  logic rst_ni,
   input  logic span_valid_i,   // a span is offered
   output logic span_ready_o,   // ... and would be taken at this edge
-  input  logic px_ready_i,     // the consumer takes the output pixel at this edge
+  input  logic adv_i,          // every pipeline stage advances at this edge
   input  logic cnt_zero_i,     // counter 5 holds 0: the pixel in register 8 is its span's last
-  output logic adv_o,          // every pipeline stage advances at this edge
   output logic accept_o,       // span handshake: registers 1, 2, 4, counter 5 load
   output logic strobe_o,       // write 37 of register 8
   output logic sel_o,          // mux select 36: 0 = psi0 of the accepted span, 1 = psi + dpsi
   output logic count_o,        // count pulse 34 of counter 5
   output logic [PipeDepth-1:0] stage_valid_o,  // stage j holds a pixel (0: register 8)
-  output logic px_valid_o,     // data valid strobe 29
-  output logic px_last_o,      // the output pixel is the last of its span
+  output logic out_valid_o,    // data valid strobe 29: the last stage holds a pixel
+  output logic out_last_o,     // ... the last of its span
   output logic busy_o          // some pixel is in flight
 );
 
@@ -53,12 +51,11 @@ module specular_control #(
 
   assign more0        = vld_q[0] & ~cnt_zero_i;      // register 8 has more pixels to make
   assign free0        = ~vld_q[0] | cnt_zero_i;      // register 8 is free after this edge
-  assign adv_o        = ~vld_q[PipeDepth-1] | px_ready_i;
-  assign span_ready_o = adv_o & free0;
+  assign span_ready_o = adv_i & free0;
   assign accept_o     = span_valid_i & span_ready_o;
-  assign strobe_o     = adv_o & (accept_o | more0);
+  assign strobe_o     = adv_i & (accept_o | more0);
   assign sel_o        = ~accept_o;
-  assign count_o      = adv_o & vld_q[0];
+  assign count_o      = adv_i & vld_q[0];
 
   assign vld_d  = {vld_q[PipeDepth-2:0], accept_o | more0};
   if (PipeDepth > 2) begin : gen_last_shift
@@ -71,15 +68,15 @@ module specular_control #(
     if (!rst_ni) begin
       vld_q  <= '0;
       last_q <= '0;
-    end else if (adv_o) begin
+    end else if (adv_i) begin
       vld_q  <= vld_d;
       last_q <= last_d;
     end
   end
 
   assign stage_valid_o = vld_q;
-  assign px_valid_o    = vld_q[PipeDepth-1];
-  assign px_last_o     = last_q[PipeDepth-1];
+  assign out_valid_o   = vld_q[PipeDepth-1];
+  assign out_last_o    = last_q[PipeDepth-1];
   assign busy_o        = |vld_q;
 
 endmodule

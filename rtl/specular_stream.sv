@@ -24,19 +24,19 @@
 // Handshake, AXI4-Stream rules: a transfer happens at a rising edge where valid and ready
 // are both high. px_valid_o and the pixel are registers; once px_valid_o is high they hold
 // until the transfer, and px_valid_o never waits for px_ready_i.
-// span_ready_o depends on the pipeline state and, combinationally, on px_ready_i (it is
-// low while the output register is full and px_ready_i low); it never depends on
-// span_valid_i. A consumer that holds px_ready_i high sees span_ready_o high whenever
-// register 8 is empty or holds its span's last pixel.
+// span_ready_o depends on registers only (never on span_valid_i or px_ready_i): it is high
+// when the pipeline advances at the next edge (the two-entry output buffer has room,
+// specular_out_buf) and register 8 is empty or holds its span's last pixel. px_ready_i
+// reaches only the output buffer's flip-flops.
 //
 // Timing: a span accepted at the edge ending cycle t has pixel i on the output in cycle
-// t + Latency + i (Latency = 21 with the default parameters: PipeDepth below) when
+// t + Latency + i (Latency = 22 with the default parameters: PipeDepth below) when
 // px_ready_i stays high; the next span's pixel 0
 // follows its previous span's last pixel in the next cycle, whatever l (one pixel per
 // clock sustained, no bubble between spans). Stalls (px_ready_i low) freeze every stage.
 //
-// Pipeline (patent block numbers), every stage register enabled by adv = !px_valid_o ||
-// px_ready_i:
+// Pipeline (patent block numbers), every stage register enabled by adv, a register of the
+// output buffer (high while it has room; with px_ready_i high always):
 //   stage 0  registers 1 (C), 2 (dpsi), 4 (n), counter 5 and the tag load when a span is
 //            accepted; register 8 (accumulator 6/7/8) takes psi0 then psi + dpsi; ROM 9 is
 //            read with the span's n at the accept edge; decoder 10 decodes register 4
@@ -45,8 +45,9 @@
 //                      for 21 bits of |psi|), the ROM 12 address / weight / zero flag
 //   stages 9 .. 14     ROM 12: block RAM read, interpolation tree d * t (4 stages),
 //                      cos^k = v - d t (the direct table is delayed as long)
-//   stages 15 .. 20    multiplier 13: radix-4 tree over cos^k (5 stages), rounding and the output
-//                      register (output 27)
+//   stages 15 .. 20    multiplier 13: radix-4 tree over cos^k (5 stages), rounding and the
+//                      output register (output 27)
+//   output buffer      two entries (specular_out_buf): the pixel handshake
 // (stage counts for the default widths; each block's latency follows its parameters).
 // Every stage holds at most one carry chain, which is what an iCE40 needs for 100 MHz.
 // C, the tag, the bank and the n-valid flag of each pixel travel beside it (specular_delay), so every
@@ -108,9 +109,10 @@ module specular_stream #(
   localparam int Mul13Stages = 2 + (((CosDataBits + 2) / 2 > 1) ? $clog2((CosDataBits + 2) / 2) : 0);
   // Register 8 is two stages (specular_accumulator: low half, then high half).
   localparam int PipeDepth   = 2 + Mul11Stages + Rom12Stages + Mul13Stages;
-  // Accept cycle -> pixel 0 on the output (with px_ready_i high); read by the testbenches.
+  // Accept cycle -> pixel 0 on the output (with px_ready_i high): the stages plus the
+  // output buffer; read by the testbenches.
   /* verilator lint_off UNUSEDPARAM */
-  localparam int Latency /*verilator public*/ = PipeDepth;
+  localparam int Latency /*verilator public*/ = PipeDepth + 1;
   /* verilator lint_on UNUSEDPARAM */
 
   if (CFrac > CBits) begin : gen_c_check
@@ -126,7 +128,7 @@ module specular_stream #(
   // ---------------------------------------------------------------------------------
   // Control unit 14
   // ---------------------------------------------------------------------------------
-  logic adv, accept, strobe, mux_sel, count, cnt_zero;
+  logic adv, accept, unused_strobe, mux_sel, count, cnt_zero, out_valid, out_last;
   logic [PipeDepth-1:0] stage_valid;
   logic unused_busy;
 
@@ -137,16 +139,15 @@ module specular_stream #(
     .rst_ni        (rst_ni),
     .span_valid_i  (span_valid_i),
     .span_ready_o  (span_ready_o),
-    .px_ready_i    (px_ready_i),
+    .adv_i         (adv),
     .cnt_zero_i    (cnt_zero),
-    .adv_o         (adv),
     .accept_o      (accept),
-    .strobe_o      (strobe),
+    .strobe_o      (unused_strobe),
     .sel_o         (mux_sel),
     .count_o       (count),
     .stage_valid_o (stage_valid),
-    .px_valid_o    (px_valid_o),
-    .px_last_o     (px_last_o),
+    .out_valid_o   (out_valid),
+    .out_last_o    (out_last),
     .busy_o        (unused_busy)
   );
 
@@ -225,7 +226,7 @@ module specular_stream #(
   ) u_accumulator (
     .clk_i  (clk_i),
     .rst_ni (rst_ni),
-    .we_i   (strobe),
+    .we_i   (adv),       // every advance: where strobe 37 is low, stage A's pixel is invalid
     .sel_i  (mux_sel),
     .step_i (count),
     .psi0_i (span_psi0_i),
@@ -334,6 +335,8 @@ module specular_stream #(
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (zero_addr), .q_o (zero_cosk));
   assign valid_rom = stage_valid[1 + Mul11Stages + Rom12Stages];
 
+  logic [CBits-1:0] intensity;
+
   specular_intensity_mul #(
     .CBits       (CBits),
     .CosDataBits (CosDataBits)
@@ -345,10 +348,24 @@ module specular_stream #(
     .c3_i        (c3_mul13),
     .cosk_i      (cosk),
     .zero_i      (zero_cosk | ~valid_rom),
-    .intensity_o (px_intensity_o)
+    .intensity_o (intensity)
   );
 
-  assign px_tag_o = tag_out;
+  // ---------------------------------------------------------------------------------
+  // Output buffer: the pixel handshake; its registered room is the pipeline advance
+  // ---------------------------------------------------------------------------------
+  specular_out_buf #(
+    .Width (CBits + 1 + TagBits)
+  ) u_out_buf (
+    .clk_i      (clk_i),
+    .rst_ni     (rst_ni),
+    .adv_o      (adv),
+    .in_valid_i (out_valid),
+    .in_data_i  ({intensity, out_last, tag_out}),
+    .px_valid_o (px_valid_o),
+    .px_ready_i (px_ready_i),
+    .px_data_o  ({px_intensity_o, px_last_o, px_tag_o})
+  );
 
   // ---------------------------------------------------------------------------------
   // Immediate assertions of the handshake invariants (Verilator --assert; the formal

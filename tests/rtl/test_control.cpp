@@ -1,13 +1,16 @@
-// Control unit 14 of the streaming pipeline, cycle by cycle. Counter 5 is modelled here
-// (loaded with l on accept, decremented by every count pulse 34), so the unit is checked
-// against the stream contract of SPEC 6a, independently of its implementation:
-//   * with px_ready_i high and spans always offered, a span accepted in cycle t has
-//     pixel i valid in cycle t + 5 + i; the next span is accepted in cycle t + l + 1
+// Control unit 14 of the streaming pipeline, cycle by cycle (its block model has the
+// default PipeDepth = 5). Counter 5 is modelled here (loaded with l on accept, decremented
+// by every count pulse 34), so the unit is checked against the stream contract,
+// independently of its implementation. adv_i is the pipeline advance (in the core a
+// register of the output buffer); a pixel leaves the last stage at an edge where
+// out_valid_o and adv_i are both high.
+//   * with adv_i high and spans always offered, a span accepted in cycle t has pixel i in
+//     the last stage in cycle t + 5 + i; the next span is accepted in cycle t + l + 1
 //     (one pixel per clock, l = 0 included);
 //   * mux select 36 is 0 exactly on accepting strobes, a strobe (37) and a count pulse
 //     (34) per pixel leaving register 8;
-//   * under any px_ready_i pattern: px_valid_o holds until taken, exactly l + 1 pixels
-//     per span with px_last_o on the last, in order, and span_ready_o = adv && register 8
+//   * under any adv_i pattern: nothing moves while adv_i is low, exactly l + 1 pixels per
+//     span with out_last_o on the last, in order, and span_ready_o = adv_i && register 8
 //     free, never depending on span_valid_i.
 #include "Vcontrol.h"
 #include "rtl_harness.hpp"
@@ -31,7 +34,7 @@ struct Bench {
   int counter = 0;
   Bench() {
     dut.span_valid_i = 0;
-    dut.px_ready_i = 0;
+    dut.adv_i = 0;
     dut.cnt_zero_i = 1;
     reset(dut);
   }
@@ -41,7 +44,7 @@ struct Bench {
   };
   Result cycle(bool offer, int len, bool ready) {
     dut.span_valid_i = offer;
-    dut.px_ready_i = ready;
+    dut.adv_i = ready;
     dut.cnt_zero_i = counter == 0;
     dut.eval();
     // span_ready_o must not depend on span_valid_i.
@@ -51,12 +54,11 @@ struct Bench {
     CHECK(static_cast<bool>(dut.span_ready_o) == ready_with);
     dut.span_valid_i = offer;
     dut.eval();
-    const bool adv = !dut.px_valid_o || ready;
-    CHECK(static_cast<bool>(dut.adv_o) == adv);
+    const bool adv = ready;
     const bool reg8_free = !(dut.stage_valid_o & 1) || counter == 0;
     CHECK(static_cast<bool>(dut.span_ready_o) == (adv && reg8_free));
-    const Result r{offer && dut.span_ready_o, dut.px_valid_o && ready, static_cast<bool>(dut.px_last_o),
-                   static_cast<bool>(dut.px_valid_o)};
+    const Result r{offer && dut.span_ready_o, dut.out_valid_o && ready, static_cast<bool>(dut.out_last_o),
+                   static_cast<bool>(dut.out_valid_o)};
     CHECK(static_cast<bool>(dut.accept_o) == r.accepted);
     if (r.accepted) CHECK(dut.sel_o == 0);
     if (dut.strobe_o && !r.accepted) CHECK(dut.sel_o == 1);
@@ -89,7 +91,7 @@ TEST_CASE("control unit: back-to-back spans, ready high, one pixel per clock", "
   for (size_t j = 0; j < last_cycles.size(); ++j) CHECK(last_cycles[j] == kLatency + static_cast<int>(j + 1) * (l + 1) - 1);
 }
 
-TEST_CASE("control unit: random offers and px_ready_i, count / last / order", "[rtl][control]") {
+TEST_CASE("control unit: random offers and adv_i, count / last / order", "[rtl][control]") {
   const uint64_t seed = GENERATE(1, 2, 3, 4);
   std::mt19937_64 rng(seed);
   Bench b;
@@ -104,8 +106,8 @@ TEST_CASE("control unit: random offers and px_ready_i, count / last / order", "[
     const bool ready = ready_d(rng);
     b.dut.eval();
     if (prev_stalled) {
-      CHECK(b.dut.px_valid_o == 1);
-      CHECK(static_cast<bool>(b.dut.px_last_o) == prev_last);
+      CHECK(b.dut.out_valid_o == 1);
+      CHECK(static_cast<bool>(b.dut.out_last_o) == prev_last);
     }
     const auto r = b.cycle(offering, len, ready);
     if (r.fired) {
@@ -136,12 +138,12 @@ TEST_CASE("control unit: random offers and px_ready_i, count / last / order", "[
   CHECK(spans > 100);
   b.dut.eval();
   CHECK(b.dut.busy_o == 0);
-  CHECK(b.dut.px_valid_o == 0);
+  CHECK(b.dut.out_valid_o == 0);
 }
 
 TEST_CASE("control unit: reset drops everything in flight", "[rtl][control]") {
   Bench b;
-  for (int c = 0; c < 3; ++c) b.cycle(true, 3, false);
+  for (int c = 0; c < 3; ++c) b.cycle(true, 3, true);
   b.dut.eval();
   CHECK(b.dut.busy_o == 1);
   reset(b.dut);

@@ -30,14 +30,14 @@ using specular::rtl_test::tick;
 namespace {
 
 using R = Vunit_specular_unit;  // public parameters (/*verilator public*/)
-// Start in cycle s -> first valid pixel in s + L (L = 22): the start latch, register 8 (two
+// Start in cycle s -> first valid pixel in s + L (L = 23): the start latch, register 8 (two
 // stages: the 44-bit add split in halves) and the block latencies, each a register stage
 // around a tree of radix-4 digits: multiplier 11: |psi|, 1 + clog2(11), address = 7;
 // ROM 12: read, 1 + clog2(6) over the 12 bits of d, subtraction = 6; multiplier 13:
-// 1 + clog2(10) over the 19 bits of cos^k, output = 6. The tests use the RTL's own Latency
-// and measure it; the protocol test requires it to be this sum.
+// 1 + clog2(10) over the 19 bits of cos^k, output = 6; the stream's output buffer = 1. The
+// tests use the RTL's own Latency and measure it; the protocol test requires this sum.
 constexpr int kLatency = static_cast<int>(R::Latency);
-constexpr int kBlockLatency = 1 + 2 + 7 + 6 + 6;  // latch, register 8, mul 11, ROM 12, mul 13
+constexpr int kBlockLatency = 1 + 2 + 7 + 6 + 6 + 1;  // latch, reg 8, mul 11, ROM 12, mul 13, buffer
 constexpr int kLineOverhead = kLatency + 1;  // start to next accepted start: l + L + 1 cycles
 
 struct Line {
