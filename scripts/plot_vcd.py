@@ -16,23 +16,27 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
-# (label, hierarchical-name suffix, kind): kind "bit", "udec" (unsigned decimal bus),
-# "pixel" (like udec, one box per valid cycle, labelled with the pixel index),
-# "angle" (signed radians with ANGLE_FRAC fraction bits).
+# (label, hierarchical-name suffix, kind): kind "bit", "lsb" (bit 0 of a bus), "udec"
+# (unsigned decimal bus), "pixel" (like udec, one box per valid cycle, labelled with the
+# pixel index), "angle" (signed radians with ANGLE_FRAC fraction bits). The names follow
+# the RTL hierarchy: specular_unit (host registers, start latch start_q, offer bit offer_q)
+# > u_stream (specular_stream) > u_control14, u_counter5, u_accumulator.
 ANGLE_FRAC = 28
 SIGNALS = [
     ("clk_i", "specular_unit.clk_i", "clock"),
     ("register writes (16..24)", "specular_unit.c_we_i", "bit"),
     ("start_i (26)", "specular_unit.start_i", "bit"),
-    ("start latch = busy (28)", "u_control.start_q", "bit"),
-    ("run (pulse gen.)", "u_control.run_q", "bit"),
-    ("mux select (36)", "u_control.mux_sel_q", "bit"),
-    ("count enable", "u_control.cnt_en_q", "bit"),
-    ("reg 8 write (37)", "u_control.strobe_o", "bit"),
-    ("count pulse (34)", "u_control.count_o", "bit"),
-    ("counter 5", "u_counter5.cnt_q", "udec"),
-    ("borrow (35)", "u_counter5.borrow_o", "bit"),
-    ("reg 8: psi [rad]", "u_accumulator.psi_q", "angle"),
+    ("start latch = busy (28)", "specular_unit.start_q", "bit"),
+    ("span offered to the stream", "specular_unit.offer_q", "bit"),
+    ("span accepted", "u_stream.u_control14.accept_o", "bit"),
+    ("mux select (36)", "u_stream.u_control14.sel_o", "bit"),
+    ("reg 8 write (37)", "u_stream.u_control14.strobe_o", "bit"),
+    ("run: reg 8 holds a pixel", "u_stream.u_control14.vld_q", "lsb"),
+    ("count pulse (34)", "u_stream.u_control14.count_o", "bit"),
+    ("counter 5", "u_stream.u_counter5.cnt_q", "udec"),
+    ("borrow (35)", "u_stream.u_counter5.borrow_o", "bit"),
+    ("reg 8, high-half stage: psi [rad]", "u_stream.u_accumulator.psi_o", "angle"),
+    ("last stage valid (29)", "u_stream.u_control14.out_valid_o", "bit"),
     ("busy_o (28)", "specular_unit.busy_o", "bit"),
     ("valid_o (29)", "specular_unit.valid_o", "bit"),
     ("intensity_o (27)", "specular_unit.intensity_o", "pixel"),
@@ -153,6 +157,9 @@ def main(argv):
             ax.plot(xs, ys, color="black", lw=1)
             continue
         vals = [value_at(hist, t) for t in rises]
+        if kind == "lsb":
+            vals = [v[-1] if v else v for v in vals]
+            kind = "bit"
         if kind == "bit":
             xs, ys = [], []
             for c, v in enumerate(vals):
