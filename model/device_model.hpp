@@ -38,7 +38,7 @@
 
 namespace specular::device {
 
-// The default build: interpolated ROM 12 of 8 banks x 256 entries (61,440 bits), minimax
+// The default build: interpolated ROM 12 of 8 banks x 256 entries x 31 bits (63,488 bits), minimax
 // coefficients, decoder table derived from the bank set (derive_bank_max_n). Format::patent()
 // is the patent's own configuration: direct 4096-entry table, banks {1, 2, 4, 16}, decoder
 // 1 | 2 | 3..6 | 7..1000 (with maclaurin coefficients a = sqrt(n/k) in ROM 9).

@@ -176,8 +176,11 @@ std::vector<uint32_t> read_hex(const std::string& path, int bits, int depth) {
   while (std::getline(in, line)) {
     ++lineno;
     if (line.empty()) fail("empty line");
-    if (static_cast<int>(line.size()) > digits)
-      fail("'" + line + "' has more than " + std::to_string(digits) + " hex digits");
+    // Exactly ceil(bits/4) digits (the documented zero padding): a file written for another
+    // word width is refused even when its words would fit.
+    if (static_cast<int>(line.size()) != digits)
+      fail("'" + line + "' has " + std::to_string(line.size()) + " hex digits, expected " + std::to_string(digits) +
+           " (words of " + std::to_string(bits) + " bits)");
     uint64_t v = 0;
     for (char ch : line) {
       int d;

@@ -17,8 +17,8 @@
 //   zero    far, or past a quarter turn, or n invalid (decoder 10)
 // Pipeline, every register enabled by en_i (stall): stage 1 |psi| and the coefficient;
 // stages 2 .. 1 + MulStages the radix-4 multiplier tree (specular_pipe_mul) with the pi/2 test
-// (stages 2 and 3) and n_valid beside it; then the address register. Latency = Latency (2 + MulStages) clocks from the
-// pixel in register 8 to addr_o / frac_o / zero_o.
+// (stages 2 and 3) and n_valid beside it; then the address register: 2 + MulStages clocks
+// from psi_i to addr_o / frac_o / zero_o.
 
 module specular_angle_mul #(
   parameter int AccBits     = 44,

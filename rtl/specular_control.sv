@@ -11,7 +11,8 @@
 //   mux select 36 sel_o: 0 on the strobe that loads psi0 of an accepted span, else 1
 //   count enable  count_o: the count pulse 34 of counter 5, one per pixel leaving reg 8
 // The data-valid strobe 29 is vld_q delayed along the PipeDepth stages (register 8 ->
-// multiplier 11 (2 stages) -> ROM 12 -> multiplier 13 / output register); last_q marks
+// multiplier 11 -> ROM 12 -> multiplier 13 / output register: specular_stream sets
+// PipeDepth from the blocks' latencies; the default 5 serves the block test); last_q marks
 // the pixel that took the borrow 35 of counter 5 (the last of its span).
 //
 // Handshake (AXI4-Stream rules on the span side; the pixel side is specular_out_buf):

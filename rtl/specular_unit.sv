@@ -49,11 +49,14 @@
 // no @ addresses.
 //   CoefRomFile  2^NBits words of CoefBits bits: word n = round(a(n, k(n)) * 2/pi *
 //                2^CoefFrac), 0 for n = 0 and n > 1000
-//   CosRomFile   NumBanks * 2^CosAddrBits words of CosDataBits bits: word
-//                bank * 2^CosAddrBits + i = min(round(cos^k_bank(i * pi/2 / 2^CosAddrBits)
-//                * 2^CosDataBits), 2^CosDataBits - 1)
+//   CosRomFile   NumBanks * 2^CosAddrBits words, h = pi/2 / 2^CosAddrBits:
+//                interpolated (CosInterp = 1): {v, d}, v = round(cos^k(i h) * 2^CosDataBits)
+//                in CosDataBits + 1 bits, d = v - v(i + 1) in CosDeltaBits bits;
+//                direct (CosInterp = 0, the patent): min(round(cos^k(i h) * 2^CosDataBits),
+//                2^CosDataBits - 1) in CosDataBits bits (specular_cos_k_rom.sv)
 // The numeric parameter defaults equal struct specular::device::Format; the k of each ROM 12
-// bank (default 1, 2, 4, 16) lives only in CosRomFile, the hardware does not need it.
+// bank (default 1, 2, 3, 4, 6, 8, 12, 16) lives only in CosRomFile, the hardware does not
+// need it.
 // The numeric parameters are /*verilator public*/: a Verilator testbench reads them as
 // static constants V<prefix>_specular_unit::CBits, ... (header V<prefix>_specular_unit.h),
 // e.g. to refuse to run when they differ from Format.

@@ -6,7 +6,7 @@ Every figure in the text is taken from the outputs of this run:
   BUILD/bin/evaluator_bench   Google Benchmark timing of the C++ evaluators (ns per pixel)
   BUILD/bin/report_data       errors (SPEC section 3), albedo, device error of RTL
                               configurations (golden model), SPEC section 4 hard cases
-  BUILD/bin/romgen + yosys    ROM images and ice40 cell counts per RTL configuration
+  yosys                       ice40 cell counts per RTL build configuration (committed ROMs)
   BUILD/bin/sim_regression    Verilator regression throughput (reduced random count)
   scripts/fpga.sh             out-of-context place and route (nextpnr-ice40, HX8K and UP5K)
 Missing programs are reported in the text, not silently skipped.
@@ -47,8 +47,8 @@ EVALUATORS = [
     ("prototype", "prototype cos^2(ax)", "angle"),
     ("patent", "patent, float (maclaurin a)", "angle"),
     ("patent_minimax", "patent, float, minimax a", "angle"),
-    ("device", "golden fixed-point device model, maclaurin ROM", "registers"),
-    ("device_minimax", "golden fixed-point device model, minimax ROM", "registers"),
+    ("device", "golden fixed-point device model, patent build (direct ROM 12, maclaurin)", "registers"),
+    ("device_minimax", "golden fixed-point device model, default build (interpolated ROM 12, minimax)", "registers"),
     # whole-span evaluators (model/span_shade.hpp): span parameters in, nothing precomputed per pixel
     ("pow_cos", "span: scalar double std::pow(cos psi, n)", "psi0, dpsi"),
     ("phong_scalar", "span: per-pixel Phong, float (lerp N, normalize, N.H, powf)", "N0, N1, H"),
@@ -137,32 +137,31 @@ class Report:
         return json.load(open(path))
 
     def synth_one(self, cfg):
-        """romgen + Yosys synth_ice40 of cfg['top'] (default specular_unit) for one configuration."""
+        """Yosys synth_ice40 of cfg['top'] (default specular_unit) for one build configuration of
+        report_data's hardware section: its committed ROM files and its parameters by chparam."""
         top = cfg.get("top", "specular_unit")
-        romgen = self.exe("romgen")
-        d = os.path.join(self.out, "roms", cfg["name"])
+        d = os.path.join(self.out, "synth", cfg["name"])
         os.makedirs(d, exist_ok=True)
         log = os.path.join(self.logs, f"synth_{cfg['name']}.log")
-        cmd = [romgen, "--out-dir", d, "--policy", cfg["policy"], "--cos-addr-bits", str(cfg["cos_addr_bits"]),
-               "--cos-data-bits", str(cfg["cos_data_bits"]), "--banks", ",".join(map(str, cfg["banks"])),
-               "--bank-max-n", ",".join(map(str, cfg["bank_max_n"])), "--quiet"]
-        rc, _ = run(cmd, log + ".romgen")
-        if rc != 0:
-            return {"error": f"romgen exit {rc} (logs/{os.path.basename(log)}.romgen)"}
-        coef = glob.glob(os.path.join(d, "coef_*.hex"))
-        cos = glob.glob(os.path.join(d, "cos_k_*.hex"))
-        if len(coef) != 1 or len(cos) != 1:
-            return {"error": "romgen did not write one coef and one cos ROM"}
+        coef = [os.path.join(ROOT, cfg["coef_rom"])]
+        cos = [os.path.join(ROOT, cfg["cos_rom"])]
+        for path in coef + cos:
+            if not os.path.exists(path):
+                return {"error": f"ROM file {os.path.relpath(path, ROOT)} missing (make roms)"}
         nb = len(cfg["banks"])
         # BankMaxN is {bank_max_n[nb-1], ..., bank_max_n[0]}, 10 bits each.
         packed = sum(v << (10 * j) for j, v in enumerate(cfg["bank_max_n"]))
         stat = os.path.join(d, "stat_ice40.txt")
         sources = " ".join(sorted(glob.glob(os.path.join(ROOT, "rtl", "*.sv"))))
         script = os.path.join(d, "synth.ys")
+        params = {"CoefBits": cfg["coef_bits"], "CoefFrac": cfg["coef_frac"], "PsiMulFrac": cfg["psi_mul_frac"],
+                  "CosInterp": 1 if cfg["cos_interp"] else 0, "CosAddrBits": cfg["cos_addr_bits"],
+                  "CosDataBits": cfg["cos_data_bits"], "CosDeltaBits": cfg["cos_delta_bits"],
+                  "CosFracBits": cfg["cos_frac_bits"], "NumBanks": nb}
+        sets = " ".join(f"-set {k} {v}" for k, v in params.items())
         with open(script, "w") as f:
             f.write(f"read_verilog -sv {sources}\n"
-                    f"chparam -set CosAddrBits {cfg['cos_addr_bits']} -set CosDataBits {cfg['cos_data_bits']} "
-                    f"-set NumBanks {nb} -set BankMaxN {10 * nb}'h{packed:x} "
+                    f"chparam {sets} -set BankMaxN {10 * nb}'h{packed:x} "
                     f"-set CoefRomFile \"{coef[0]}\" -set CosRomFile \"{cos[0]}\" {top}\n"
                     f"hierarchy -check -top {top}\n"
                     f"synth_ice40 -top {top}\n"
@@ -206,9 +205,6 @@ class Report:
     def synth(self, configs):
         if not configs:
             return {}
-        if not self.exe("romgen"):
-            self.missing.append("romgen was not built: no Yosys cell counts")
-            return {}
         if not shutil.which("yosys"):
             self.missing.append("yosys is not on PATH: no cell counts")
             return {}
@@ -218,7 +214,7 @@ class Report:
         t0 = time.time()
         with concurrent.futures.ThreadPoolExecutor(max_workers=self.args.jobs) as pool:
             res = dict(zip([c["name"] for c in configs], pool.map(self.synth_one, configs)))
-        self.timings["romgen + yosys (all configurations)"] = time.time() - t0
+        self.timings["yosys (all configurations)"] = time.time() - t0
         for name, r in res.items():
             if "error" in r:
                 self.missing.append(f"synthesis of {name}: {r['error']}")
@@ -276,7 +272,7 @@ class Report:
             rows[e["name"]] = {"n": e["n"], "rel": [fnum(v) for v in e["max_rel_epicenter"]],
                                "abs": [fnum(v) for v in e["max_abs_lobe"]]}
         for h in data.get("hardware", []):
-            key = {"default-maclaurin": "device", "default-minimax": "device_minimax"}.get(h["name"])
+            key = {"patent": "device", "default": "device_minimax"}.get(h["name"])
             if key:
                 rows[key] = {"n": h["n"], "rel": [fnum(v) for v in h["max_rel_epicenter"]],
                              "abs": [fnum(v) for v in h["max_abs_lobe"]]}
@@ -566,43 +562,48 @@ class Report:
         # --- hardware
         hw = data.get("hardware", [])
         w("## 4. Hardware configurations\n")
-        w("Device error: the golden fixed-point model (bit-exact with the RTL, as the Verilator regression verifies for the "
-          "default configurations -- see section 5; other configurations use the same parameterized datapath and ROM "
-          "generator) run over three scanlines of 2048 pixels for every n = 1..1000: psi in [0, x_e(n)] for the "
+        w("The build configurations of `model/rom_image.cpp` (`build_configs()`): the RTL default, the patent's own "
+          "configuration and two variants; `sim_regression` verilates each with its parameters and checks it bit-exactly "
+          "against the golden model (section 5), so every figure here is one the RTL produces. Device error: the golden "
+          "fixed-point model over three scanlines of 2048 pixels for every n = 1..1000: psi in [0, x_e(n)] for the "
           "relative epicenter error, [0, min(pi/2, 12/sqrt n)] and [0, pi/2] for the absolute lobe error, reference "
-          "C cos^n(psi_i) at the exact quantized pixel angles, C = 1. For n = 1 the relative error is taken over "
-          "[0, pi/3] (cos >= 1/2): a fixed-point output has unbounded relative error where cos^n -> 0. The error includes "
-          "the output quantization (1 LSB = 2^-15). Decoder tables of other bank sets are derived in `report_data`: bank "
-          "j+1 takes over at the first n where its float error is not larger (this reproduces the patent's "
-          "1 | 2 | 3..6 | 7..1000 for {1,2,4,16}). Cells: Yosys `synth_ice40` of `specular_unit` with `chparam` for the "
-          "configuration and ROMs generated by `romgen` into `roms/<config>/`; multipliers are LUT logic (no DSP). "
-          "(r): Yosys was not re-run because the RTL sources, both ROM files, the script and the Yosys version hash to "
-          "the same key as the run that produced `roms/<config>/stat_ice40.txt` (synthesis is deterministic; "
-          "`--fresh-synth` forces it).\n")
+          "C cos^n(psi_i) at the exact quantized pixel angles, C = 1. 'worst rel. epicenter' is raw (output quantization "
+          "included; n = 1 over [0, pi/3], cos >= 1/2); 'goal metric' is the hardware goal: (|err| - 1 output LSB) / ref "
+          "over the epicenter, n = 1 over all of [0, pi/2] wherever the reference is at least 4 LSB. Decoder tables are "
+          "derived from the bank set (`model/decoder_table.hpp`: bank j+1 takes over at the first n where its float error "
+          "is not larger; this reproduces the patent's 1 | 2 | 3..6 | 7..1000 for {1,2,4,16}). Cells: Yosys "
+          "`synth_ice40` of `specular_unit` with `chparam` for the configuration and its committed ROM files; multipliers "
+          "are LUT logic (no DSP). (r): Yosys was not re-run because the RTL sources, both ROM files, the script and the "
+          "Yosys version hash to the same key as the run that produced `synth/<config>/stat_ice40.txt` (synthesis is "
+          "deterministic; `--fresh-synth` forces it).\n")
         hdr = ("| config | ROM 12 addr/data bits | policy | banks (decoder max n) | ROM bits (coef + cos) | worst rel. epicenter | "
+               "goal metric (+1 LSB, n = 1 to pi/2) | "
                + " | ".join(f"n={a}..{b}" for a, b in BANDS) + " | worst abs. lobe | LUT4 | FF | SB_RAM40_4K | SB_CARRY |")
         w(hdr)
         w("|" + "---|" * (hdr.count("|") - 1))
         for h in hw:
             c = cells.get(h["name"], {})
             rel = [fnum(v) for v in h["max_rel_epicenter"]]
+            rel_lsb = [fnum(v) for v in h.get("max_rel_epicenter_lsb", [])]
             ab = [fnum(v) for v in h["max_abs_lobe"]]
             cc = " | ".join(str(c.get(k, "n/a")) for k in ("lut4", "ff", "bram", "carry")) if "lut4" in c else \
                 " | ".join(["n/a"] * 4)
             if c.get("reused"):
                 cc += " (r)"
-            w(f"| {h['name']} | {h['cos_addr_bits']}/{h['cos_data_bits']} | {h['policy']} | "
+            kind = "interp" if h.get("cos_interp") else "direct"
+            w(f"| {h['name']} | {kind} {h['cos_addr_bits']}/{h['cos_data_bits']} | {h['policy']} | "
               f"{{{','.join(map(str, h['banks']))}}} ({','.join(map(str, h['bank_max_n']))}) | "
               f"{h['coef_rom_bits'] + h['cos_rom_bits']} ({h['coef_rom_bits']} + {h['cos_rom_bits']}) | "
-              f"{fmt_err(self.worst(h['n'], rel))} | "
+              f"{fmt_err(self.worst(h['n'], rel))} | {fmt_err(self.worst(h['n'], rel_lsb)) if rel_lsb else 'n/a'} | "
               + " | ".join(fmt_err(self.worst(h["n"], rel, a, b)) for a, b in BANDS)
               + f" | {fmt_err(self.worst(h['n'], ab), False)} | {cc} |")
         cpp = [(name, p.get("cycles_per_pixel"), p.get("cycles_per_pixel_long_lines"))
-               for name, p in (sim or {}).get("policies", {}).items()]
+               for name, p in (sim or {}).get("configs", {}).items()]
         if cpp:
-            w("\nCycles per pixel, measured by the Verilator regression of the default configurations (section 5): "
+            w("\nCycles per pixel of the register interface (`specular_unit`, l + latency + 1 clocks per line), measured "
+              "by the Verilator regression (section 5): "
               + "; ".join(f"{n}: {a:.4f} over all lines, {b:.4f} on l = 2047 lines" for n, a, b in cpp)
-              + ". The other configurations change only widths, ROM depth and the decoder table, not the pipeline.\n")
+              + ". The streaming core sustains one pixel per clock whatever l (section 5).\n")
         else:
             w("\nCycles per pixel: not measured in this run (no regression).\n")
         if pnr:
@@ -641,10 +642,10 @@ class Report:
         if sim:
             w(f"`sim_regression --random {self.args.random} --json sim.json` (exit code {sim.get('exit_code')}, "
               f"overall {'PASS' if sim.get('ok') else 'FAIL'}):\n")
-            w("| policy | lines | pixels | mismatches vs golden model | cycles/pixel | wall s | RTL (Verilator) s | "
+            w("| configuration | lines | pixels | mismatches vs golden model | cycles/pixel | wall s | RTL (Verilator) s | "
               "RTL share | other (golden model, reference, checks) share | simulated pixels/s | checked pixels/s |")
             w("|---|---|---|---|---|---|---|---|---|---|---|")
-            for name, p in sim.get("policies", {}).items():
+            for name, p in sim.get("configs", {}).items():
                 tot = p.get("seconds", 0) or 0
                 rtl = p.get("sim_seconds", 0) or 0
                 gold = p.get("golden_seconds")
@@ -660,13 +661,13 @@ class Report:
               "double precision; relative error raw where the reference is >= C/2 -- inside the epicenter, and the "
               "level where section 4's sweep stops for n = 1; absolute lobe error divided by C with one output LSB "
               "allowed), next to the golden-model sweep of section 4 for the same ROM and the regression's budget:\n")
-            w("| policy | regression max rel. epicenter | at n, psi | regression max abs. lobe / C | at n, psi | "
+            w("| configuration | regression max rel. epicenter | at n, psi | regression max abs. lobe / C | at n, psi | "
               "sweep worst rel. epicenter | sweep worst abs. lobe | budget rel. / abs. |")
             w("|---|---|---|---|---|---|---|---|")
             sweep = {h["name"]: h for h in data.get("hardware", [])}
-            for name, p in sim.get("policies", {}).items():
+            for name, p in sim.get("configs", {}).items():
                 rr, ra = p.get("rel_epicenter_raw_ref_ge_half", {}), p.get("abs_lobe_with_lsb", {})
-                h = sweep.get(f"default-{name}")
+                h = sweep.get(name)
                 sw_r = fmt_err(self.worst(h["n"], h["max_rel_epicenter"])) if h else "n/a"
                 sw_a = fmt_err(self.worst(h["n"], h["max_abs_lobe"]), False) if h else "n/a"
                 b = p.get("budget", {})
@@ -678,11 +679,11 @@ class Report:
                 w("\nScenes (`scenes/*.json`, every covered pixel through the RTL; device error = RTL - C cos^n(psi_i) "
                   "from the loaded registers, interpolation-model error = spherical-interpolation float model - per-pixel "
                   "Phong; images in `scenes/` beside this report):\n")
-                w("| scene | policy | spans | pixels | bit-exact mismatches | max abs device error | max rel. epicenter "
+                w("| scene | configuration | spans | pixels | bit-exact mismatches | max abs device error | max rel. epicenter "
                   "(+1 LSB) | max abs interpolation error | simulated pixels/s |")
                 w("|---|---|---|---|---|---|---|---|---|")
                 for sname, sc in sorted(scenes.items()):
-                    for pname, p in sc.get("by_policy", {}).items():
+                    for pname, p in sc.get("by_config", {}).items():
                         w(f"| {sname} | {pname} | {p.get('spans', 'n/a')} | {p.get('pixels')} | {p.get('mismatches')} | "
                           f"{fnum(p.get('max_device_error_abs')):.3g} | {fmt_err(p.get('max_device_rel_epicenter'))} | "
                           f"{fnum(p.get('max_interp_error_abs')):.3g} | {fnum(p.get('simulated_pixels_per_second')):.3g} |")
@@ -706,13 +707,13 @@ class Report:
                 for sname, x in sorted(ss.items()):
                     w(f"| {sname} | {x.get('spans')} | {x.get('pixels')} | {fnum(x.get('stream_clocks_per_pixel')):.4f} | "
                       f"{fnum(x.get('register_clocks_per_pixel')):.4f} | {x.get('mismatches')} |")
-            sc_u, sc_s = cells.get("default-minimax", {}), cells.get("default-minimax-stream", {})
+            sc_u, sc_s = cells.get("default", {}), cells.get("default-stream", {})
             if "lut4" in sc_u and "lut4" in sc_s:
                 w("\nCells (Yosys `synth_ice40`, default configuration): "
                   f"`specular_unit` {sc_u['lut4']} LUT4, {sc_u['ff']} FF, {sc_u['bram']} SB_RAM40_4K; "
                   f"`specular_stream` {sc_s['lut4']} LUT4, {sc_s['ff']} FF, {sc_s['bram']} SB_RAM40_4K "
                   "(the unit is the stream plus its host registers and start latch).\n")
-            if not any("golden_seconds" in p for p in sim.get("policies", {}).values()):
+            if not any("golden_seconds" in p for p in sim.get("configs", {}).values()):
                 w("\nThe regression's JSON reports the time inside the Verilator model (`sim_seconds`) and the total; the "
                   "golden model and the floating-point reference are not timed separately, so their shares are given "
                   "together.\n")
@@ -754,7 +755,7 @@ class Report:
         hw_cfgs = data.get("hardware", [])
         # The streaming core of the default configuration, next to specular_unit's cells.
         stream_cfgs = [dict(h, name=h["name"] + "-stream", top="specular_stream")
-                       for h in hw_cfgs if h["name"] == "default-minimax"]
+                       for h in hw_cfgs if h["name"] == "default"]
         cells = self.synth(hw_cfgs + stream_cfgs) if not smoke else {}
         pnr = self.pnr() if not smoke else ()
         sim = self.sim() if not (self.args.no_sim or smoke) else {}

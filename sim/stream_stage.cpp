@@ -80,7 +80,7 @@ nlohmann::json SceneStreamStats::to_json() const {
 
 void print_stream_summary(const StreamStats& s, const std::vector<SceneStreamStats>& scenes) {
   const auto& c = s.c;
-  std::printf("\nStream stage (specular_stream, minimax ROM): random spans, gaps, px_ready_i patterns, resets\n");
+  std::printf("\nStream stage (specular_stream, default build): random spans, gaps, px_ready_i patterns, resets\n");
   std::printf("  spans accepted %llu (target %llu), pixels checked %llu, cycles %llu, max l %llu\n",
               (unsigned long long)c.spans_accepted, (unsigned long long)s.spans_target, (unsigned long long)c.pixels,
               (unsigned long long)c.cycles, (unsigned long long)s.max_l);
@@ -102,7 +102,7 @@ void print_stream_summary(const StreamStats& s, const std::vector<SceneStreamSta
   if (scenes.empty()) return;
   std::printf("\nScenes through the stream (spans back to back, px_ready_i high) against the register interface:\n");
   std::printf("| %-14s | %8s | %9s | %-22s | %-26s | %10s | %-6s |\n", "scene", "spans", "pixels", "stream clocks/pixel",
-              "register clocks/pixel (l+7)", "mismatches", "result");
+              "register clocks/pixel (l+L+1)", "mismatches", "result");
   std::printf("|----------------|----------|-----------|------------------------|----------------------------|------------|--------|\n");
   uint64_t px = 0, sc = 0, rc = 0;
   for (const auto& x : scenes) {

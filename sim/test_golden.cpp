@@ -2,6 +2,7 @@
 // against hand-computed values of the header contract, with synthetic ROMs whose contents
 // make every stage visible (identity cos ROM, power-of-two coefficients).
 #define CATCH_CONFIG_MAIN  // single-file test executable
+#include "decoder_table.hpp"
 #include "device_model.hpp"
 #include "rom_image.hpp"
 
@@ -21,9 +22,10 @@ using device::Registers;
 
 namespace {
 
-// Every coefficient word = `coef`; ROM 12 word = its own address within the bank plus
+// The patent's build (direct ROM 12, 4096 entries, coefficient words with 15 fraction bits):
+// every coefficient word = `coef`; ROM 12 word = its own address within the bank plus
 // bank * 10000 (so the bank is visible in the output too: values stay below 2^16).
-DeviceModel synthetic(uint32_t coef, const Format& f = Format{}) {
+DeviceModel synthetic(uint32_t coef, const Format& f = Format::patent()) {
   std::vector<uint32_t> c(f.coef_rom_depth(), coef);
   std::vector<uint32_t> k(f.cos_rom_depth());
   for (size_t i = 0; i < k.size(); ++i) k[i] = static_cast<uint32_t>((i & 4095) + (i >> 12) * 10000);
@@ -64,7 +66,7 @@ TEST_CASE("quantize_angle rounds to nearest and saturates", "[golden]") {
   CHECK(device::angle_value(-843314857, f) == Approx(-std::numbers::pi).epsilon(1e-9));
 }
 
-TEST_CASE("decoder 10 follows the patent table", "[golden]") {
+TEST_CASE("decoder 10 follows the patent table in the patent build", "[golden]") {
   const auto m = synthetic(1u << 15);
   CHECK(m.bank_of(0) == -1);
   CHECK(m.bank_of(1) == 0);
@@ -77,8 +79,8 @@ TEST_CASE("decoder 10 follows the patent table", "[golden]") {
   CHECK(m.bank_of(1023) == -1);
 }
 
-TEST_CASE("datapath stages by hand", "[golden]") {
-  const Format f;
+TEST_CASE("datapath stages by hand (patent build)", "[golden]") {
+  const Format f = Format::patent();
   // coef word 2^15 means a * 2/pi = 1: zeta = |psi| in quarter turns per radian.
   const auto m = synthetic(1u << 15);
   Registers r;
@@ -94,9 +96,11 @@ TEST_CASE("datapath stages by hand", "[golden]") {
   // Bank 3 (n = 7..1000) adds 30000 in the synthetic ROM: (32768 * 31024 + 2^15) >> 16.
   r.n = 500;
   CHECK(m.pixel(r, 0) == 15512u);
-  // cos is even: -psi gives the same pixel.
+  // cos is even: -psi gives the same pixel (its one's complement magnitude is one code
+  // below |psi|, 2^-28 rad, far below the address step).
   Registers neg = r;
   neg.psi0 = -r.psi0;
+  CHECK(m.trace(neg, 0).abs_psi == (uint64_t{1} << 26) - 1);
   CHECK(m.pixel(neg, 0) == m.pixel(r, 0));
 }
 
@@ -122,23 +126,77 @@ TEST_CASE("ROM 12 address rounds half up and overflows at a*psi = pi/2", "[golde
   CHECK(t.intensity == 0u);
 }
 
-TEST_CASE("|psi| >= 8 rad is zero without the multiplier; below it the product decides", "[golden]") {
-  const auto m = synthetic(1u << 12);  // a * 2/pi = 1/8, the smallest coefficient allowed
+TEST_CASE("|psi| >= pi/2 is zero exactly, both signs, whatever a", "[golden]") {
+  // a * 2/pi = 1/8 (a < 1): without the test the lobe of cos^k(a psi) would run far past
+  // pi/2, where N.H < 0 and the reference is 0.
+  for (const Format& f : {Format::patent(), Format{}}) {
+    const uint32_t coef = 1u << (f.coef_frac - 3);
+    std::vector<uint32_t> c(f.coef_rom_depth(), coef);
+    std::vector<uint32_t> k(f.cos_rom_depth(), f.cos_interp ? (1u << (f.cos_data_bits - 1)) << f.cos_delta_bits : 1000u);
+    const DeviceModel m(f, c, k);
+    // ceil(pi/2 * 2^28), from the decimal expansion of pi/2 = 1.5707963267948966...
+    const int64_t h = 421657429;
+    REQUIRE(f.half_pi_code() == h);
+    REQUIRE(std::ldexp(static_cast<double>(h - 1), -28) < std::numbers::pi / 2);
+    REQUIRE(std::ldexp(static_cast<double>(h), -28) > std::numbers::pi / 2);
+    Registers r;
+    r.c = 32768;
+    r.n = 1000;
+    for (int sign : {1, -1}) {
+      INFO("interp " << f.cos_interp << ", sign " << sign);
+      r.psi0 = sign * h;
+      CHECK(m.trace(r, 0).far);
+      CHECK(m.pixel(r, 0) == 0u);
+      r.psi0 = sign * (h - 1);
+      CHECK_FALSE(m.trace(r, 0).far);
+      CHECK(m.pixel(r, 0) != 0u);  // a * psi = pi/16 < pi/2: the ROM word decides
+      r.psi0 = sign * (int64_t{8} << 28);
+      CHECK(m.trace(r, 0).far);
+    }
+  }
+}
+
+TEST_CASE("interpolated ROM 12: address, weight and cos^k = v - d t by hand", "[golden]") {
+  const Format f;  // interpolated: 256 entries, 12-bit weight, 18 fraction bits
+  REQUIRE(f.cos_interp);
+  // Coefficient word 2^18: a * 2/pi = 1, zeta = |psi| (quarter turns per radian).
+  std::vector<uint32_t> c(f.coef_rom_depth(), 1u << 18);
+  // Every word: v = 2^17 + bank, d = 1000.
+  std::vector<uint32_t> k(f.cos_rom_depth());
+  for (size_t i = 0; i < k.size(); ++i) k[i] = ((1u << 17) + static_cast<uint32_t>(i >> 8)) << 12 | 1000u;
+  const DeviceModel m(f, c, k);
   Registers r;
-  r.c = 65535;
-  r.n = 1000;
-  r.psi0 = (int64_t{8} << 28) - (int64_t{1} << 10);  // 8 rad - 2^-18
+  r.c = 32768;
+  r.n = 1;
+  // psi = (37 + 1/4) / 256 rad: address 37, weight 1024 of 4096.
+  r.psi0 = (int64_t{37} << 20) + (int64_t{1} << 18);
   auto t = m.trace(r, 0);
-  CHECK_FALSE(t.far);
-  CHECK(t.addr == 4096u);  // zeta = 1 - 2^-21 rounds to the overflow address
-  CHECK(t.intensity == 0u);
-  r.psi0 = int64_t{8} << 28;
-  t = m.trace(r, 0);
-  CHECK(t.far);
-  CHECK(t.intensity == 0u);
-  // 7 rad / 8 = 0.875 quarter turn -> address 3584, bank 3 word 3584 + 30000.
-  r.psi0 = int64_t{7} << 28;
-  CHECK(m.trace(r, 0).addr == 3584u);
+  CHECK(t.addr == 37u);
+  CHECK(t.frac == 1024u);
+  CHECK(t.cosk == (1u << 17) - 250u);  // v - round(1000 * 1024 / 4096)
+  CHECK(t.intensity == (32768u * ((1u << 17) - 250u) + (1u << 17)) >> 18);
+  // Half a weight LSB rounds up: d t = 1000 * 2 = 2000 -> 2000/4096 = 0.49 rounds to 0;
+  // t = 3 -> 0.73 rounds to 1.
+  r.psi0 = (int64_t{37} << 20) + (int64_t{2} << 8);
+  CHECK(m.trace(r, 0).cosk == (1u << 17));
+  r.psi0 = (int64_t{37} << 20) + (int64_t{3} << 8);
+  CHECK(m.trace(r, 0).cosk == (1u << 17) - 1u);
+  // Bank of n = 1000 (k = 16, the last of 8 banks) adds 7 in this synthetic ROM.
+  r.n = 1000;
+  r.psi0 = int64_t{37} << 20;
+  CHECK(m.trace(r, 0).cosk == (1u << 17) + 7u);
+  // One quarter turn: zeta = 1 is past the table, the pixel is 0.
+  r.psi0 = int64_t{1} << 28;
+  CHECK(m.trace(r, 0).overflow);
+  CHECK(m.pixel(r, 0) == 0u);
+  // C x 1 is exact: v = 2^18 (cos^k(0) = 1) gives I = C for every C.
+  std::vector<uint32_t> one(f.cos_rom_depth(), (1u << 18) << 12);
+  const DeviceModel m1(f, c, one);
+  r.psi0 = 0;
+  for (uint32_t cc : {1u, 32768u, 40000u, 65535u}) {
+    r.c = cc;
+    CHECK(m1.pixel(r, 0) == cc);
+  }
 }
 
 TEST_CASE("accumulator adds dpsi exactly, line has len + 1 pixels, invalid n gives zeros", "[golden]") {
@@ -165,8 +223,8 @@ TEST_CASE("accumulator adds dpsi exactly, line has len + 1 pixels, invalid n giv
   CHECK(m.trace(r, 1).psi == r.psi0 - 1);
 }
 
-TEST_CASE("ROM 12 image matches cos^k closed forms", "[rom]") {
-  const Format f;
+TEST_CASE("ROM 12 image (patent, direct) matches cos^k closed forms", "[rom]") {
+  const Format f = Format::patent();
   const auto img = cos_rom_image(f);
   REQUIRE(img.size() == 4u * 4096u);
   CHECK(img[0] == 65535u);                 // cos^1(0) = 1 saturates
@@ -177,8 +235,28 @@ TEST_CASE("ROM 12 image matches cos^k closed forms", "[rom]") {
   CHECK(img[2731] == static_cast<uint32_t>(std::lround(std::cos(std::numbers::pi / 2 * 2731 / 4096) * 65536)));
 }
 
-TEST_CASE("ROM 9 image: maclaurin words are sqrt(n/k) * 2/pi, bad coefficients are rejected", "[rom]") {
+TEST_CASE("ROM 12 image (default, interpolated) matches cos^k closed forms", "[rom]") {
   const Format f;
+  const auto img = cos_rom_image(f);
+  REQUIRE(img.size() == 8u * 256u);
+  auto v = [&](int bank, int i) { return img[bank * 256 + i] >> 12; };
+  auto d = [&](int bank, int i) { return img[bank * 256 + i] & 4095u; };
+  // Banks k = 1, 2, 3, 4, 6, 8, 12, 16. cos^k(0) = 1 exactly (2^18, no saturation).
+  for (int b = 0; b < 8; ++b) CHECK(v(b, 0) == (1u << 18));
+  CHECK(v(1, 128) == (1u << 17));   // cos^2(pi/4) = 1/2
+  CHECK(v(3, 128) == (1u << 16));   // cos^4(pi/4) = 1/4
+  CHECK(v(7, 128) == (1u << 10));   // cos^16(pi/4) = 2^-8
+  CHECK(v(2, 128) == static_cast<uint32_t>(std::lround(std::pow(std::sqrt(0.5), 3) * 262144)));
+  // The step is the difference to the next entry; past the last entry cos^k(pi/2) = 0.
+  for (int b = 0; b < 8; ++b) {
+    for (int i = 0; i < 255; ++i) REQUIRE(d(b, i) == v(b, i) - v(b, i + 1));
+    CHECK(d(b, 255) == v(b, 255));
+  }
+  CHECK(v(0, 255) == static_cast<uint32_t>(std::lround(std::sin(std::numbers::pi / 512) * 262144)));
+}
+
+TEST_CASE("ROM 9 image: maclaurin words are sqrt(n/k) * 2/pi, bad coefficients are rejected", "[rom]") {
+  const Format f = Format::patent();
   const auto img = coef_rom_image(f, parse_coef_spec("maclaurin"));
   REQUIRE(img.size() == 1024u);
   CHECK(img[0] == 0u);
@@ -203,7 +281,8 @@ TEST_CASE("hex files: round trip, exact format, errors name file and line", "[ro
   CHECK(read_hex(p, 18, 4) == std::vector<uint32_t>{0, 1, 0x3ffff, 0xabc});
   CHECK_THROWS_WITH(read_hex(p, 18, 5), Catch::Matchers::Contains("4 words, expected 5"));
   CHECK_THROWS_WITH(read_hex(p, 17, 4), Catch::Matchers::Contains(p + ":3: word 3ffff is wider"));
-  CHECK_THROWS_WITH(read_hex(p, 16, 4), Catch::Matchers::Contains(p + ":1: '00000' has more than 4"));
+  CHECK_THROWS_WITH(read_hex(p, 16, 4), Catch::Matchers::Contains(p + ":1: '00000' has 5 hex digits, expected 4"));
+  CHECK_THROWS_WITH(read_hex(p, 21, 4), Catch::Matchers::Contains(p + ":1: '00000' has 5 hex digits, expected 6"));
   CHECK_THROWS_AS(write_hex(p, {0x40000}, 18), std::runtime_error);
   CHECK(read_hex(p, 18, 4).size() == 4u);  // the failed write left the old file intact
   {
@@ -216,15 +295,36 @@ TEST_CASE("hex files: round trip, exact format, errors name file and line", "[ro
 }
 
 TEST_CASE("committed ROMs load into the golden model", "[rom]") {
-  const Format f;
+  const Format f = Format::patent();
   // Working directory = repository root (ctest WORKING_DIRECTORY).
-  const auto m = load_device_model(f, kCoefMaclaurinHex, kCosHex);
+  const auto m = load_device_model(f, kPatentCoefHex, kPatentCosHex);
   Registers r;
   r.c = 32768;
   r.n = 2;  // k = 2, a = 1: I = cos^2(psi)
   r.psi0 = device::quantize_angle(std::numbers::pi / 4, f);
   CHECK(m.pixel(r, 0) == 16384u);  // cos^2(pi/4) / 2^... = 0.5 * C
-  CHECK_NOTHROW(load_device_model(f, kCoefMinimaxHex, kCosHex));
+  // Every build configuration's committed files load with its format; a file of the wrong
+  // length or width is refused with its name.
+  for (const auto& bc : build_configs()) {
+    INFO(bc.name);
+    CHECK_NOTHROW(load_device_model(bc.f, bc.coef_hex(), bc.cos_hex()));
+  }
+  CHECK_THROWS_WITH(load_device_model(Format{}, kCoefMinimaxHex, kPatentCosHex),
+                    Catch::Matchers::Contains(kPatentCosHex));
+  CHECK_THROWS_WITH(load_device_model(Format{}, kPatentCoefHex, kCosHex), Catch::Matchers::Contains(kPatentCoefHex));
+  // The default build: n = 2 is bank k = 2 with a = 1 (minimax of cos^2 for cos^2 is exact).
+  const Format d;
+  const auto md = load_device_model(d, kCoefMinimaxHex, kCosHex);
+  r.psi0 = device::quantize_angle(std::numbers::pi / 4, d);
+  CHECK(md.pixel(r, 0) == 16384u);
+}
+
+TEST_CASE("the default decoder table is the one derived from its bank set", "[golden]") {
+  const Format f;
+  CHECK(f.bank_max_n == derive_bank_max_n(f.banks, parse_coef_spec("minimax")));
+  const Format p = Format::patent();
+  CHECK(p.bank_max_n == derive_bank_max_n(p.banks, parse_coef_spec("maclaurin")));
+  CHECK(p.bank_max_n == std::vector<int>{1, 2, 6, 1000});  // patent UA 71489
 }
 
 TEST_CASE("load_registers: the host's register writes for one scanline", "[golden]") {

@@ -58,20 +58,23 @@ def check(out):
         rel = [val(v) for v in h["max_rel_epicenter"]]
         ab = [val(v) for v in h["max_abs_lobe"]]
         want = {
-            1: f"{h['cos_addr_bits']}/{h['cos_data_bits']}",
+            1: f"{'interp' if h['cos_interp'] else 'direct'} {h['cos_addr_bits']}/{h['cos_data_bits']}",
             2: h["policy"],
             3: "{" + ",".join(map(str, h["banks"])) + "} (" + ",".join(map(str, h["bank_max_n"])) + ")",
             4: f"{h['coef_rom_bits'] + h['cos_rom_bits']} ({h['coef_rom_bits']} + {h['cos_rom_bits']})",
             5: pct(max(rel)),
+            6: pct(max(val(v) for v in h["max_rel_epicenter_lsb"])),
         }
         for col, w in want.items():
             if r[col] != w:
                 errors.append(f"hardware {h['name']} column {col}: report '{r[col]}', JSON gives '{w}'")
         if f"{max(ab):.3g}" not in r:
             errors.append(f"hardware {h['name']}: worst abs. lobe {max(ab):.3g} (JSON) not in the row {r}")
-        # ROM 12 bits from the configuration itself (banks x 2^addr x data), not from the
-        # JSON's own sums; ROM 9 has 2^10 words (n up to 1000) of a whole number of bits.
-        cos_bits = len(h["banks"]) * (1 << h["cos_addr_bits"]) * h["cos_data_bits"]
+        # ROM 12 bits from the configuration itself (banks x 2^addr x word: the value with its
+        # integer bit and the step when interpolated, the saturating value when direct), not
+        # from the JSON's own sums; ROM 9 has 2^10 words (n up to 1000) of a whole number of bits.
+        word = h["cos_data_bits"] + 1 + h["cos_delta_bits"] if h["cos_interp"] else h["cos_data_bits"]
+        cos_bits = len(h["banks"]) * (1 << h["cos_addr_bits"]) * word
         if h["cos_rom_bits"] != cos_bits or h["coef_rom_bits"] % 1024 != 0:
             errors.append(f"hardware {h['name']}: ROM bits {h['coef_rom_bits']} + {h['cos_rom_bits']}, "
                           f"formats give 1024 x w + {cos_bits}")
