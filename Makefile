@@ -6,7 +6,7 @@ JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 PYTHON ?= /usr/bin/python3
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build test sim roms vcd report lint fuzz fpga clean help
+.PHONY: all deps configure build test sim roms vcd report lint fuzz fpga coverage xprop clean help
 
 all: build
 
@@ -19,6 +19,8 @@ help:
 	@echo "make lint    verilator -Wall lint and Yosys synthesis of rtl/"
 	@echo "make fpga    out-of-context place and route (nextpnr-ice40, HX8K and UP5K) into $(BUILD)/fpga; FPGA_ARGS adds scripts/fpga.sh options"
 	@echo "make fuzz    libFuzzer (clang-14) on the scene, ROM hex and CLI parsers, FUZZ_SECONDS in all (60)"
+	@echo "make coverage  RTL line/branch/toggle coverage of the regression (build dir $(BUILD)/coverage): summary, annotated sources, HTML"
+	@echo "make xprop   X-propagation: the regression under three Verilator seeds, uninitialized bits random, output digests equal"
 	@echo "make clean   remove $(BUILD)"
 
 # Installs missing Debian packages (no-op when all are present).
@@ -63,6 +65,15 @@ fpga: deps
 FUZZ_SECONDS ?= 60
 fuzz: deps
 	bash scripts/fuzz.sh $(BUILD) $(FUZZ_SECONDS)
+
+# RTL coverage (Verilator --coverage) in a build directory of its own, so the normal build
+# stays as it is; report in $(BUILD)/coverage/report (summary.md, annotated/, html/).
+coverage: deps
+	JOBS=$(JOBS) bash scripts/coverage.sh $(BUILD)/coverage $(BUILD)/coverage/report
+
+# X-propagation alone (make test runs it too, as the ctest sim_xprop).
+xprop: build
+	cd $(BUILD) && ctest --output-on-failure -R '^sim_xprop$$'
 
 clean:
 	rm -rf $(BUILD)

@@ -18,6 +18,7 @@ PACKAGES=(
   nextpnr-ice40
   fpga-icestorm
   python3-matplotlib
+  lcov
   clang-14 libfuzzer-14-dev
 )
 

@@ -15,6 +15,7 @@
 #include <verilated.h>
 #include <verilated_vcd_c.h>
 #pragma GCC diagnostic pop
+#include "verilator_runtime.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -44,13 +45,26 @@ class Harness {
   Harness(std::string name, device::DeviceModel model)
       : name_(std::move(name)), model_(std::move(model)), ctx_(std::make_unique<VerilatedContext>()) {
     ctx_->traceEverOn(true);
+    configure_context(*ctx_);
     top_ = std::make_unique<V>(ctx_.get(), name_.c_str());
+    digest_slot_ = new_digest(top_->modelName());
     clear_inputs();
+    // Settle once with rst_ni high so that the reset below is a falling edge: Verilator takes
+    // the values before its first eval as the previous ones (no edge at time 0), and without
+    // an edge the asynchronous reset would wait for the first clock while the outputs show the
+    // registers' initial values (random under +verilator+rand+reset+2). The RTL's assertions
+    // are off for this one evaluation: before the first reset the state is undefined.
+    top_->rst_ni = 1;
+    top_->clk_i = 0;
+    ctx_->assertOn(false);
+    top_->eval();
+    ctx_->assertOn(true);
     reset();
   }
   ~Harness() {
     close_vcd();
     top_->final();
+    write_coverage(*ctx_, top_->modelName());
   }
   Harness(const Harness&) = delete;
   Harness& operator=(const Harness&) = delete;
@@ -210,6 +224,7 @@ class Harness {
     sampled_busy_ = top_->busy_o;
     sampled_valid_ = top_->valid_o;
     sampled_intensity_ = top_->intensity_o;
+    digest_add(digest_slot_, uint64_t{sampled_intensity_} | uint64_t{sampled_valid_} << 32 | uint64_t{sampled_busy_} << 33);
     dump(10 * (cycle_ - vcd_base_));
     top_->clk_i = 1;
     top_->eval();
@@ -223,6 +238,7 @@ class Harness {
   std::string name_;
   device::DeviceModel model_;
   std::unique_ptr<VerilatedContext> ctx_;
+  size_t digest_slot_ = 0;
   std::unique_ptr<V> top_;
   std::unique_ptr<VerilatedVcdC> vcd_;
   uint64_t cycle_ = 0, vcd_base_ = 0;

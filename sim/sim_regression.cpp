@@ -9,6 +9,9 @@
 //   sim_regression --scenes-dir DIR --images-dir DIR   every DIR/*.json through the RTL, PNGs
 //   sim_regression --no-scenes                         regression lines only
 //   sim_regression --stream-spans N                    random spans through specular_stream (0: skip)
+//   sim_regression --digest FILE +verilator+rand+reset+2 +verilator+seed+N
+//                                                      X-propagation: digest of every output, every cycle
+//   sim_regression --coverage-dir DIR                  coverage build (make coverage): DIR/*.dat
 #include "checks.hpp"
 #include "harness.hpp"  // before the V*.h: wraps the Verilator headers in a warning guard
 
@@ -41,6 +44,7 @@
 #include <fstream>
 #include <iostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace {
@@ -352,7 +356,32 @@ int main(int argc, char** argv) {
   app.add_option("--stream-spans", stream_spans, "random spans through specular_stream (0: skip the stream stage)")
       ->check(CLI::Range(uint64_t{0}, uint64_t{100000000}))
       ->capture_default_str();
-  if (const auto exit_code = specular::parse_command_line(app, argc, argv, "sim_regression")) return *exit_code;
+  std::string digest_path, coverage_dir;
+  app.add_option("--digest", digest_path,
+                 "write the digest of every output of every model in every cycle to FILE (X-propagation runs: "
+                 "+verilator+rand+reset+2 +verilator+seed+N must not change it)");
+  app.add_option("--coverage-dir", coverage_dir, "write each model's coverage as DIR/*.dat (coverage build only)");
+  // Verilator runtime arguments (+verilator+seed+N, +verilator+rand+reset+N, ...) go to every
+  // model's context, the rest to CLI11.
+  std::vector<char*> args;
+  for (int i = 0; i < argc; ++i) {
+    if (i > 0 && std::string_view(argv[i]).starts_with("+verilator+"))
+      verilator_runtime().args.emplace_back(argv[i]);
+    else
+      args.push_back(argv[i]);
+  }
+  if (const auto exit_code =
+          specular::parse_command_line(app, static_cast<int>(args.size()), args.data(), "sim_regression"))
+    return *exit_code;
+  if (!coverage_dir.empty()) {
+#if VM_COVERAGE
+    std::filesystem::create_directories(coverage_dir);
+    verilator_runtime().coverage_dir = coverage_dir;
+#else
+    std::cerr << "sim_regression: --coverage-dir needs the coverage build (cmake -DSPECULAR_COVERAGE=ON, make coverage)\n";
+    return 2;
+#endif
+  }
 
   // The RTL defaults are the default configuration: Format{} (the others are checked as
   // they run, against their own Format).
@@ -522,6 +551,22 @@ int main(int argc, char** argv) {
       }
       std::filesystem::rename(tmp, json_path);
       std::cout << "wrote " << json_path << "\n";
+    }
+    {
+      // Output digests (X-propagation): the whole run, then each model in construction order.
+      const auto& rt = verilator_runtime();
+      auto hex = [](uint64_t v) {
+        char d[32];
+        std::snprintf(d, sizeof d, "%016llx", static_cast<unsigned long long>(v));
+        return std::string(d);
+      };
+      std::cout << "output digest: " << hex(rt.total.hash) << " (" << rt.total.cycles << " model cycles)\n";
+      if (!digest_path.empty()) {
+        std::ofstream out(digest_path);
+        out << hex(rt.total.hash) << " " << rt.total.cycles << " " << rt.total.model << "\n";
+        for (const auto& d : rt.per_model) out << hex(d.hash) << " " << d.cycles << " " << d.model << "\n";
+        if (!out) throw std::runtime_error("cannot write " + digest_path);
+      }
     }
     std::cout << (ok ? "sim_regression: PASS" : "sim_regression: FAIL") << "\n";
     return ok ? 0 : 1;
