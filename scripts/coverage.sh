@@ -24,7 +24,7 @@ mkdir -p "$OUT/dat"
 "$BUILD/bin/sim_regression" $COVERAGE_ARGS --images-dir "$OUT/scenes" --coverage-dir "$OUT/dat" > "$OUT/regression.log"
 tail -n 2 "$OUT/regression.log"
 verilator_coverage --write "$OUT/merged.dat" "$OUT"/dat/*.dat
-verilator_coverage --annotate "$OUT/annotated" --annotate-all --annotate-min 1 "$OUT/merged.dat" | head -n 1
+verilator_coverage --annotate "$OUT/annotated" --annotate-all --annotate-min 1 "$OUT/merged.dat" | sed -n 1p
 verilator_coverage --write-info "$OUT/coverage.info" "$OUT/merged.dat"
 genhtml --quiet --output-directory "$OUT/html" --title "specular-device RTL coverage" "$OUT/coverage.info" \
   > "$OUT/genhtml.log" 2>&1 || { cat "$OUT/genhtml.log"; exit 1; }
