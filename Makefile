@@ -11,9 +11,9 @@ CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 all: build
 
 help:
-	@echo "make sim     build everything, run the RTL regression (both coefficient policies)"
+	@echo "make sim     build everything, run the RTL regression (every build configuration, the stream, scenes)"
 	@echo "make test    build everything, run every test with ctest (what CI runs)"
-	@echo "make roms    regenerate the ROM hex files in roms/ from the model"
+	@echo "make roms    regenerate every configuration's ROM hex files under roms/ (romgen --all)"
 	@echo "make vcd     write VCD timing diagrams to $(BUILD)/vcd and draw the 4-pixel one"
 	@echo "make report  measure and write $(BUILD)/report/report.md"
 	@echo "make lint    verilator -Wall lint and Yosys synthesis of rtl/"
@@ -41,7 +41,7 @@ sim: build
 
 roms: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target romgen
-	./$(BUILD)/bin/romgen --out-dir roms
+	./$(BUILD)/bin/romgen --all --out-dir roms
 
 vcd: build
 	./$(BUILD)/bin/sim_regression --vcd-dir $(BUILD)/vcd --vcd-only

@@ -238,6 +238,7 @@ std::string num(double v, const char* fmt = "%.3g") {
   return b;
 }
 std::string where(const Extreme& e) {
+  if (e.kind.empty()) return "- (no pixel beyond the 1-LSB allowance)";
   char b[128];
   std::snprintf(b, sizeof b, "n=%u psi=%+.5f C=%.4f", e.n, e.psi, e.c);
   return b;
@@ -271,7 +272,7 @@ void print_table(const std::vector<PolicyStats>& all) {
   row("    at", [](const PolicyStats& s) { return where(s.rel_raw); });
   row("(c) same, only ref >= 0.5", [](const PolicyStats& s) { return pct(s.rel_raw_big.value); });
   row("    at", [](const PolicyStats& s) { return where(s.rel_raw_big); });
-  row("(c) n = 1: max rel epi, +1 LSB", [](const PolicyStats& s) { return pct(s.rel_allow_n1.value); });
+  row("(c) n = 1: max rel epi, +1 LSB (enforced span)", [](const PolicyStats& s) { return pct(s.rel_allow_n1.value); });
   row("    at", [](const PolicyStats& s) { return where(s.rel_allow_n1); });
   row("(c) n = 1: budget holds for |psi| <", [](const PolicyStats& s) {
     return s.n1_rel_over_budget ? num(s.n1_budget_holds_below, "%.4f") + " (" + std::to_string(s.n1_rel_over_budget) + " px over)"

@@ -99,10 +99,13 @@ StreamStats run_stream_stage(StreamHarness<V>& h, uint64_t seed, uint64_t spans)
   const auto c0 = h.counters();
   uint64_t made = 0;
   while (made < spans) {
-    const int kind = static_cast<int>(rng() % kNumStreamKinds);
+    // The two throughput bursts come first, so that even a short run measures them.
+    const uint64_t seg_no = st.segments[kBurstShort] + st.segments[kBurstMixed] + st.segments[kToggle] +
+                            st.segments[kRandom] + st.segments[kLongStall] + st.segments[kShortRandom];
+    const int kind = seg_no < 2 ? static_cast<int>(seg_no) : static_cast<int>(rng() % kNumStreamKinds);
     const bool burst = kind == kBurstShort || kind == kBurstMixed;
     const bool short_only = kind == kBurstShort || kind == kShortRandom;
-    const uint64_t n = std::min<uint64_t>(spans - made, burst ? 1500 : 300 + rng() % 700);
+    const uint64_t n = std::min<uint64_t>(spans - made, burst ? (seg_no < 2 ? 500 : 1500) : 300 + rng() % 700);
     ++st.segments[kind];
     st.kind_spans[kind] += n;
     std::vector<device::Span> seg(n);
