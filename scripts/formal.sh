@@ -16,10 +16,15 @@
 #
 # --mutant NAME copies rtl/*.sv into OUT_DIR, applies one mutation to the copy (never to
 # rtl/) and inverts the result: exit 0 only if the solver finds a counterexample (a
-# failing bounded model check from reset, FORMAL_DEPTH = 16 cycles), 1 if the broken core
+# failing bounded model check from reset, FORMAL_DEPTH = 22 cycles), 1 if the broken core
 # still passes or a tool fails.
+# The mutant runs leave out the harness's strengthening invariants (FV_PROPERTIES_ONLY), so
+# a caught mutant violates one of the properties P1 .. P6 themselves.
 # Mutations:
-#   adv_ignores_ready   adv = 1: stages move while the output is stalled
+#   adv_ignores_room    specular_out_buf: adv_q <= 1, the pipeline advances into a full
+#                       two-entry buffer (its tail is overwritten, pixels lost)
+#   pop_ignores_ready   specular_out_buf: pop = px_valid_o, the buffer drops its head
+#                       while px_ready_i is low
 #   no_last_shift       the last flag is not shifted into stage 1 (px_last_o never set)
 #   ready_ignores_busy  span_ready_o ignores a busy register 8 (pixels lost)
 set -euo pipefail
@@ -31,7 +36,7 @@ if [ "${1:-}" = "--mutant" ]; then
   shift 2
 fi
 out=${1:-$(mktemp -d)}
-depth=${FORMAL_DEPTH:-16}
+depth=${FORMAL_DEPTH:-22}
 kind=${FORMAL_K:-4}
 tag_bits=2   # TagBits of the harness
 
@@ -47,9 +52,12 @@ if [ -n "$mutant" ]; then
   mkdir -p "$rtl_dir"
   cp rtl/*.sv "$rtl_dir/"
   case "$mutant" in
-    adv_ignores_ready)
-      file=specular_control.sv
-      sed_expr='s/assign adv_o *= ~vld_q\[PipeDepth-1\] | px_ready_i;/assign adv_o = 1'"'"'b1;/' ;;
+    adv_ignores_room)
+      file=specular_out_buf.sv
+      sed_expr='s/adv_q *<= count_d <= 2'"'"'d1;/adv_q   <= 1'"'"'b1;/' ;;
+    pop_ignores_ready)
+      file=specular_out_buf.sv
+      sed_expr='s/assign pop *= (count_q != 2'"'"'d0) & px_ready_i;/assign pop  = (count_q != 2'"'"'d0);/' ;;
     no_last_shift)
       file=specular_control.sv
       sed_expr='s/vld_q\[0\] & cnt_zero_i}/1'"'"'b0}/' ;;
@@ -73,9 +81,14 @@ fi
 
 tag=${mutant:-stream}
 
-read_cmd="read_verilog -sv -formal -DSYNTHESIS ${sources[*]} rtl/formal/specular_stream_fv.sv"
-# The tag delay line's registers (stages 1 .. Latency - 1), one wire per stage after
-# flatten (Yosys turns specular_delay's array into registers).
+defines="-DSYNTHESIS"
+if [ -n "$mutant" ]; then
+  defines+=" -DFV_PROPERTIES_ONLY"
+fi
+read_cmd="read_verilog -sv -formal ${defines} ${sources[*]} rtl/formal/specular_stream_fv.sv"
+# The tag delay line's registers (stages 1 .. PipeDepth - 1), one wire per stage after
+# flatten (Yosys turns specular_delay's array into registers). Latency = PipeDepth + 1
+# (the output buffer) = tag line length + 2.
 yosys -q -p "
   ${read_cmd}
   hierarchy -check -top specular_stream_fv
@@ -88,24 +101,41 @@ if [ "$ntag" -lt 1 ]; then
   echo "formal.sh: no tag line registers u_dut.u_tag_line.gen_regs.pipe_q[*] (RTL changed?)" >&2
   exit 1
 fi
-tag_probes=""
-for ((i = 0; i < ntag; i++)); do
-  tag_probes+="connect -nounset -set p_tagline[$(( (i + 1) * tag_bits - 1 )):$(( i * tag_bits ))] u_dut.u_tag_line.gen_regs.pipe_q[$i]"$'\n'
-done
+# Probe wire -> state of the flattened core (see the harness header). The mutant runs
+# have no probes (FV_PROPERTIES_ONLY).
+probes=""
+if [ -z "$mutant" ]; then
+  probes="
+  connect -nounset -set p_vld   u_dut.u_control14.vld_q
+  connect -nounset -set p_last  u_dut.u_control14.last_q
+  connect -nounset -set p_cnt   u_dut.cnt0
+  connect -nounset -set p_zero  u_dut.u_counter5.zero_q
+  connect -nounset -set p_tag0  u_dut.tag0
+  connect -nounset -set p_count u_dut.u_out_buf.count_q
+  connect -nounset -set p_head  u_dut.u_out_buf.head_q
+  connect -nounset -set p_tail  u_dut.u_out_buf.tail_q
+  connect -nounset -set p_adv   u_dut.u_out_buf.adv_q
+"
+  for ((i = 0; i < ntag; i++)); do
+    probes+="  connect -nounset -set p_tagline[$(( (i + 1) * tag_bits - 1 )):$(( i * tag_bits ))] u_dut.u_tag_line.gen_regs.pipe_q[$i]"$'\n'
+  done
+  # The proof cuts the datapath where it enters the output buffer: the intensity of the
+  # last stage becomes a free value every clock ($anyseq), and multiplier 11, ROM 12,
+  # multiplier 13 and register 8's data drop out of the model. This over-approximates the
+  # core (no property constrains the intensity's value), so the proof covers the real
+  # datapath too. The mutant runs keep the datapath: their traces are real.
+  probes+="  select -assert-count 1 w:u_dut.intensity
+  cutpoint w:u_dut.intensity
+"
+fi
 
-# Probe wire -> state of the flattened core (see the harness header).
 yosys -q -l "$out/yosys_${tag}.log" -p "
   ${read_cmd}
-  chparam -set Latency $((ntag + 1)) specular_stream_fv
+  chparam -set Latency $((ntag + 2)) specular_stream_fv
   hierarchy -check -top specular_stream_fv
   proc
   flatten
-  connect -nounset -set p_vld  u_dut.u_control14.vld_q
-  connect -nounset -set p_last u_dut.u_control14.last_q
-  connect -nounset -set p_cnt  u_dut.cnt0
-  connect -nounset -set p_zero u_dut.u_counter5.zero_q
-  connect -nounset -set p_tag0 u_dut.tag0
-  ${tag_probes}
+  ${probes}
   prep -top specular_stream_fv
   memory_map
   opt -keepdc -fast

@@ -15,10 +15,10 @@
 //   smallest the pi/2 test allows), CosInterp 0 (the direct table), CosAddrBits 2,
 //   CosDataBits 4, CosDeltaBits 4, CosFracBits 1, NumBanks 2, BankMaxN {15, 1}, TagBits 2,
 //   ROMs rtl/formal/coef_fv.hex (16 words) and rtl/formal/cos_k_fv.hex (2 banks x 4 words).
-// The handshake control (specular_control), counter 5, the stage valids and the tag
-// pipeline do not depend on the widths except through PipeDepth (12 stages here, 20 at
-// the defaults; the same shift-register structure at any depth), so the properties carry
-// over; the datapath values are free-running data to these properties
+// The handshake control (specular_control), counter 5, the stage valids, the tag
+// pipeline and the output buffer (specular_out_buf) do not depend on the widths except
+// through PipeDepth (14 stages here, 21 at the defaults; the same shift-register structure
+// at any depth), so the properties carry over; the datapath values are free-running data to these properties
 // (the solver picks any span values; bit-exactness is the simulation regression's job).
 //
 // Properties (asserted whenever rst_ni is high), under two assumptions: the design starts
@@ -33,19 +33,26 @@
 //                px_tag_o == tag of head. The head pops when its pixel l is transferred, so
 //                every span gives exactly l + 1 pixels, in order, last on pixel l, its tag.
 //   P4 bubble    once span_valid_i and px_ready_i have both been high (rst_ni high) for
-//                Latency (12 here) consecutive cycles, px_valid_o is high; so with spans always
-//                offered and ready always high the output carries a pixel every clock,
-//                whatever the span lengths (l = 0 included) and across span changes
+//                Latency + 1 (16 here) consecutive cycles, px_valid_o is high; so with spans
+//                always offered and ready always high the output carries a pixel every
+//                clock, whatever the span lengths (l = 0 included) and across span changes
+//                (the extra cycle: a full output buffer needs one pop before adv is high)
 //   P5 reset     after a reset px_valid_o stays low until a span has been accepted
+//   P6 idle      while px_valid_o is low, px_intensity_o and px_last_o are 0
 // Strengthening invariants (needed for induction, proven like the properties) relate the
-// harness state to the stage valids, last flags, counter 5 and the tag registers of the
-// core. Those are read through probe wires that scripts/formal.sh connects to the
-// flattened instance (connect -set after flatten; Yosys has no hierarchical references):
-//   p_vld  = u_dut.u_control14.vld_q   p_last = u_dut.u_control14.last_q
-//   p_cnt  = u_dut.cnt0                p_tag0 = u_dut.tag0
-//   p_zero = u_dut.u_counter5.zero_q
+// harness state to the stage valids, last flags, counter 5, the tag registers and the
+// output buffer of the core. Those are read through probe wires that scripts/formal.sh
+// connects to the flattened instance (connect -set after flatten; Yosys has no
+// hierarchical references):
+//   p_vld   = u_dut.u_control14.vld_q    p_last = u_dut.u_control14.last_q
+//   p_cnt   = u_dut.cnt0                 p_tag0 = u_dut.tag0
+//   p_zero  = u_dut.u_counter5.zero_q
 //   p_tagline[j-1] = u_dut.u_tag_line.gen_regs.pipe_q[j-1], the tag of stage j >= 1
-// Latency (the core's PipeDepth) is a parameter set by scripts/formal.sh.
+//   p_count = u_dut.u_out_buf.count_q    p_adv  = u_dut.u_out_buf.adv_q
+//   p_head  = u_dut.u_out_buf.head_q     p_tail = u_dut.u_out_buf.tail_q
+// With FV_PROPERTIES_ONLY defined (the mutant runs) the invariants and probes are left out.
+// Latency (the core's PipeDepth + 1, the output buffer's clock) is a parameter set by
+// scripts/formal.sh.
 
 module specular_stream_fv #(
   parameter int CBits       = 4,
@@ -68,10 +75,10 @@ module specular_stream_fv #(
   parameter     CoefRomFile = "rtl/formal/coef_fv.hex",
   parameter     CosRomFile  = "rtl/formal/cos_k_fv.hex",
   parameter int TagBits     = 2,
-  // Cycles from the accept edge to pixel 0 on the output: the core's PipeDepth (12 with
+  // Cycles from the accept edge to pixel 0 on the output: the core's PipeDepth + 1 (15 with
   // the widths above). scripts/formal.sh sets it from the core's tag delay line (depth
-  // PipeDepth - 1); a wrong value fails on the probe widths.
-  parameter int Latency     = 12
+  // PipeDepth - 1, so Latency = its length + 2); a wrong value fails on the probe widths.
+  parameter int Latency     = 15
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
@@ -130,13 +137,17 @@ module specular_stream_fv #(
   );
 
 `ifdef FORMAL
-  // Spans in flight: at most one per stage (l = 0 spans), so 2^SlotBits > Latency FIFO
-  // slots never overflow.
+  // Depth: the core's PipeDepth (stage 0 = register 8 .. stage Depth - 1 = the last
+  // stage); the output buffer adds one clock (Latency = Depth + 1) and two entries.
+  // Spans in flight: at most one per stage or buffer entry (l = 0 spans), Depth + 2 =
+  // Latency + 1 in all, so 2^SlotBits >= Latency + 1 FIFO slots never overflow.
+  localparam int Depth     = Latency - 1;
   localparam int SlotBits  = $clog2(Latency + 1);
   localparam int Slots     = 1 << SlotBits;
   localparam int IdxBits   = LenBits + 1;            // ghost pixel index, no wrap
-  localparam int OweBits   = $clog2((1 << LenBits) + Latency) + 1;  // owed <= 2^l + Latency - 1
-  localparam int StreakBits = $clog2(Latency + 1);
+  localparam int OweBits   = $clog2((1 << LenBits) + Latency + 1) + 1;  // owed <= 2^l + Latency
+  localparam int StreakMax = Latency + 1;            // P4: the buffer's room takes one clock
+  localparam int StreakBits = $clog2(StreakMax + 1);
   localparam int SpanBits  = CBits + 2 * AngleBits + NBits + LenBits + TagBits;
   localparam int PixBits   = CBits + 1 + TagBits;
 
@@ -199,7 +210,8 @@ module specular_stream_fv #(
   end
 
   // ---------------------------------------------------------------------------------
-  // P2: pixels owed; P5: nothing out after reset before an accept
+  // P2: pixels owed; P5: nothing out after reset before an accept; P6: an invalid output
+  // reads 0
   // ---------------------------------------------------------------------------------
   logic [OweBits-1:0] owed_q;
   logic               seen_q;
@@ -221,13 +233,18 @@ module specular_stream_fv #(
     if (!rst_ni) begin
       assert (!px_valid_o);
     end
+    if (rst_ni && !px_valid_o) begin
+      assert (px_intensity_o == '0 && !px_last_o);
+    end
   end
 
   // ---------------------------------------------------------------------------------
   // P3: spans in order, l + 1 pixels each, last on pixel l, the span's tag
   // ---------------------------------------------------------------------------------
-  logic [Slots*LenBits-1:0] q_len_q;
-  logic [Slots*TagBits-1:0] q_tag_q;
+  // The FIFO's (l, tag) words are memories (no reset: only the q_cnt_q words from
+  // q_head_q are ever read as valid; memory_map turns the reads into mux trees).
+  logic [LenBits-1:0]       q_len_q [Slots];
+  logic [TagBits-1:0]       q_tag_q [Slots];
   logic [SlotBits-1:0]      q_head_q, q_tail;
   logic [SlotBits:0]        q_cnt_q;
   logic [LenBits-1:0]       q_idx_q, head_len;
@@ -235,22 +252,16 @@ module specular_stream_fv #(
   logic                     pop;
 
   assign q_tail   = q_head_q + SlotBits'(q_cnt_q);
-  assign head_len = q_len_q[q_head_q * LenBits +: LenBits];
-  assign head_tag = q_tag_q[q_head_q * TagBits +: TagBits];
+  assign head_len = q_len_q[q_head_q];
+  assign head_tag = q_tag_q[q_head_q];
   assign pop      = xfer && (q_idx_q == head_len);
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      q_len_q  <= '0;
-      q_tag_q  <= '0;
       q_head_q <= '0;
       q_cnt_q  <= '0;
       q_idx_q  <= '0;
     end else begin
-      if (accept) begin
-        q_len_q[q_tail * LenBits +: LenBits] <= span_len_i;
-        q_tag_q[q_tail * TagBits +: TagBits] <= span_tag_i;
-      end
       if (pop) begin
         q_head_q <= q_head_q + 1'b1;
       end
@@ -260,9 +271,15 @@ module specular_stream_fv #(
       end
     end
   end
+  always_ff @(posedge clk_i) begin
+    if (accept) begin
+      q_len_q[q_tail] <= span_len_i;
+      q_tag_q[q_tail] <= span_tag_i;
+    end
+  end
   always_comb begin
     if (rst_ni) begin
-      assert (q_cnt_q <= (SlotBits + 1)'(Latency));
+      assert (q_cnt_q <= (SlotBits + 1)'(Latency + 1));
       if (px_valid_o) begin
         assert (q_cnt_q != '0);
         assert (px_last_o == (q_idx_q == head_len));
@@ -279,7 +296,7 @@ module specular_stream_fv #(
     if (!rst_ni) begin
       streak_q <= '0;
     end else if (span_valid_i && px_ready_i) begin
-      if (streak_q != StreakBits'(Latency)) begin
+      if (streak_q != StreakBits'(StreakMax)) begin
         streak_q <= streak_q + 1'b1;
       end
     end else begin
@@ -287,32 +304,56 @@ module specular_stream_fv #(
     end
   end
   always_comb begin
-    if (rst_ni && streak_q == StreakBits'(Latency)) begin
+    if (rst_ni && streak_q == StreakBits'(StreakMax)) begin
       assert (px_valid_o);
     end
   end
 
+`ifndef FV_PROPERTIES_ONLY
   // ---------------------------------------------------------------------------------
-  // Strengthening invariants on the core's state (probes connected by scripts/formal.sh)
+  // Strengthening invariants on the core's state (probes connected by scripts/formal.sh).
+  // Left out (FV_PROPERTIES_ONLY) by the mutant runs, so that a caught mutant has broken
+  // one of P1 .. P6 and not merely an invariant of the intact core.
   // ---------------------------------------------------------------------------------
-  logic [Latency-1:0]         p_vld;     // stage j holds a pixel (0: register 8)
-  logic [Latency-1:1]         p_last;    // stage j's pixel is its span's last
-  logic [LenBits-1:0]         p_cnt;     // counter 5
-  logic                       p_zero;    // counter 5's registered "count is 0"
-  logic [TagBits-1:0]             p_tag0;     // the tag register (stage 0's span)
-  logic [(Latency-1)*TagBits-1:0] p_tagline;  // the tag delay line, stages 1 ..
-  logic [Latency*TagBits-1:0]     p_tag;      // tag of stage j's span
+  logic [Depth-1:0]             p_vld;     // stage j holds a pixel (0: register 8)
+  logic [Depth-1:1]             p_last;    // stage j's pixel is its span's last
+  logic [LenBits-1:0]           p_cnt;     // counter 5
+  logic                         p_zero;    // counter 5's registered "count is 0"
+  logic [TagBits-1:0]           p_tag0;    // the tag register (stage 0's span)
+  logic [(Depth-1)*TagBits-1:0] p_tagline; // the tag delay line, stages 1 ..
+  logic [1:0]                   p_count;   // output buffer: entries
+  logic [PixBits-1:0]           p_head;    // ... the entry on the output {intensity, last, tag}
+  logic [PixBits-1:0]           p_tail;    // ... the entry behind it (valid when 2 entries)
+  logic                         p_adv;     // ... its registered room: the pipeline advance
+  logic [Depth*TagBits-1:0]     p_tag;     // tag of stage j's span
   assign p_tag = {p_tagline, p_tag0};
 
-  // Walk the stages from the output down: the FIFO slot and the pixel index each stage's
-  // pixel must have. A last flag moves to the next slot; pixels of a span are contiguous.
-  logic [Latency*SlotBits-1:0] e_slot;
-  logic [Latency*IdxBits-1:0]  e_idx;
-  logic [SlotBits:0]           n_last;   // spans whose last pixel is in stages 1..
+  logic b_head, b_tail, head_last, tail_last;   // buffer entries valid / last
+  logic [TagBits-1:0] tail_tag;
+  assign b_head    = p_count != 2'd0;
+  assign b_tail    = p_count == 2'd2;
+  assign head_last = p_head[TagBits];
+  assign tail_last = p_tail[TagBits];
+  assign tail_tag  = p_tail[TagBits-1:0];
 
-  assign e_slot[(Latency-1)*SlotBits +: SlotBits] = q_head_q;
-  assign e_idx[(Latency-1)*IdxBits +: IdxBits]    = IdxBits'(q_idx_q);
-  for (genvar j = Latency - 1; j >= 1; j--) begin : gen_walk
+  // Walk from the output down, buffer head, buffer tail, then stages Depth - 1 .. 0: the
+  // FIFO slot and the pixel index each entry's pixel must have. A last flag moves to the
+  // next slot; pixels of a span are contiguous.
+  logic [SlotBits-1:0] t_slot, s_slot;     // slot of the tail, of stage Depth - 1
+  logic [IdxBits-1:0]  t_idx, s_idx, t_len;
+  assign t_slot = q_head_q + SlotBits'(b_head && head_last);
+  assign t_idx  = !b_head ? IdxBits'(q_idx_q) : head_last ? '0 : IdxBits'(q_idx_q) + 1'b1;
+  assign t_len  = IdxBits'(q_len_q[t_slot]);
+  assign s_slot = t_slot + SlotBits'(b_tail && tail_last);
+  assign s_idx  = !b_tail ? t_idx : tail_last ? '0 : t_idx + 1'b1;
+
+  logic [Depth*SlotBits-1:0] e_slot;
+  logic [Depth*IdxBits-1:0]  e_idx;
+  logic [SlotBits:0]         n_last;   // spans whose last pixel is in the buffer or stages 1..
+
+  assign e_slot[(Depth-1)*SlotBits +: SlotBits] = s_slot;
+  assign e_idx[(Depth-1)*IdxBits +: IdxBits]    = s_idx;
+  for (genvar j = Depth - 1; j >= 1; j--) begin : gen_walk
     assign e_slot[(j-1)*SlotBits +: SlotBits] =
         e_slot[j*SlotBits +: SlotBits] + SlotBits'(p_vld[j] && p_last[j]);
     assign e_idx[(j-1)*IdxBits +: IdxBits] =
@@ -321,29 +362,29 @@ module specular_stream_fv #(
   end
 
   always_comb begin
-    n_last = '0;
-    for (int j = 1; j < Latency; j++) begin
+    n_last = (SlotBits + 1)'(b_head && head_last) + (SlotBits + 1)'(b_tail && tail_last);
+    for (int j = 1; j < Depth; j++) begin
       n_last = n_last + (SlotBits + 1)'(p_vld[j] && p_last[j]);
     end
   end
 
   logic [OweBits-1:0] owed_exp;
   always_comb begin
-    owed_exp = p_vld[0] ? OweBits'(p_cnt) + OweBits'(1) : '0;
-    for (int j = 1; j < Latency; j++) begin
+    owed_exp = OweBits'(p_count) + (p_vld[0] ? OweBits'(p_cnt) + OweBits'(1) : '0);
+    for (int j = 1; j < Depth; j++) begin
       owed_exp = owed_exp + OweBits'(p_vld[j]);
     end
   end
 
-  for (genvar j = 0; j < Latency; j++) begin : gen_inv
+  for (genvar j = 0; j < Depth; j++) begin : gen_inv
     logic [SlotBits-1:0] slot;
     logic [IdxBits-1:0]  idx, len;
     assign slot = e_slot[j*SlotBits +: SlotBits];
     assign idx  = e_idx[j*IdxBits +: IdxBits];
-    assign len  = IdxBits'(q_len_q[slot * LenBits +: LenBits]);
+    assign len  = IdxBits'(q_len_q[slot]);
     always_comb begin
       if (rst_ni && p_vld[j]) begin
-        assert (p_tag[j*TagBits +: TagBits] == q_tag_q[slot * TagBits +: TagBits]);
+        assert (p_tag[j*TagBits +: TagBits] == q_tag_q[slot]);
         assert (idx <= len);
       end
     end
@@ -366,9 +407,39 @@ module specular_stream_fv #(
     end
   end
 
-  for (genvar k = 1; k <= Latency; k++) begin : gen_fill
+  // Output buffer: at most two entries, its room register, an empty buffer reads 0, the
+  // tail entry (its pixel follows the head's) and no gap between the youngest entry and
+  // the last stage inside a span.
+  always_comb begin
+    if (rst_ni) begin
+      assert (p_count <= 2'd2);
+      assert (p_adv == (p_count <= 2'd1));
+      assert (b_head || p_head == '0);
+      assert (b_head || q_idx_q == '0);
+      assert (!b_head || IdxBits'(q_idx_q) <= IdxBits'(head_len));
+      if (b_tail) begin
+        assert (tail_tag == q_tag_q[t_slot]);
+        assert (t_idx <= t_len);
+        assert (tail_last == (t_idx == t_len));
+      end
+      if (p_count == 2'd1 && !head_last) begin
+        assert (p_vld[Depth-1]);
+      end
+      if (b_tail && !tail_last) begin
+        assert (p_vld[Depth-1]);
+      end
+    end
+  end
+
+  // P4's fill: one qualifying cycle gives the buffer room, k + 1 fill stages 0 .. k - 1.
+  always_comb begin
+    if (rst_ni && streak_q >= StreakBits'(1)) begin
+      assert (p_adv);
+    end
+  end
+  for (genvar k = 1; k <= Depth; k++) begin : gen_fill
     always_comb begin
-      if (rst_ni && streak_q >= StreakBits'(k)) begin
+      if (rst_ni && streak_q >= StreakBits'(k + 1)) begin
         assert (&p_vld[k-1:0]);
       end
     end
@@ -379,10 +450,10 @@ module specular_stream_fv #(
       assert (p_zero == (p_cnt == '0));
       assert (q_cnt_q == n_last + (SlotBits + 1)'(p_vld[0]));
       assert (owed_q == owed_exp);
-      assert (p_vld[Latency-1] || q_idx_q == '0);
       assert (seen_q || owed_q == '0);
     end
   end
-`endif
+`endif  // FV_PROPERTIES_ONLY
+`endif  // FORMAL
 
 endmodule
