@@ -1,7 +1,7 @@
 // Copyright (c) the specular_device authors.
 //
 // Multiplier 11 of patent UA 71489: zeta = a(n) * |psi|, turned into the ROM 12 address.
-// Bit-exact contract (model/device_model.hpp):
+// Bit-exact contract (model/device/device_model.hpp):
 //   |psi|   one's complement of register 8 (psi >= 0 ? psi : ~psi, one code below |psi| for
 //           negative psi): cos is even, and no carry chain is spent on the negation
 //   far     |psi| >= pi/2 exactly (the comparison allows for the one's complement): N.H < 0

@@ -5,7 +5,7 @@
 // a valid/ready handshake. For span (C, psi0, dpsi, n, l, tag) pixel i = 0..l is
 //   I_i = C * cos^k(a(n) * psi_i),  psi_i = psi0 + i * dpsi,   0 where a*|psi_i| >= pi/2,
 // bit-identical to specular_unit with the same register values (one datapath: specular_unit
-// is a wrapper over this module). Bit-exact contract: model/device_model.hpp.
+// is a wrapper over this module). Bit-exact contract: model/device/device_model.hpp.
 //
 // Ports (default widths; formats those of specular_unit's registers):
 //   clk_i, rst_ni                clock; asynchronous reset, active low: drops every span and

@@ -5,7 +5,7 @@
 // Pixel i = 0..l of a line gets
 //   I_i = C * cos^k(a(n) * psi_i),  psi_i = psi0 + i * dpsi,   0 where a*|psi_i| >= pi/2,
 // with k and a(n) chosen per exponent n so that cos^k(a x) approximates cos^n(x).
-// Bit-exact datapath contract: model/device_model.hpp (the golden model follows it too).
+// Bit-exact datapath contract: model/device/device_model.hpp (the golden model follows it too).
 //
 // Interface (SPEC section 6; default widths):
 //   clk_i                 clock; everything is synchronous to its rising edge

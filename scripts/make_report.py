@@ -49,7 +49,7 @@ EVALUATORS = [
     ("patent_minimax", "patent, float, minimax a", "angle"),
     ("device", "golden fixed-point device model, patent build (direct ROM 12, maclaurin)", "registers"),
     ("device_minimax", "golden fixed-point device model, default build (interpolated ROM 12, minimax)", "registers"),
-    # whole-span evaluators (model/span_shade.hpp): span parameters in, nothing precomputed per pixel
+    # whole-span evaluators (model/reference/span_shade.hpp): span parameters in, nothing precomputed per pixel
     ("pow_cos", "span: scalar double std::pow(cos psi, n)", "psi0, dpsi"),
     ("phong_scalar", "span: per-pixel Phong, float (lerp N, normalize, N.H, powf)", "N0, N1, H"),
     ("phong_sleef", "span: per-pixel Phong, AVX2 + SLEEF powf8", "N0, N1, H"),
@@ -496,8 +496,8 @@ class Report:
               + " | phong_sleef / device_simd | pow_cos / device_simd |")
             w("|---|---|---|---|---|---|---|---|")
             for n in common:
-                cells = [speed.get(k, {}).get(n) for k in ("pow_cos", "phong_scalar", "phong_sleef", "device_simd_sse2", "device_simd")]
-                w(f"| {n} | " + " | ".join(f"{c:.3f}" if c else "n/a" for c in cells) + f" | {ps[n] / ds[n]:.1f} | {pc[n] / ds[n]:.1f} |")
+                bcells = [speed.get(k, {}).get(n) for k in ("pow_cos", "phong_scalar", "phong_sleef", "device_simd_sse2", "device_simd")]
+                w(f"| {n} | " + " | ".join(f"{c:.3f}" if c else "n/a" for c in bcells) + f" | {ps[n] / ds[n]:.1f} | {pc[n] / ds[n]:.1f} |")
             w("")
         w("![speed against error](plane.png)\n")
         w("![error against n](error_vs_n.png)\n")
@@ -562,7 +562,7 @@ class Report:
         # --- hardware
         hw = data.get("hardware", [])
         w("## 4. Hardware configurations\n")
-        w("The build configurations of `model/rom_image.cpp` (`build_configs()`): the RTL default, the patent's own "
+        w("The build configurations of `model/device/rom_image.cpp` (`build_configs()`): the RTL default, the patent's own "
           "configuration and two variants; `sim_regression` verilates each with its parameters and checks it bit-exactly "
           "against the golden model (section 5), so every figure here is one the RTL produces. Device error: the golden "
           "fixed-point model over three scanlines of 2048 pixels for every n = 1..1000: psi in [0, x_e(n)] for the "
@@ -570,7 +570,7 @@ class Report:
           "C cos^n(psi_i) at the exact quantized pixel angles, C = 1. 'worst rel. epicenter' is raw (output quantization "
           "included; n = 1 over [0, pi/3], cos >= 1/2); 'goal metric' is the hardware goal: (|err| - 1 output LSB) / ref "
           "over the epicenter, n = 1 over all of [0, pi/2] wherever the reference is at least 4 LSB. Decoder tables are "
-          "derived from the bank set (`model/decoder_table.hpp`: bank j+1 takes over at the first n where its float error "
+          "derived from the bank set (`model/device/decoder_table.hpp`: bank j+1 takes over at the first n where its float error "
           "is not larger; this reproduces the patent's 1 | 2 | 3..6 | 7..1000 for {1,2,4,16}). Cells: Yosys "
           "`synth_ice40` of `specular_unit` with `chparam` for the configuration and its committed ROM files; multipliers "
           "are LUT logic (no DSP). (r): Yosys was not re-run because the RTL sources, both ROM files, the script and the "

@@ -1,4 +1,4 @@
-// Scene stage of the regression: every scenes/*.json rasterized into spans (model/raster),
+// Scene stage of the regression: every scenes/*.json rasterized into spans (model/scene/raster),
 // each span's registers (span_registers) run through the verilated device, every pixel
 // checked by the same Checker as the regression lines ((a)-(d)), and five images per scene:
 //   <scene>_phong.png         per-pixel Phong truth (pixel_truth)

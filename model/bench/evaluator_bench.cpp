@@ -1,4 +1,4 @@
-// evaluator_bench: the speed axis of SPEC section 8. Every evaluator of model/evaluators.hpp
+// evaluator_bench: the speed axis of SPEC section 8. Every evaluator of model/reference/evaluators.hpp
 // and the golden fixed-point device model shade the same scanline of 2048 pixels (l = 2047,
 // the counter maximum) across the highlight lobe, side by side in one run.
 //
@@ -10,7 +10,7 @@
 // coefficient a, the ROMs) is built once outside the loop, as per material in a renderer;
 // `lut256_build` times the table rebuild separately.
 //
-// Whole-span evaluators (model/span_shade.hpp, issue 9) shade the same line from its span
+// Whole-span evaluators (model/reference/span_shade.hpp, issue 9) shade the same line from its span
 // parameters, with nothing precomputed per pixel:
 //   pow_cos        scalar double std::pow(std::cos(psi0 + i dpsi), n)
 //   phong_scalar   per-pixel Phong in float: lerp N between the line's end normals (at the

@@ -5,7 +5,7 @@
 // Pixels i = 0..L at psi_i = X + i D (radians; the angle between N and H). `value` is
 // C times the evaluator's approximation of cos^n(psi_i); `psi` is the angle the evaluator
 // actually shaded:
-//   device_simd                    psi0 + i dpsi (model/span_shade.hpp device_span, float)
+//   device_simd                    psi0 + i dpsi (model/reference/span_shade.hpp device_span, float)
 //   pow_cos                        psi0 + i dpsi (double std::pow(std::cos psi, n))
 //   phong_scalar, phong_sleef      the normal is lerped between N(psi_0) and N(psi_L) and
 //                                  renormalized, as a renderer does, so the angle is not

@@ -36,7 +36,7 @@ std::vector<std::string> read_lines(const fs::path& p) {
 }
 
 // Lines outside fenced code blocks, with inline code spans blanked.
-std::vector<std::string> prose_lines(const fs::path& p) {
+std::vector<std::string> prose_lines(const fs::path& p, bool keep_code = false) {
   std::vector<std::string> out;
   bool fenced = false;
   for (std::string line : read_lines(p)) {
@@ -62,7 +62,9 @@ std::vector<std::string> prose_lines(const fs::path& p) {
           clean += line.substr(i);
           break;
         }
-        clean += std::string(close + run - i, ' ');
+        // Headings keep the code text (GitHub's anchors do); elsewhere it is blanked so that
+        // link syntax inside code is not checked.
+        clean += keep_code ? line.substr(i + run, close - i - run) : std::string(close + run - i, ' ');
         i = close + run;
       } else {
         clean += line[i++];
@@ -87,7 +89,7 @@ std::set<std::string> anchors(const fs::path& md) {
   std::set<std::string> out;
   std::map<std::string, int> seen;
   static const std::regex heading(R"(^ {0,3}#{1,6}[ \t]+(.*?)[ \t#]*$)");
-  for (const std::string& line : prose_lines(md)) {
+  for (const std::string& line : prose_lines(md, true)) {
     std::smatch m;
     if (!std::regex_match(line, m, heading)) continue;
     // Link text of links inside a heading counts, the target does not.
@@ -176,8 +178,9 @@ int self_test() {
   std::ofstream(root / "README.md") << "# Top\n\n[ok](docs/a.md) [ok anchor](docs/a.md#second-part-x) [ok dir](docs)\n"
                                        "[ok file](code.txt) [web](https://example.com/none) `[code](nofile.md)`\n"
                                        "[BROKEN1](docs/missing.md)\n```\n[fenced](nofile2.md)\n```\n";
-  std::ofstream(root / "docs" / "a.md") << "# A\n## Second part: x\n## Repeat\n## Repeat\n"
+  std::ofstream(root / "docs" / "a.md") << "# A\n## Second part: x\n## Repeat\n## Repeat\n## Code (`make x`)\n"
                                            "[ok up](../README.md#top) [ok self](#repeat-1) [BROKEN2](#repeat-2)\n"
+                                           "[ok code heading](#code-make-x)\n"
                                            "[BROKEN3](../README.md#nowhere) [BROKEN4](../code.txt.bak)\n";
   std::vector<std::string> found;
   check_tree(root, &found);

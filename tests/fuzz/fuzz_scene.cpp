@@ -1,4 +1,4 @@
-// libFuzzer target: the scene JSON loader (model/scene.hpp, format in scenes/README.md).
+// libFuzzer target: the scene JSON loader (model/scene/scene.hpp, format in scenes/README.md).
 // Contract under test: for any bytes, parse_scene either returns a scene that satisfies
 // the loader's documented limits or throws SceneError. Any other exception, a crash, a
 // sanitizer report or a hang is a bug.

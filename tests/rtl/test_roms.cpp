@@ -2,7 +2,7 @@
 // the committed hex files with $readmemh (paths relative to the repository root, the
 // working directory of this test). ROM 12 is checked against values computed here from
 // cos^k in long double (independent of the generator), against the generator's image
-// (model/rom_image.hpp), and, interpolated, against the linear interpolation of the true
+// (model/device/rom_image.hpp), and, interpolated, against the linear interpolation of the true
 // cos^k between the two neighbouring entries. Reads are streamed one per clock and checked
 // their latency later (pipe_stream.hpp), also with random stalls.
 #include "Vcoef_rom_maclaurin.h"

@@ -218,7 +218,7 @@ TEST_CASE("golden device image stays within the device error budget of the float
   const ImageErrorStats e = error_stats(difference(gold, flt));
   CHECK(e.pixels == r.stats.covered_pixels);
   // Source of the bound: the device's own absolute lobe error at each material's n
-  // (device_error, model/evaluators.hpp: C = 1, exact pixel angles), times the largest C of
+  // (device_error, model/reference/evaluators.hpp: C = 1, exact pixel angles), times the largest C of
   // the scene (Is * ks = 0.9, A <= 1), plus the host's rounding of C and of the angles
   // (2 output LSBs). Measured 0.00795 against a bound of 0.00820 (the old bound was 0.02);
   // n = 500 sets both. The headroom (2.5e-4) is a quarter of what a ROM 12 address off by

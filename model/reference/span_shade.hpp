@@ -39,7 +39,7 @@ std::string to_string(SimdPath p);         // "automatic", "scalar", "avx2"
 // spans with it.
 //
 // Bank choice: k is the largest of {1, 2, ..., 8, 12, 16, 24, 32, 48, 64} not above n, and
-// a = coef_minimax(n, k) (model/coefficients.hpp), the a that minimizes the max relative
+// a = coef_minimax(n, k) (model/reference/coefficients.hpp), the a that minimizes the max relative
 // epicenter error. For integer n <= 8 (and n = 12, 16, 24, 32, 48, 64) k = n, a = 1: the
 // shape is exact. The worst over n = 2..1000 of the shape error is 0.0545 % (n = 11, k = 8)
 // in exact arithmetic; the float kernel adds a few 1e-6 (measured with shape_error: 0.0545 %).

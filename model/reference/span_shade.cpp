@@ -1,4 +1,4 @@
-// Span evaluators (model/span_shade.hpp): plans, run-time dispatch, the portable kernels
+// Span evaluators (model/reference/span_shade.hpp): plans, run-time dispatch, the portable kernels
 // and the scalar competitors.
 #include "span_shade.hpp"
 
