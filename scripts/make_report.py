@@ -689,7 +689,7 @@ class Report:
                           f"{fnum(p.get('max_interp_error_abs')):.3g} | {fnum(p.get('simulated_pixels_per_second')):.3g} |")
             st = sim.get("stream")
             if st:
-                w("\nStreaming core (`specular_stream`, minimax ROM): random spans with random gaps, random `px_ready_i` "
+                w("\nStreaming core (`specular_stream`, default build): random spans with random gaps, random `px_ready_i` "
                   "patterns (always high, toggling, random, long stalls) and resets mid-stream; every pixel checked "
                   "bit-exactly against the golden model's stream view, with its tag, `last` flag, count and order:\n")
                 w("| spans | pixels | cycles | resets | mismatches | protocol errors | pixels/clock, l = 0..3, ready high "
@@ -701,7 +701,7 @@ class Report:
             ss = sim.get("scenes_stream", {})
             if ss:
                 w("\nClocks per pixel on the scenes' spans: the streaming core with spans back to back and `px_ready_i` "
-                  "high, against the register interface (`specular_unit`, l + 7 clocks per line), both measured:\n")
+                  "high, against the register interface (`specular_unit`, l + L + 1 clocks per line, L its latency), both measured:\n")
                 w("| scene | spans | pixels | stream clocks/pixel | register interface clocks/pixel | mismatches |")
                 w("|---|---|---|---|---|---|")
                 for sname, x in sorted(ss.items()):
@@ -712,7 +712,8 @@ class Report:
                 w("\nCells (Yosys `synth_ice40`, default configuration): "
                   f"`specular_unit` {sc_u['lut4']} LUT4, {sc_u['ff']} FF, {sc_u['bram']} SB_RAM40_4K; "
                   f"`specular_stream` {sc_s['lut4']} LUT4, {sc_s['ff']} FF, {sc_s['bram']} SB_RAM40_4K "
-                  "(the unit is the stream plus its host registers and start latch).\n")
+                  "(the unit is the stream plus its host registers and start latch, with a 1-bit tag where the stream "
+                  "carries a 16-bit tag through its stages).\n")
             if not any("golden_seconds" in p for p in sim.get("configs", {}).values()):
                 w("\nThe regression's JSON reports the time inside the Verilator model (`sim_seconds`) and the total; the "
                   "golden model and the floating-point reference are not timed separately, so their shares are given "
