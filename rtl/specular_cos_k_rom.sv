@@ -121,8 +121,8 @@ module specular_cos_k_rom #(
       .p_o   (dt)
     );
 
-    specular_delay_nr #(.Width (CosDataBits + 1), .Depth (MulStages)) u_v (
-      .clk_i (clk_i), .en_i (en_i), .d_i (v), .q_o (v_m));
+    specular_delay #(.Width (CosDataBits + 1), .Depth (MulStages), .Reset (1'b0)) u_v (
+      .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (v), .q_o (v_m));
 
     // Round half up; d * t / 2^CosFracBits <= d <= v, so no underflow.
     logic [CosDeltaBits+CosFracBits:0] dt_rnd;
@@ -139,8 +139,8 @@ module specular_cos_k_rom #(
     assign unused_dt_lsbs = ^dt_rnd[CosFracBits-1:0];
   end else begin : gen_direct
     logic [CosDataBits-1:0] w_m;
-    specular_delay_nr #(.Width (CosDataBits), .Depth (MulStages + 1)) u_w (
-      .clk_i (clk_i), .en_i (en_i), .d_i (word_q), .q_o (w_m));
+    specular_delay #(.Width (CosDataBits), .Depth (MulStages + 1), .Reset (1'b0)) u_w (
+      .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (word_q), .q_o (w_m));
     assign cosk_o = {1'b0, w_m};
     logic unused_frac;
     assign unused_frac = ^{frac_q, frac3_q};

@@ -1,12 +1,16 @@
 // Copyright (c) the specular_device authors.
 //
-// Delay line of Depth registers with a common enable (pipeline stall) and asynchronous
-// reset to 0: carries per-pixel side values (C, tag, bank, flags) beside the datapath so
-// they reach each block in the same clock as their pixel. Depth = 0 is a wire.
+// Delay line of Depth registers with a common enable (pipeline stall): carries per-pixel
+// side values (C, tag, bank, flags) beside the datapath so they reach each block in the
+// same clock as their pixel. Depth = 0 is a wire.
+// Reset = 1: asynchronous reset to 0 (values that must read 0 before the first pixel).
+// Reset = 0: no reset, for datapath values whose validity travels in reset valid bits
+// elsewhere (block RAM and multiplier outputs have no reset either); rst_ni is unused.
 
 module specular_delay #(
   parameter int Width = 1,
-  parameter int Depth = 1
+  parameter int Depth = 1,
+  parameter bit Reset = 1'b1
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,
@@ -25,15 +29,28 @@ module specular_delay #(
     assign q_o = d_i;
   end else begin : gen_regs
     logic [Width-1:0] pipe_q [Depth];
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) begin
-        for (int i = 0; i < Depth; i++) begin
-          pipe_q[i] <= '0;
+    if (Reset) begin : gen_reset
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) begin
+          for (int i = 0; i < Depth; i++) begin
+            pipe_q[i] <= '0;
+          end
+        end else if (en_i) begin
+          pipe_q[0] <= d_i;
+          for (int i = 1; i < Depth; i++) begin
+            pipe_q[i] <= pipe_q[i-1];
+          end
         end
-      end else if (en_i) begin
-        pipe_q[0] <= d_i;
-        for (int i = 1; i < Depth; i++) begin
-          pipe_q[i] <= pipe_q[i-1];
+      end
+    end else begin : gen_no_reset
+      logic unused_rst;
+      assign unused_rst = rst_ni;
+      always_ff @(posedge clk_i) begin
+        if (en_i) begin
+          pipe_q[0] <= d_i;
+          for (int i = 1; i < Depth; i++) begin
+            pipe_q[i] <= pipe_q[i-1];
+          end
         end
       end
     end

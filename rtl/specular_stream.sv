@@ -273,8 +273,8 @@ module specular_stream #(
   logic [CBits+1:0]    c3_mul13;     // 3 C (the radix-4 digits of multiplier 13)
   logic [TagBits-1:0]  tag_out;      // at the output register
 
-  specular_delay_nr #(.Width (CoefBits), .Depth (1)) u_coef_line (
-    .clk_i (clk_i), .en_i (adv), .d_i (coef0), .q_o (coef1));
+  specular_delay #(.Width (CoefBits), .Depth (1), .Reset (1'b0)) u_coef_line (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (coef0), .q_o (coef1));
   specular_delay #(.Width (NumBanks), .Depth (Mul11Stages)) u_bank_line (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (bank1), .q_o (bank_rom));
   specular_delay #(.Width (2 * CBits + 2), .Depth (1 + Mul11Stages + Rom12Stages)) u_c_line (
