@@ -59,26 +59,28 @@
 // |zeta| addresses it and zeta >= pi/2 outputs 0.
 //
 // ROM files ($readmemh, paths relative to the working directory) and the numeric
-// parameters are those of specular_unit (see its header and roms/README.md).
+// parameters are those of specular_unit (see its header and roms/README.md); the numeric
+// parameters are /*verilator public*/ here too, so a testbench of the stream alone can
+// check them against specular::device::Format.
 
 module specular_stream #(
-  parameter int CBits       = 16,
-  parameter int CFrac       = 15,
-  parameter int AngleBits   = 32,
-  parameter int AngleFrac   = 28,
-  parameter int AccBits     = 44,
-  parameter int NBits       = 10,
-  parameter int LenBits     = 11,
-  parameter int CoefBits    = 21,
-  parameter int CoefFrac    = 18,
-  parameter int PsiMulFrac  = 20,
-  parameter bit CosInterp   = 1'b1,
-  parameter int CosAddrBits = 8,
-  parameter int CosDataBits = 18,
-  parameter int CosDeltaBits = 12,
-  parameter int CosFracBits = 12,
-  parameter int NumBanks    = 8,
-  parameter logic [NumBanks*NBits-1:0] BankMaxN =
+  parameter int CBits /*verilator public*/       = 16,
+  parameter int CFrac /*verilator public*/       = 15,
+  parameter int AngleBits /*verilator public*/   = 32,
+  parameter int AngleFrac /*verilator public*/   = 28,
+  parameter int AccBits /*verilator public*/     = 44,
+  parameter int NBits /*verilator public*/       = 10,
+  parameter int LenBits /*verilator public*/     = 11,
+  parameter int CoefBits /*verilator public*/    = 21,
+  parameter int CoefFrac /*verilator public*/    = 18,
+  parameter int PsiMulFrac /*verilator public*/  = 20,
+  parameter bit CosInterp /*verilator public*/   = 1'b1,
+  parameter int CosAddrBits /*verilator public*/ = 8,
+  parameter int CosDataBits /*verilator public*/ = 18,
+  parameter int CosDeltaBits /*verilator public*/ = 12,
+  parameter int CosFracBits /*verilator public*/ = 12,
+  parameter int NumBanks /*verilator public*/    = 8,
+  parameter logic [NumBanks*NBits-1:0] BankMaxN /*verilator public*/ =
       {10'd1000, 10'd13, 10'd9, 10'd6, 10'd4, 10'd3, 10'd2, 10'd1},
   parameter     CoefRomFile = "roms/coef_minimax.hex",
   parameter     CosRomFile  = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex",

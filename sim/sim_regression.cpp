@@ -19,6 +19,7 @@
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 #pragma GCC diagnostic ignored "-Wpedantic"  // anonymous structs in Verilator's public-parameter headers
 #include "Vspecular_stream_default.h"
+#include "Vspecular_stream_default_specular_stream.h"
 #include "Vspecular_unit_banks4_interp.h"
 #include "Vspecular_unit_banks4_interp_specular_unit.h"
 #include "Vspecular_unit_default.h"
@@ -472,6 +473,8 @@ int main(int argc, char** argv) {
     const bool run_stream = stream_spans > 0 || !scenes.empty();
     if (run_stream) {
       const auto& bc = specular::build_config("default");
+      if (std::string why_stream; !format_matches_rtl<Vspecular_stream_default_specular_stream>(bc.f, why_stream))
+        throw std::runtime_error("specular_stream's parameter defaults differ from device::Format: " + why_stream);
       StreamHarness<Vspecular_stream_default> sh("specular_stream",
                                                  specular::load_device_model(bc.f, bc.coef_hex(), bc.cos_hex()), 16);
       if (stream_spans > 0) stream = run_stream_stage(sh, seed, stream_spans);
