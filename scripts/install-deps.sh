@@ -14,6 +14,8 @@ PACKAGES=(
   libbenchmark-dev
   libstb-dev
   libsleef-dev
+  libassimp-dev glmark2-data assimp-testmodels
+  iverilog
   yosys
   nextpnr-ice40
   fpga-icestorm
