@@ -5,7 +5,8 @@
 #
 #   scripts/formal.sh [--mutant NAME] [OUT_DIR]
 #
-# Flow: Yosys reads rtl/*.sv and the harness with -formal, flattens, connects the
+# Flow: Yosys reads the sources of rtl/specular.f (compile order, paths relative to the
+# root) and the harness with -formal, flattens, connects the
 # harness's probe wires to the core's state, maps the async reset for the solver
 # (async2sync), then proves with Yosys's own SAT solver:
 #   sat -tempinduct (base case from reset + induction step, up to FORMAL_K = 4 steps;
@@ -14,7 +15,7 @@
 # and boolector hit a recursion error in smtbmc's unroller, so the flow uses sat.)
 # Exit status 0 when proven, 1 otherwise.
 #
-# --mutant NAME copies rtl/*.sv into OUT_DIR, applies one mutation to the copy (never to
+# --mutant NAME copies the files of rtl/specular.f into OUT_DIR, applies one mutation to the copy (never to
 # rtl/) and inverts the result: exit 0 only if the solver finds a counterexample (a
 # failing bounded model check from reset, FORMAL_DEPTH = 22 cycles), 1 if the broken core
 # still passes or a tool fails.
@@ -44,13 +45,24 @@ cd "$root"
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 
-shopt -s nullglob
-rtl_dir=rtl
+# The sources in compile order: rtl/specular.f, one path per line relative to the root,
+# `//` comment lines and blank lines skipped (rtl/README.md).
+mapfile -t files < <(sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' -e '/^\/\//d' -e '/^$/d' rtl/specular.f)
+if [ ${#files[@]} -eq 0 ]; then
+  echo "formal.sh: rtl/specular.f lists no source" >&2; exit 1
+fi
+sources=("${files[@]}")
 if [ -n "$mutant" ]; then
-  rtl_dir="$out/rtl_${mutant}"
-  rm -rf "$rtl_dir"
-  mkdir -p "$rtl_dir"
-  cp rtl/*.sv "$rtl_dir/"
+  # The copy keeps the filelist's relative paths under OUT_DIR/rtl_NAME/.
+  mut_dir="$out/rtl_${mutant}"
+  rm -rf "$mut_dir"
+  sources=()
+  for f in "${files[@]}"; do
+    mkdir -p "$mut_dir/$(dirname "$f")"
+    cp "$f" "$mut_dir/$f"
+    sources+=("$mut_dir/$f")
+  done
+  rtl_dir="$mut_dir/rtl"
   case "$mutant" in
     adv_ignores_room)
       file=specular_out_buf.sv
@@ -73,10 +85,6 @@ if [ -n "$mutant" ]; then
   fi
   echo "formal.sh: mutant '$mutant':"
   diff "rtl/$file" "$rtl_dir/$file" || true
-fi
-sources=("$rtl_dir"/*.sv)
-if [ ${#sources[@]} -eq 0 ]; then
-  echo "formal.sh: no RTL in $rtl_dir" >&2; exit 1
 fi
 
 tag=${mutant:-stream}

@@ -118,8 +118,11 @@ done
 cd "$root"
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
-shopt -s nullglob
-sources=(rtl/*.sv rtl/fpga/*.sv)
+# The core's sources in compile order (rtl/specular.f: one path per line relative to the
+# root, `//` comment lines and blank lines skipped; rtl/README.md), then the harnesses.
+mapfile -t sources < <(sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' -e '/^\/\//d' -e '/^$/d' rtl/specular.f)
+[ ${#sources[@]} -gt 0 ] || { echo "$me: rtl/specular.f lists no source" >&2; exit 1; }
+sources+=(rtl/fpga/fpga_ooc_io.sv rtl/fpga/fpga_ooc_unit.sv rtl/fpga/fpga_ooc_stream.sv)
 
 harness_of() { case "$1" in unit) echo fpga_ooc_unit ;; stream) echo fpga_ooc_stream ;; esac; }
 core_of()    { case "$1" in unit) echo specular_unit ;; stream) echo specular_stream ;; esac; }
@@ -129,7 +132,7 @@ core_of()    { case "$1" in unit) echo specular_unit ;; stream) echo specular_st
 run_key() {
   {
     printf '%s\n' "$@" "${params[@]+"${params[@]}"}"
-    for f in "${sources[@]}" "$me"; do sha256sum "$f"; done
+    for f in "${sources[@]}" rtl/specular.f "$me"; do sha256sum "$f"; done
     find roms -name '*.hex' -type f -print0 2>/dev/null | sort -z | xargs -0 -r sha256sum
     for p in "${params[@]+"${params[@]}"}"; do [ -f "${p#*=}" ] && sha256sum "${p#*=}"; done
     yosys -V; nextpnr-ice40 --version 2>&1

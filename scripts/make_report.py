@@ -34,6 +34,16 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def rtl_sources():
+    """The synthesizable sources in compile order: rtl/specular.f (paths relative to ROOT,
+    `//` comment lines and blank lines skipped; rtl/README.md)."""
+    with open(os.path.join(ROOT, "rtl", "specular.f")) as f:
+        lines = [line.strip() for line in f]
+    return [os.path.join(ROOT, line) for line in lines if line and not line.startswith("//")]
+
+
 BENCH_NS = [5, 50, 500]
 BANDS = [(1, 6), (7, 100), (101, 1000)]
 # Evaluators in table order: key, label, how it is fed.
@@ -152,7 +162,7 @@ class Report:
         # BankMaxN is {bank_max_n[nb-1], ..., bank_max_n[0]}, 10 bits each.
         packed = sum(v << (10 * j) for j, v in enumerate(cfg["bank_max_n"]))
         stat = os.path.join(d, "stat_ice40.txt")
-        sources = " ".join(sorted(glob.glob(os.path.join(ROOT, "rtl", "*.sv"))))
+        sources = " ".join(rtl_sources())
         script = os.path.join(d, "synth.ys")
         params = {"CoefBits": cfg["coef_bits"], "CoefFrac": cfg["coef_frac"], "PsiMulFrac": cfg["psi_mul_frac"],
                   "CosInterp": 1 if cfg["cos_interp"] else 0, "CosAddrBits": cfg["cos_addr_bits"],
@@ -169,7 +179,7 @@ class Report:
         # Synthesis is deterministic: with identical RTL, ROM contents, script and Yosys the
         # previous run's netlist statistics are this run's, so they are reused (and marked).
         h = hashlib.sha256()
-        for path in sorted(glob.glob(os.path.join(ROOT, "rtl", "*.sv"))) + [coef[0], cos[0]]:
+        for path in rtl_sources() + [coef[0], cos[0]]:
             h.update(open(path, "rb").read())
         h.update(open(script, "rb").read())
         h.update(subprocess.run(["yosys", "-V"], capture_output=True, text=True).stdout.encode())

@@ -4,13 +4,14 @@
 #
 #   scripts/synth.sh generic|ice40 [OUT_DIR]
 #
-# Reads every rtl/*.sv with Yosys' SystemVerilog frontend, elaborates specular_unit with
+# Reads the sources of rtl/specular.f with Yosys' SystemVerilog frontend, elaborates the top with
 # its default parameters (ROM hex files relative to the repository root, so this runs
 # from there), fails on any error, on any inferred latch (checked right after `proc`, and
 # again on the mapped netlist) and on `check -assert` problems (undriven or multiply
 # driven nets, combinational loops), then prints the cell counts.
 # SYNTH_COEF_ROM / SYNTH_COS_ROM override the ROM files (paths relative to the root);
-# SYNTH_TOP picks the top module (default specular_unit; specular_stream for the stream).
+# SYNTH_TOP picks the top module (default specular_unit; specular_stream, specular_axis,
+# specular_axil for the others).
 set -euo pipefail
 
 mode=${1:-}
@@ -28,10 +29,11 @@ esac
 
 cd "$root"
 mkdir -p "$out"
-shopt -s nullglob
-sources=(rtl/*.sv)
+# The sources in compile order: rtl/specular.f, one path per line relative to the root,
+# `//` comment lines and blank lines skipped (rtl/README.md).
+mapfile -t sources < <(sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' -e '/^\/\//d' -e '/^$/d' rtl/specular.f)
 if [ ${#sources[@]} -eq 0 ]; then
-  echo "synth.sh: no rtl/*.sv found under $root" >&2; exit 1
+  echo "synth.sh: rtl/specular.f lists no source under $root" >&2; exit 1
 fi
 
 chparam=""

@@ -1,0 +1,29 @@
+// SPDX-License-Identifier: Apache-2.0
+//
+// rtl/specular.f: the synthesizable sources of the core in compile order (leaf modules
+// first, top levels last). One path per line, relative to the repository root; `//`
+// comments and blank lines are ignored. There is no package and no include file.
+// Every build, lint, synthesis, formal and place-and-route flow of this repository reads
+// this file; how to use it elsewhere (Verilator, Icarus, Vivado, Quartus, FuseSoC, a
+// Makefile) is in rtl/README.md. The ctest rtl_filelist fails when an .sv file under
+// rtl/ (outside rtl/formal/ and rtl/fpga/) is missing here or a line names no file.
+// The ROM files are read with $readmemh at elaboration, paths relative to the working
+// directory (the parameters CoefRomFile and CosRomFile; roms/README.md).
+
+// helpers
+rtl/specular_delay.sv
+rtl/specular_pipe_mul.sv
+// patent blocks 1-14 and the output buffer
+rtl/specular_reg.sv
+rtl/specular_down_counter.sv
+rtl/specular_accumulator.sv
+rtl/specular_coef_rom.sv
+rtl/specular_decoder.sv
+rtl/specular_angle_mul.sv
+rtl/specular_cos_k_rom.sv
+rtl/specular_intensity_mul.sv
+rtl/specular_control.sv
+rtl/specular_out_buf.sv
+// top levels: the streaming core, the register interface, the AXI wrappers
+rtl/specular_stream.sv
+rtl/specular_unit.sv
