@@ -27,3 +27,5 @@ rtl/specular_out_buf.sv
 // top levels: the streaming core, the register interface, the AXI wrappers
 rtl/specular_stream.sv
 rtl/specular_unit.sv
+rtl/specular_axis.sv
+rtl/specular_axil.sv
