@@ -1,8 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 //
 // rtl/specular.f: the synthesizable sources of the core in compile order (leaf modules
-// first, top levels last). One path per line, relative to the repository root; `//`
-// comments and blank lines are ignored. There is no package and no include file.
+// first, top levels last). One path per line, relative to the repository root; a line
+// `+incdir+DIR` names an include directory (for `include files, .svh); `//` comment
+// lines and blank lines are ignored. There is no package.
 // Every build, lint, synthesis, formal and place-and-route flow of this repository reads
 // this file; how to use it elsewhere (Verilator, Icarus, Vivado, Quartus, FuseSoC, a
 // Makefile) is in rtl/README.md. The ctest rtl_filelist fails when an .sv file under
@@ -10,6 +11,7 @@
 // The ROM files are read with $readmemh at elaboration, paths relative to the working
 // directory (the parameters CoefRomFile and CosRomFile; roms/README.md).
 
++incdir+rtl
 // helpers
 rtl/specular_delay.sv
 rtl/specular_pipe_mul.sv

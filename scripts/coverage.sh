@@ -33,8 +33,10 @@ echo "coverage: HTML report $OUT/html/index.html, annotated sources $OUT/annotat
 # Every source of rtl/specular.f (compile order, paths relative to the root; rtl/README.md)
 # either has coverage points or is named here: the AXI wrappers are not in sim_regression's
 # models (their tests are the rtl_axi ctests, tests/rtl/).
-mapfile -t rtl_sources < <(sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' -e '/^\/\//d' -e '/^$/d' rtl/specular.f)
-for f in "${rtl_sources[@]}"; do
+# shellcheck source=scripts/rtl_filelist.sh
+source scripts/rtl_filelist.sh
+rtl_filelist
+for f in "${RTL_SOURCES[@]}"; do
   grep -qF "$f" "$OUT/merged.dat" || echo "coverage: $f (rtl/specular.f) is in none of the regression's models"
 done
 python3 scripts/coverage_summary.py "$OUT/merged.dat" --waivers sim/coverage_waivers.txt --out "$OUT/summary.md" --check

@@ -45,13 +45,14 @@ cd "$root"
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
 
-# The sources in compile order: rtl/specular.f, one path per line relative to the root,
-# `//` comment lines and blank lines skipped (rtl/README.md).
-mapfile -t files < <(sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' -e '/^\/\//d' -e '/^$/d' rtl/specular.f)
-if [ ${#files[@]} -eq 0 ]; then
-  echo "formal.sh: rtl/specular.f lists no source" >&2; exit 1
-fi
+# The sources in compile order and the include directories: rtl/specular.f (rtl/README.md).
+# shellcheck source=scripts/rtl_filelist.sh
+source scripts/rtl_filelist.sh
+rtl_filelist || exit 1
+files=("${RTL_SOURCES[@]}")
 sources=("${files[@]}")
+incflags=""
+for d in "${RTL_INCDIRS[@]+"${RTL_INCDIRS[@]}"}"; do incflags+=" -I$d"; done
 if [ -n "$mutant" ]; then
   # The copy keeps the filelist's relative paths under OUT_DIR/rtl_NAME/.
   mut_dir="$out/rtl_${mutant}"
@@ -93,7 +94,7 @@ defines="-DSYNTHESIS"
 if [ -n "$mutant" ]; then
   defines+=" -DFV_PROPERTIES_ONLY"
 fi
-read_cmd="read_verilog -sv -formal ${defines} ${sources[*]} rtl/formal/specular_stream_fv.sv"
+read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/formal/specular_stream_fv.sv"
 # The tag delay line's registers (stages 1 .. PipeDepth - 1), one wire per stage after
 # flatten (Yosys turns specular_delay's array into registers). Latency = PipeDepth + 1
 # (the output buffer) = tag line length + 2.

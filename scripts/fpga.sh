@@ -118,10 +118,14 @@ done
 cd "$root"
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
-# The core's sources in compile order (rtl/specular.f: one path per line relative to the
-# root, `//` comment lines and blank lines skipped; rtl/README.md), then the harnesses.
-mapfile -t sources < <(sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' -e '/^\/\//d' -e '/^$/d' rtl/specular.f)
-[ ${#sources[@]} -gt 0 ] || { echo "$me: rtl/specular.f lists no source" >&2; exit 1; }
+# The core's sources in compile order and its include directories (rtl/specular.f,
+# rtl/README.md), then the harnesses.
+# shellcheck source=scripts/rtl_filelist.sh
+source scripts/rtl_filelist.sh
+rtl_filelist || exit 1
+sources=("${RTL_SOURCES[@]}")
+incflags=""
+for d in "${RTL_INCDIRS[@]+"${RTL_INCDIRS[@]}"}"; do incflags+=" -I$d"; done
 sources+=(rtl/fpga/fpga_ooc_io.sv rtl/fpga/fpga_ooc_unit.sv rtl/fpga/fpga_ooc_stream.sv)
 
 harness_of() { case "$1" in unit) echo fpga_ooc_unit ;; stream) echo fpga_ooc_stream ;; esac; }
@@ -133,6 +137,9 @@ run_key() {
   {
     printf '%s\n' "$@" "${params[@]+"${params[@]}"}"
     for f in "${sources[@]}" rtl/specular.f "$me"; do sha256sum "$f"; done
+    for d in "${RTL_INCDIRS[@]+"${RTL_INCDIRS[@]}"}"; do
+      find "$d" -maxdepth 1 -name '*.svh' -type f -print0 | sort -z | xargs -0 -r sha256sum
+    done
     find roms -name '*.hex' -type f -print0 2>/dev/null | sort -z | xargs -0 -r sha256sum
     for p in "${params[@]+"${params[@]}"}"; do [ -f "${p#*=}" ] && sha256sum "${p#*=}"; done
     yosys -V; nextpnr-ice40 --version 2>&1
@@ -152,7 +159,7 @@ for top in "${tops[@]}"; do
       up5k) pnr_dev="--up5k --package sg48";  freq=$freq_up5k; dsp=" -dsp" ;;
     esac
     {
-      echo "read_verilog -sv -defer ${sources[*]}"
+      echo "read_verilog -sv -defer${incflags} ${sources[*]}"
       for a in "${core_chparam[@]+"${core_chparam[@]}"}"; do echo "chparam $a $core"; done
       for a in "${harness_chparam[@]+"${harness_chparam[@]}"}"; do echo "chparam $a $harness"; done
       echo "hierarchy -check -top $harness"

@@ -36,12 +36,20 @@ import matplotlib.pyplot as plt  # noqa: E402
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
-def rtl_sources():
-    """The synthesizable sources in compile order: rtl/specular.f (paths relative to ROOT,
-    `//` comment lines and blank lines skipped; rtl/README.md)."""
+def rtl_filelist():
+    """rtl/specular.f (rtl/README.md): the synthesizable sources in compile order and the
+    include directories (`+incdir+DIR` lines), absolute; `//` comment lines and blank lines
+    skipped, paths relative to ROOT."""
     with open(os.path.join(ROOT, "rtl", "specular.f")) as f:
         lines = [line.strip() for line in f]
-    return [os.path.join(ROOT, line) for line in lines if line and not line.startswith("//")]
+    lines = [line for line in lines if line and not line.startswith("//")]
+    incdirs = [os.path.join(ROOT, line[len("+incdir+"):]) for line in lines if line.startswith("+incdir+")]
+    sources = [os.path.join(ROOT, line) for line in lines if not line.startswith("+")]
+    return sources, incdirs
+
+
+def rtl_sources():
+    return rtl_filelist()[0]
 
 
 BENCH_NS = [5, 50, 500]
@@ -162,7 +170,7 @@ class Report:
         # BankMaxN is {bank_max_n[nb-1], ..., bank_max_n[0]}, 10 bits each.
         packed = sum(v << (10 * j) for j, v in enumerate(cfg["bank_max_n"]))
         stat = os.path.join(d, "stat_ice40.txt")
-        sources = " ".join(rtl_sources())
+        sources = " ".join([f"-I{d}" for d in rtl_filelist()[1]] + rtl_sources())
         script = os.path.join(d, "synth.ys")
         params = {"CoefBits": cfg["coef_bits"], "CoefFrac": cfg["coef_frac"], "PsiMulFrac": cfg["psi_mul_frac"],
                   "CosInterp": 1 if cfg["cos_interp"] else 0, "CosAddrBits": cfg["cos_addr_bits"],

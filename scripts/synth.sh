@@ -29,12 +29,13 @@ esac
 
 cd "$root"
 mkdir -p "$out"
-# The sources in compile order: rtl/specular.f, one path per line relative to the root,
-# `//` comment lines and blank lines skipped (rtl/README.md).
-mapfile -t sources < <(sed -e 's/^[[:space:]]*//' -e 's/[[:space:]]*$//' -e '/^\/\//d' -e '/^$/d' rtl/specular.f)
-if [ ${#sources[@]} -eq 0 ]; then
-  echo "synth.sh: rtl/specular.f lists no source under $root" >&2; exit 1
-fi
+# The sources in compile order and the include directories: rtl/specular.f (rtl/README.md).
+# shellcheck source=scripts/rtl_filelist.sh
+source scripts/rtl_filelist.sh
+rtl_filelist || exit 1
+sources=("${RTL_SOURCES[@]}")
+incflags=""
+for d in "${RTL_INCDIRS[@]+"${RTL_INCDIRS[@]}"}"; do incflags+=" -I$d"; done
 
 chparam=""
 if [ -n "${SYNTH_COEF_ROM:-}" ]; then
@@ -50,7 +51,7 @@ script="$out/synth_${mode}${suffix}.ys"
 log="$out/synth_${mode}${suffix}.log"
 stat="$out/stat_${mode}${suffix}.txt"
 cat > "$script" <<YS
-read_verilog -sv ${sources[*]}
+read_verilog -sv${incflags} ${sources[*]}
 ${chparam}hierarchy -check -top ${top}
 proc
 select -assert-none t:\$dlatch t:\$adlatch t:\$dlatchsr

@@ -3,8 +3,10 @@
 # ctest rtl_filelist: rtl/specular.f (the compile-order filelist, rtl/README.md) against
 # the tree. Fails when
 #   - a line names a file that does not exist, is not an .sv file or is listed twice;
+#   - a `+incdir+DIR` line names no directory;
 #   - an .sv file under rtl/ is not listed, except the harnesses of rtl/formal/ and
-#     rtl/fpga/ and testbenches (a directory named tb or test, or a file tb_*.sv / *_tb.sv).
+#     rtl/fpga/ and testbenches (a directory named tb or test, or a file tb_*.sv / *_tb.sv);
+#   - an include file (.svh) there is in no `+incdir+` directory.
 # This is the one place that lists rtl/ by pattern, on purpose: every build reads the
 # filelist instead.
 #   cmake -DROOT=<repository root> -P tests/rtl/check_filelist.cmake
@@ -19,12 +21,20 @@ endif()
 
 file(STRINGS ${filelist} lines)
 set(listed "")
+set(incdirs "")
 set(errors "")
 set(lineno 0)
 foreach(line IN LISTS lines)
   math(EXPR lineno "${lineno} + 1")
   string(STRIP "${line}" entry)
   if(entry STREQUAL "" OR entry MATCHES "^//")
+    continue()
+  endif()
+  if(entry MATCHES "^\\+incdir\\+(.+)$")
+    if(NOT IS_DIRECTORY ${ROOT}/${CMAKE_MATCH_1})
+      list(APPEND errors "rtl/specular.f:${lineno}: include directory '${CMAKE_MATCH_1}' does not exist")
+    endif()
+    list(APPEND incdirs ${CMAKE_MATCH_1})
     continue()
   endif()
   if(NOT entry MATCHES "\\.sv$")
@@ -48,6 +58,17 @@ foreach(f IN LISTS present)
   math(EXPR checked "${checked} + 1")
   if(NOT f IN_LIST listed)
     list(APPEND errors "${f} is not in rtl/specular.f (add it in compile order)")
+  endif()
+endforeach()
+
+file(GLOB_RECURSE headers RELATIVE ${ROOT} ${ROOT}/rtl/*.svh)
+foreach(f IN LISTS headers)
+  if(f MATCHES "^rtl/(formal|fpga)/" OR f MATCHES "(^|/)(tb|test|tests)/")
+    continue()
+  endif()
+  get_filename_component(dir ${f} DIRECTORY)
+  if(NOT dir IN_LIST incdirs)
+    list(APPEND errors "${f}: its directory ${dir} is not a +incdir+ line of rtl/specular.f")
   endif()
 endforeach()
 
