@@ -1,7 +1,22 @@
-// Batched scanline setup (model/host/setup_batch.hpp). Interim version: the scalar loop.
+// SPDX-License-Identifier: Apache-2.0
+// Batched scanline setup (model/host/setup_batch.hpp): the SoA containers, the scalar
+// reference loop, the block driver and the run-time dispatch between the two compiled
+// kernels (setup_batch_kernel.inl).
 #include "setup_batch.hpp"
 
+#include "setup_batch_detail.hpp"
+
+#include "metrics.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
 #include <stdexcept>
+#include <utility>
+
+#define SETUP_KERNEL_NS baseline_kernels
+#include "setup_batch_kernel.inl"
+#undef SETUP_KERNEL_NS
 
 namespace specular::host {
 
@@ -43,21 +58,110 @@ void RegisterBatch::resize(size_t count) {
   status.resize(count), flags.resize(count);
 }
 
-void setup_scalar(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
-  out.resize(in.size());
-  for (size_t i = 0; i < in.size(); ++i) {
-    const ScanlineInput s = in.input(i);
-    const ScanlineSetup st = scanline_setup(s);
-    const device::RegisterLoad ld = device::load_registers(st, s.n, s.l, f);
-    out.c[i] = ld.reg.c, out.psi0[i] = ld.reg.psi0, out.dpsi[i] = ld.reg.dpsi;
-    out.n[i] = ld.reg.n, out.len[i] = ld.reg.len;
-    out.status[i] = static_cast<uint8_t>(st.status);
-    out.flags[i] = (ld.c_saturated ? kCSaturated : 0) | (ld.angle_saturated ? kAngleSaturated : 0);
-  }
+namespace {
+
+void check_sizes(const SpanBatch& in) {
+  const size_t n = in.size();
+  for (const auto* v : {&in.n1x, &in.n1y, &in.n1z, &in.n2x, &in.n2y, &in.n2z, &in.h1x, &in.h1y, &in.h1z, &in.hex,
+                        &in.hey, &in.hez, &in.n, &in.scale})
+    if (v->size() != n) throw std::invalid_argument("setup_batch: the SpanBatch arrays differ in length");
 }
 
-void setup_batch(const SpanBatch& in, const device::Format& f, RegisterBatch& out, SimdPath) {
-  setup_scalar(in, f, out);
+void scalar_one(const SpanBatch& in, size_t i, const device::Format& f, RegisterBatch& out) {
+  const ScanlineInput s = in.input(i);
+  const ScanlineSetup st = scanline_setup(s);
+  const device::RegisterLoad ld = device::load_registers(st, s.n, s.l, f);
+  out.c[i] = ld.reg.c, out.psi0[i] = ld.reg.psi0, out.dpsi[i] = ld.reg.dpsi;
+  out.n[i] = ld.reg.n, out.len[i] = ld.reg.len;
+  out.status[i] = static_cast<uint8_t>(st.status);
+  out.flags[i] = (ld.c_saturated ? kCSaturated : 0) | (ld.angle_saturated ? kAngleSaturated : 0);
+}
+
+}  // namespace
+
+void setup_scalar(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
+  check_sizes(in);
+  out.resize(in.size());
+  for (size_t i = 0; i < in.size(); ++i) scalar_one(in, i, f, out);
+}
+
+namespace detail {
+
+void setup_batch_baseline(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
+  run_blocks(in, f, out, baseline_kernels::setup_block);
+}
+
+}  // namespace detail
+
+void setup_batch(const SpanBatch& in, const device::Format& f, RegisterBatch& out, SimdPath path) {
+  check_sizes(in);
+  out.resize(in.size());
+  if (in.size() == 0) return;
+  if (resolve(path) == SimdPath::avx2)
+    detail::setup_batch_avx2(in, f, out);
+  else
+    detail::setup_batch_baseline(in, f, out);
+  // Spans the kernel left to the scalar setup (hard cases: docs/scanline_setup.md#hard-cases).
+  for (size_t i = 0; i < in.size(); ++i)
+    if (out.status[i] == detail::kSpecialStatus) scalar_one(in, i, f, out);
+}
+
+namespace {
+
+// Pixel indices [lo, hi] (clipped to 0..len) where |psi0 + i dpsi| <= cut; lo > hi when none.
+std::pair<int, int> lobe_range(double psi0, double dpsi, int len, double cut) {
+  if (dpsi == 0.0) return std::abs(psi0) <= cut ? std::pair{0, len} : std::pair{1, 0};
+  double a = (-cut - psi0) / dpsi, b = (cut - psi0) / dpsi;
+  if (a > b) std::swap(a, b);
+  const double lo = std::max(0.0, std::floor(a) - 1.0), hi = std::min(static_cast<double>(len), std::ceil(b) + 1.0);
+  return lo > hi ? std::pair{1, 0} : std::pair{static_cast<int>(lo), static_cast<int>(hi)};
+}
+
+struct Decoded {
+  double c, psi0, dpsi, n;
+  int len;
+  // |psi| beyond which C cos^n(psi) < 1 LSB (every pixel when C < 1 LSB: -1).
+  double cut(double lsb) const {
+    if (n <= 0.0 || c < lsb) return -1.0;
+    return std::acos(std::pow(lsb / c, 1.0 / n));
+  }
+  double pixel(int i) const {
+    const double psi = psi0 + i * dpsi;
+    if (n <= 0.0 || !(std::abs(psi) < std::numbers::pi / 2)) return 0.0;
+    return c * std::pow(std::cos(psi), n);
+  }
+};
+
+Decoded decode(const device::Registers& r, const device::Format& f) {
+  const bool valid_n = r.n >= 1 && static_cast<int>(r.n) <= f.max_n();
+  return {device::c_value(r.c, f), device::angle_value(r.psi0, f), device::angle_value(r.dpsi, f),
+          valid_n ? static_cast<double>(r.n) : 0.0, static_cast<int>(r.len)};
+}
+
+}  // namespace
+
+PixelAgreement compare_pixels(const device::Registers& r, const device::Registers& ref, const device::Format& f,
+                              double rel_tol) {
+  PixelAgreement out;
+  const double lsb = std::ldexp(1.0, -f.c_frac);
+  const Decoded a = decode(r, f), b = decode(ref, f);
+  const int len = static_cast<int>(std::max(r.len, ref.len));
+  const auto ra = lobe_range(a.psi0, a.dpsi, len, a.cut(lsb));
+  const auto rb = lobe_range(b.psi0, b.dpsi, len, b.cut(lsb));
+  int lo = std::min(ra.first, rb.first), hi = std::max(ra.second, rb.second);
+  if (ra.first > ra.second) lo = rb.first, hi = rb.second;
+  if (rb.first > rb.second) lo = ra.first, hi = ra.second;
+  const double xe = b.n > 0.0 ? epicenter_end(b.n) : 0.0;
+  for (int i = lo; i <= hi; ++i) {
+    const double pa = i <= a.len ? a.pixel(i) : 0.0, pb = i <= b.len ? b.pixel(i) : 0.0;
+    const double d = std::abs(pa - pb);
+    const bool epi = b.n > 0.0 && std::abs(b.psi0 + i * b.dpsi) <= xe;
+    const double allowance = rel_tol * (epi ? pb : b.c) + lsb;
+    if (d / allowance > out.worst) out.worst = d / allowance, out.worst_pixel = i;
+    out.max_abs_lsb = std::max(out.max_abs_lsb, d / lsb);
+    if (epi && pb >= 0x1p-10) out.max_rel_epicenter = std::max(out.max_rel_epicenter, d / pb);
+  }
+  return out;
 }
 
 }  // namespace specular::host

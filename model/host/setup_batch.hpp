@@ -70,4 +70,21 @@ void setup_scalar(const SpanBatch& in, const device::Format& f, RegisterBatch& o
 void setup_batch(const SpanBatch& in, const device::Format& f, RegisterBatch& out,
                  SimdPath path = SimdPath::automatic);
 
+// How closely two register sets for the same span agree in the pixels they stand for,
+// P_i = C cos^n(psi_i) (0 where |psi_i| >= pi/2), decoded from the codes in double.
+// `ref` is the reference (the scalar setup's registers); the test of the batch is
+//   |P_i - Pref_i| <= rel_tol * Pref_i + 1 LSB   where |psi_i(ref)| <= x_e(n) (the epicenter),
+//   |P_i - Pref_i| <= rel_tol * C_ref + 1 LSB    elsewhere,
+// with 1 LSB = 2^-c_frac. Pixels where both values are below 1 LSB pass without being
+// evaluated (the difference is below 1 LSB), which keeps long spans cheap.
+struct PixelAgreement {
+  double worst = 0.0;              // max |P - Pref| / allowance over the pixels: <= 1 passes
+  double max_rel_epicenter = 0.0;  // max |P - Pref| / Pref over epicenter pixels with Pref >= 2^-10
+  double max_abs_lsb = 0.0;        // max |P - Pref| in LSB of C
+  int worst_pixel = -1;            // where `worst` is reached
+  bool ok() const { return worst <= 1.0; }
+};
+PixelAgreement compare_pixels(const device::Registers& r, const device::Registers& ref, const device::Format& f,
+                              double rel_tol = 1e-4);
+
 }  // namespace specular::host

@@ -1,0 +1,294 @@
+// SPDX-License-Identifier: Apache-2.0
+// The batched setup (model/host/setup_batch.hpp) against the scalar reference setup:
+// the polynomials' error bounds, every hard case of docs/scanline_setup.md#hard-cases (same
+// status, same registers where the scalar setup defines them), and >= 1e6 random spans in
+// the pixels they stand for (0.01 % relative in the epicenter + 1 LSB of C), on every SIMD
+// path this CPU has. SPECULAR_SETUP_SPANS=N runs N random spans instead (the long option).
+#include "setup_batch.hpp"
+
+#include "device_model.hpp"
+#include "metrics.hpp"
+#include "rom_image.hpp"
+#include "scanline_setup.hpp"
+#include "setup_polys.hpp"
+
+#define SETUP_KERNEL_NS test_kernels
+#include "setup_batch_kernel.inl"
+#undef SETUP_KERNEL_NS
+
+#include <catch2/catch.hpp>
+
+#include <glm/geometric.hpp>
+
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+#include <numbers>
+#include <random>
+#include <string>
+#include <vector>
+
+using namespace specular;
+using specular::host::RegisterBatch;
+using specular::host::SpanBatch;
+
+namespace {
+
+std::vector<SimdPath> paths() {
+  std::vector<SimdPath> p{SimdPath::scalar};
+  if (cpu_has_avx2()) p.push_back(SimdPath::avx2);
+  return p;
+}
+
+glm::dvec3 unit(std::mt19937_64& rng) {
+  std::normal_distribution<double> g;
+  for (;;) {
+    const glm::dvec3 v{g(rng), g(rng), g(rng)};
+    const double l = glm::length(v);
+    if (l > 1e-3) return v / l;
+  }
+}
+
+// v turned by `angle` towards a random direction orthogonal to it.
+glm::dvec3 tilt(const glm::dvec3& v, double angle, std::mt19937_64& rng) {
+  glm::dvec3 w = unit(rng);
+  w = glm::normalize(w - glm::dot(w, v) * v);
+  return std::cos(angle) * v + std::sin(angle) * w;
+}
+
+// Random spans shaped like those of meshes and of long spans across a highlight: N2 a
+// small to large turn of N1, H1 near N1 (inside or near the lobe) or anywhere, He = H1
+// (light and viewer at infinity) or a turn of it (point light, perspective), l from
+// single pixels to the counter maximum, n over 1..1000 with the boundaries, scale up to
+// a little over the C range (saturation).
+ScanlineInput random_span(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  auto log_uniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, u01(rng)); };
+  ScanlineInput in;
+  in.n1 = unit(rng);
+  in.n2 = u01(rng) < 0.1 ? in.n1 : tilt(in.n1, log_uniform(1e-9, 2.0), rng);
+  const double n = u01(rng) < 0.05 ? std::vector<double>{1, 2, 3, 6, 7, 1000}[rng() % 6]
+                                   : std::floor(1.0 + 1000.0 * u01(rng));
+  in.n = std::min(n, 1000.0);
+  in.h1 = u01(rng) < 0.8 ? tilt(in.n1, log_uniform(1e-6, 3.0 / std::sqrt(in.n)), rng) : unit(rng);
+  in.he = u01(rng) < 0.5 ? in.h1 : tilt(in.h1, log_uniform(1e-9, 1.0), rng);
+  const double r = u01(rng);
+  in.l = r < 0.6 ? static_cast<int>(rng() % 16) : r < 0.9 ? static_cast<int>(rng() % 256) : static_cast<int>(rng() % 2048);
+  in.is = u01(rng) < 0.02 ? 2.5 : u01(rng) * 1.2;
+  return in;
+}
+
+// The hard cases of docs/scanline_setup.md#hard-cases, named.
+struct Hard {
+  std::string name;
+  ScanlineInput in;
+};
+
+std::vector<Hard> hard_cases() {
+  std::vector<Hard> h;
+  auto add = [&](const std::string& name, auto edit) {
+    ScanlineInput in;
+    in.n1 = glm::normalize(glm::dvec3{0.1, 0.2, 1.0});
+    in.n2 = glm::normalize(glm::dvec3{0.3, -0.1, 1.0});
+    in.h1 = glm::normalize(glm::dvec3{0.15, 0.05, 1.0});
+    in.he = in.h1;
+    in.n = 50;
+    in.l = 20;
+    edit(in);
+    h.push_back({name, in});
+  };
+  const double nan = std::numeric_limits<double>::quiet_NaN(), inf = std::numeric_limits<double>::infinity();
+  add("ordinary", [](ScanlineInput&) {});
+  add("N1 = N2", [](ScanlineInput& s) { s.n2 = s.n1; });
+  add("N1 = N2, H1 = He (gamma 0)", [](ScanlineInput& s) { s.n2 = s.n1, s.he = s.h1; });
+  add("gamma tiny (1e-14)", [](ScanlineInput& s) { s.n2 = s.n1, s.he = glm::normalize(s.h1 + glm::dvec3{1e-14, 0, 0}); });
+  add("gamma tiny (1e-9)", [](ScanlineInput& s) { s.n2 = s.n1, s.he = glm::normalize(s.h1 + glm::dvec3{1e-9, 0, 0}); });
+  add("cos t1 < 0", [](ScanlineInput& s) { s.h1 = s.he = glm::normalize(glm::dvec3{1, 0, -0.2}); });
+  add("cos t1 = 0", [](ScanlineInput& s) { s.n1 = s.n2 = {0, 0, 1}, s.h1 = s.he = {1, 0, 0}; });
+  add("N1 = -N2", [](ScanlineInput& s) { s.n2 = -s.n1; });
+  add("N1 = -N2 nearly", [](ScanlineInput& s) { s.n2 = glm::normalize(-s.n1 + glm::dvec3{1e-13, 0, 0}); });
+  add("N1 = -N2, He along N1", [](ScanlineInput& s) { s.n2 = -s.n1, s.he = s.n1; });
+  add("H2 = -H1", [](ScanlineInput& s) { s.n1 = s.n2 = {0, 0, 1}, s.h1 = {0.6, 0, 0.8}, s.he = -s.h1; });
+  add("L = -V: H1 zero", [](ScanlineInput& s) { s.h1 = {0, 0, 0}; });
+  add("L = -V: He zero", [](ScanlineInput& s) { s.he = {0, 0, 0}; });
+  add("non-unit vectors", [](ScanlineInput& s) { s.n1 *= 3.0, s.n2 *= 0.25, s.h1 *= 7.0, s.he *= 1e-3; });
+  add("tiny vectors", [](ScanlineInput& s) { s.n1 *= 1e-160, s.h1 *= 1e-170; });
+  add("huge vectors", [](ScanlineInput& s) { s.n2 *= 1e160, s.he *= 1e170; });
+  add("zero N1", [](ScanlineInput& s) { s.n1 = {0, 0, 0}; });
+  add("zero N2", [](ScanlineInput& s) { s.n2 = {0, 0, 0}; });
+  add("NaN in N1", [nan](ScanlineInput& s) { s.n1.y = nan; });
+  add("NaN in He", [nan](ScanlineInput& s) { s.he.z = nan; });
+  add("inf in H1", [inf](ScanlineInput& s) { s.h1.x = inf; });
+  add("overflowing N2", [](ScanlineInput& s) { s.n2 = {1e300, 1e300, 0}; });
+  add("NaN n", [nan](ScanlineInput& s) { s.n = nan; });
+  add("n = 0", [](ScanlineInput& s) { s.n = 0; });
+  add("n = 1001", [](ScanlineInput& s) { s.n = 1001; });
+  add("l = -1", [](ScanlineInput& s) { s.l = -1; });
+  add("l = 2048", [](ScanlineInput& s) { s.l = 2048; });
+  add("scale < 0", [](ScanlineInput& s) { s.is = -1; });
+  add("scale NaN", [nan](ScanlineInput& s) { s.is = nan; });
+  add("scale inf", [inf](ScanlineInput& s) { s.is = inf; });
+  add("l = 0", [](ScanlineInput& s) { s.l = 0; });
+  add("l = 2047", [](ScanlineInput& s) { s.l = 2047; });
+  for (int n : {1, 2, 3, 4, 5, 6, 7, 9, 10, 13, 14, 1000})
+    add("n = " + std::to_string(n), [n](ScanlineInput& s) { s.n = n; });
+  add("psi crosses 0", [](ScanlineInput& s) {
+    s.n1 = {0, 0, 1}, s.n2 = glm::normalize(glm::dvec3{0.2, 0, 1}), s.h1 = s.he = glm::normalize(glm::dvec3{0.1, 0, 1});
+  });
+  add("psi beyond pi/2", [](ScanlineInput& s) {
+    s.n1 = {0, 0, 1}, s.n2 = {1, 0, 0}, s.h1 = s.he = glm::normalize(glm::dvec3{-1, 0, 0.3}), s.l = 300, s.n = 1;
+  });
+  add("C saturates", [](ScanlineInput& s) { s.is = 3.0; });
+  add("C just below 2", [](ScanlineInput& s) { s.n2 = s.n1, s.h1 = s.he = s.n1, s.is = 1.99999; });
+  return h;
+}
+
+void fill(SpanBatch& b, const std::vector<ScanlineInput>& v) {
+  b.clear();
+  for (const auto& s : v) b.push_back(s);
+}
+
+}  // namespace
+
+TEST_CASE("setup polynomials stay within their error bounds", "[setup_batch]") {
+  // Against long double libm, on a grid 10x denser than the fit's.
+  double e_atan = 0, e_log = 0, e_exp = 0, e_atan2 = 0;
+  for (int i = 0; i <= 200000; ++i) {
+    const double x = i / 200000.0;
+    e_atan = std::max(e_atan, std::abs(static_cast<double>(host::test_kernels::atan_unit(x) - std::atan(static_cast<long double>(x)))));
+    const double m = 0.5 + 1.5 * x;  // log2 over [1/2, 2] and beyond the fit interval by the exponent split
+    e_log = std::max(e_log, std::abs(static_cast<double>(host::test_kernels::log2_poly(m) - std::log2(static_cast<long double>(m)))));
+    const double f = -20.0 + 40.0 * x;
+    e_exp = std::max(e_exp, std::abs(static_cast<double>(host::test_kernels::exp2_poly(f) / std::exp2(static_cast<long double>(f)) - 1.0L)));
+    const double t = 2.0 * std::numbers::pi * x - std::numbers::pi;
+    const double y = std::sin(t), c = std::cos(t);
+    e_atan2 = std::max(e_atan2, std::abs(static_cast<double>(host::test_kernels::atan2_poly(y, c) -
+                                                                std::atan2(static_cast<long double>(y), static_cast<long double>(c)))));
+  }
+  INFO("atan " << e_atan << ", log2 " << e_log << ", exp2 (relative) " << e_exp << ", atan2 " << e_atan2);
+  CHECK(e_atan < 2e-14);
+  CHECK(e_atan2 < 2e-14);
+  CHECK(e_log < 2e-12);
+  CHECK(e_exp < 1e-13);
+  // Exact corners.
+  CHECK(host::test_kernels::atan2_poly(0.0, 1.0) == 0.0);
+  CHECK(host::test_kernels::atan2_poly(0.0, -1.0) == Approx(std::numbers::pi).epsilon(1e-15));
+  CHECK(host::test_kernels::atan2_poly(0.0, 0.0) == 0.0);
+  CHECK(host::test_kernels::log2_poly(0x1p-1000) == Approx(-1000.0).epsilon(1e-15));
+  CHECK(host::test_kernels::exp2_poly(-1000.0) == Approx(0x1p-1000).epsilon(1e-13));
+  for (double v : {0.49999999999999994, 0.5, 1.5, 2.5, -0.5, -2.5, 1e15 + 0.5, 3.0})
+    CHECK(host::test_kernels::round_away(v) == std::round(v));
+}
+
+TEST_CASE("batched setup: every hard case gets the scalar setup's status and pixels", "[setup_batch]") {
+  const device::Format f;
+  const std::vector<Hard> hard = hard_cases();
+  std::vector<ScanlineInput> in;
+  for (const auto& h : hard) in.push_back(h.in);
+  SpanBatch b;
+  fill(b, in);
+  RegisterBatch ref, got;
+  host::setup_scalar(b, f, ref);
+  for (SimdPath p : paths()) {
+    host::setup_batch(b, f, got, p);
+    REQUIRE(got.size() == hard.size());
+    for (size_t i = 0; i < hard.size(); ++i) {
+      INFO(to_string(p) << ": " << hard[i].name);
+      CHECK(got.status[i] == ref.status[i]);
+      CHECK(got.flags[i] == ref.flags[i]);
+      CHECK(got.n[i] == ref.n[i]);
+      CHECK(got.len[i] == ref.len[i]);
+      if (ref.setup_status(i) != SetupStatus::ok) {
+        // The defined results of the special statuses, register for register.
+        CHECK(got.c[i] == ref.c[i]);
+        CHECK(got.psi0[i] == ref.psi0[i]);
+        CHECK(got.dpsi[i] == ref.dpsi[i]);
+      }
+      const auto a = host::compare_pixels(got.registers(i), ref.registers(i), f);
+      INFO("worst " << a.worst << " at pixel " << a.worst_pixel << ", " << a.max_abs_lsb << " LSB");
+      CHECK(a.ok());
+    }
+  }
+  // The statuses the list is meant to reach, so that a change of the list cannot hide one.
+  std::vector<int> seen(5, 0);
+  for (size_t i = 0; i < hard.size(); ++i) seen.at(ref.status[i])++;
+  for (int s = 0; s < 5; ++s) CHECK(seen[s] > 0);
+}
+
+TEST_CASE("batched setup agrees with the scalar setup on random spans", "[setup_batch]") {
+  const device::Format f;
+  const char* env = std::getenv("SPECULAR_SETUP_SPANS");
+  const size_t total = env ? std::strtoull(env, nullptr, 10) : 1000000;
+  std::mt19937_64 rng(20261202);
+  const size_t chunk = 1 << 16;
+  SpanBatch b;
+  std::vector<ScanlineInput> in;
+  RegisterBatch ref, got;
+  struct Worst {
+    double worst = 0, rel = 0, lsb = 0;
+    size_t status_diff = 0, fails = 0, spans = 0;
+  };
+  std::vector<Worst> worst(paths().size());
+  for (size_t done = 0; done < total; done += chunk) {
+    in.clear();
+    for (size_t i = 0; i < std::min(chunk, total - done); ++i) in.push_back(random_span(rng));
+    fill(b, in);
+    host::setup_scalar(b, f, ref);
+    for (size_t p = 0; p < paths().size(); ++p) {
+      host::setup_batch(b, f, got, paths()[p]);
+      for (size_t i = 0; i < in.size(); ++i) {
+        Worst& w = worst[p];
+        ++w.spans;
+        if (got.status[i] != ref.status[i] || got.flags[i] != ref.flags[i] || got.n[i] != ref.n[i] ||
+            got.len[i] != ref.len[i]) {
+          ++w.status_diff;
+          continue;
+        }
+        const auto a = host::compare_pixels(got.registers(i), ref.registers(i), f);
+        w.fails += !a.ok();
+        w.worst = std::max(w.worst, a.worst), w.rel = std::max(w.rel, a.max_rel_epicenter);
+        w.lsb = std::max(w.lsb, a.max_abs_lsb);
+      }
+    }
+  }
+  for (size_t p = 0; p < paths().size(); ++p) {
+    const Worst& w = worst[p];
+    INFO(to_string(paths()[p]) << ": " << w.spans << " spans, worst " << w.worst << " of the allowance, max rel "
+                               << w.rel << " in the epicenter, max " << w.lsb << " LSB");
+    CHECK(w.spans == total);
+    CHECK(w.status_diff == 0);
+    CHECK(w.fails == 0);
+    CHECK(w.worst <= 1.0);
+    WARN(to_string(paths()[p]) << ": " << w.spans << " spans: worst " << w.worst << " of the allowance, max rel "
+                               << w.rel << " in the epicenter (Pref >= 2^-10), max " << w.lsb << " LSB");
+  }
+}
+
+TEST_CASE("compare_pixels can fail: a one-code change of dpsi on a long, sharp span", "[setup_batch]") {
+  const device::Format f;
+  device::Registers r;
+  r.c = device::quantize_c(1.0, f);
+  r.n = 1000;
+  r.len = 2047;
+  r.psi0 = device::quantize_angle(-0.02, f);
+  r.dpsi = device::quantize_angle(0.04 / 2047, f);
+  CHECK(host::compare_pixels(r, r, f).worst == 0.0);
+  device::Registers s = r;
+  s.dpsi += 1;  // 2047 * 2^-28 = 7.6e-6 rad at the last pixel: n tan(psi) * 7.6e-6 = 1.5e-4 > 1e-4
+  CHECK_FALSE(host::compare_pixels(s, r, f).ok());
+  s = r;
+  s.c += 8;  // 8 LSB at the peak (C = 1: the allowance is 1e-4 + 1 LSB = 4.3 LSB)
+  CHECK_FALSE(host::compare_pixels(s, r, f).ok());
+  s = r;
+  s.c += 1;  // 1 LSB: allowed
+  CHECK(host::compare_pixels(s, r, f).ok());
+}
+
+TEST_CASE("batched setup rejects arrays of different lengths", "[setup_batch]") {
+  SpanBatch b;
+  b.push_back(ScanlineInput{});
+  b.h1x.pop_back();
+  RegisterBatch out;
+  CHECK_THROWS_AS(host::setup_batch(b, device::Format{}, out), std::invalid_argument);
+  CHECK_THROWS_AS(host::setup_scalar(b, device::Format{}, out), std::invalid_argument);
+}
