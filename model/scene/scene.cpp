@@ -1,11 +1,14 @@
 // Scene loading (nlohmann::json) and mesh generation. See scene.hpp and scenes/README.md.
 #include "scene.hpp"
 
+#include "model_file.hpp"
+
 #include <glm/geometric.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <map>
 #include <numbers>
@@ -340,9 +343,35 @@ std::vector<Light> parse_lights(const Reader& rd, const json& root) {
   return out;
 }
 
-Mesh parse_mesh(const Reader& rd, const json& m, const std::string& f, const std::map<std::string, int>& mats) {
+// A `model` mesh: the file is resolved against the scene file's directory and read by
+// load_model_mesh (model_file.hpp); its errors are reported on the `path` field.
+Mesh parse_model(const Reader& rd, const json& m, const std::string& f, const SceneOptions& opt) {
+  rd.only_keys(m, f, {"type", "material", "path", "fit_center", "fit_size", "rotate_deg"});
+  const std::string rel = rd.string_value(m, "path", f + ".path", {});
+  if (rel.empty()) rd.fail(f + ".path", "a non-empty path of a model file", &m["path"]);
+  if (rel.find('\0') != std::string::npos) rd.fail(f + ".path", "a path without NUL characters", &m["path"]);
+  ModelFit fit;
+  fit.center = rd.vec3(m, "fit_center", f + ".fit_center");
+  fit.size = rd.number(m, "fit_size", f + ".fit_size", 0.0, 1e9, true);
+  fit.rotate_deg = rd.vec3_or(m, "rotate_deg", f + ".rotate_deg", {0, 0, 0});
+  namespace fs = std::filesystem;
+  const fs::path p(rel);
+  const std::string resolved =
+      (p.is_absolute() ? p : fs::path(rd.file()).parent_path() / p).lexically_normal().string();
+  if (opt.model_file_allowed && !opt.model_file_allowed(resolved))
+    rd.fail(f + ".path", "a model file this loader may read (" + resolved + " is outside what it allows)", &m["path"]);
+  try {
+    return load_model_mesh(resolved, fit);
+  } catch (const SceneError& e) {
+    throw SceneError(rd.file() + ": field '" + f + ".path': expected a model file with triangles, but " + e.what());
+  }
+}
+
+Mesh parse_mesh(const Reader& rd, const json& m, const std::string& f, const std::map<std::string, int>& mats,
+                const SceneOptions& opt) {
   if (!m.is_object()) rd.fail(f, "an object", &m);
-  const std::string type = rd.string_value(m, "type", f + ".type", {"triangles", "sphere", "torus", "plane"});
+  const std::string type =
+      rd.string_value(m, "type", f + ".type", {"triangles", "sphere", "torus", "plane", "model"});
   std::string mat_list;
   for (const auto& [k, v] : mats) mat_list += (mat_list.empty() ? "\"" : ", \"") + k + "\"";
   const std::string mname = rd.string_value(m, "material", f + ".material", {});
@@ -350,7 +379,9 @@ Mesh parse_mesh(const Reader& rd, const json& m, const std::string& f, const std
   if (mit == mats.end()) rd.fail(f + ".material", "the name of a material (" + mat_list + ")", &m["material"]);
 
   Mesh mesh;
-  if (type == "sphere") {
+  if (type == "model") {
+    mesh = parse_model(rd, m, f, opt);
+  } else if (type == "sphere") {
     rd.only_keys(m, f, {"type", "material", "center", "radius", "tessellation", "axis"});
     mesh = make_sphere(rd.vec3(m, "center", f + ".center"), rd.number(m, "radius", f + ".radius", 0.0, 1e6, true),
                        rd.integer(m, "tessellation", f + ".tessellation", 3, kMaxTessellation),
@@ -421,7 +452,9 @@ std::string line_col(const std::string& text, size_t byte) {
 
 }  // namespace
 
-Scene parse_scene(const std::string& text, const std::string& path) {
+Scene parse_scene(const std::string& text, const std::string& path) { return parse_scene(text, path, SceneOptions{}); }
+
+Scene parse_scene(const std::string& text, const std::string& path, const SceneOptions& options) {
   json root;
   try {
     root = json::parse(text);
@@ -464,16 +497,18 @@ Scene parse_scene(const std::string& text, const std::string& path) {
 
   const json& meshes = rd.array(root, "meshes", "meshes", 1);
   for (size_t i = 0; i < meshes.size(); ++i)
-    s.meshes.push_back(parse_mesh(rd, meshes[i], "meshes[" + std::to_string(i) + "]", mats));
+    s.meshes.push_back(parse_mesh(rd, meshes[i], "meshes[" + std::to_string(i) + "]", mats, options));
   return s;
 }
 
-Scene load_scene(const std::string& path) {
+Scene load_scene(const std::string& path) { return load_scene(path, SceneOptions{}); }
+
+Scene load_scene(const std::string& path, const SceneOptions& options) {
   std::ifstream in(path, std::ios::binary);
   if (!in) throw SceneError(path + ": cannot open the scene file (expected a readable JSON file)");
   std::ostringstream os;
   os << in.rdbuf();
-  return parse_scene(os.str(), path);
+  return parse_scene(os.str(), path, options);
 }
 
 }  // namespace specular

@@ -9,6 +9,7 @@
 #include <glm/vec3.hpp>
 
 #include <array>
+#include <functional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -61,7 +62,7 @@ struct Camera {
 };
 
 struct Mesh {
-  std::string kind;  // "triangles", "sphere", "torus", "plane"
+  std::string kind;  // "triangles", "sphere", "torus", "plane", "model"
   std::vector<glm::dvec3> positions;
   std::vector<glm::dvec3> normals;  // unit, one per position
   std::vector<std::array<int, 3>> triangles;
@@ -87,6 +88,18 @@ inline constexpr int kMaxTessellation = 1024;
 
 Scene load_scene(const std::string& path);               // throws SceneError
 Scene parse_scene(const std::string& json_text, const std::string& path_for_messages);
+
+// What the loader may read besides the scene file itself: the files of `model` meshes
+// (model_file.hpp). Their paths are resolved against the directory of the scene path
+// (`path_for_messages` for parse_scene) and lexically normalized; that resolved path is
+// what `model_file_allowed` sees and what is opened. Empty: every path is allowed. The
+// fuzz target (tests/fuzz/fuzz_scene.cpp) allows one directory of tiny models only, so
+// fuzzed JSON cannot make it read arbitrary files.
+struct SceneOptions {
+  std::function<bool(const std::string& resolved_path)> model_file_allowed;
+};
+Scene load_scene(const std::string& path, const SceneOptions& options);
+Scene parse_scene(const std::string& json_text, const std::string& path_for_messages, const SceneOptions& options);
 
 // Mesh generators (indexed, seams share vertices so adjacent triangles share
 // exact coordinates: no cracks). Normals are the analytic surface normals.
