@@ -21,11 +21,19 @@
 //                  device-method evaluator measured)
 //   device_simd_sse2  the same kernel forced to its x86-64 baseline build (SSE2 vectors)
 //
-// Benchmark names are "<evaluator>/<n>"; items_per_second counts pixels, so
-// ns per pixel = 1e9 / items_per_second. Run with --benchmark_format=json.
+// The scanline setup (model/host/setup_batch.hpp), where items are SPANS, each from vectors to
+// register codes (quantization included), over 4096 synthetic spans (host::random_spans):
+//   setup_scalar   scanline_setup + load_registers per span (double, the reference)
+//   setup_batch    the batched setup, AVX2 when available
+//   setup_batch_sse2  the same forced to its x86-64 baseline build
+//
+// Benchmark names are "<evaluator>/<n>"; items_per_second counts pixels (spans for the
+// setup_* entries, named without /<n>), so ns per item = 1e9 / items_per_second. Run with
+// --benchmark_format=json.
 #include "device_model.hpp"
 #include "evaluators.hpp"
 #include "rom_image.hpp"
+#include "setup_batch.hpp"
 #include "span_shade.hpp"
 
 #include <benchmark/benchmark.h>
@@ -191,6 +199,30 @@ int main(int argc, char** argv) {
         benchmark::ClobberMemory();
       }
       st.SetItemsProcessed(st.iterations() * static_cast<int64_t>(LutEval::kEntries));
+    });
+  }
+
+  // The setup: 4096 spans, items are spans.
+  static host::SpanBatch spans;
+  for (const ScanlineInput& in : host::random_spans(4096, 20261202)) spans.push_back(in);
+  benchmark::RegisterBenchmark("setup_scalar", [f](benchmark::State& st) {
+    host::RegisterBatch out;
+    for (auto _ : st) {
+      host::setup_scalar(spans, f, out);
+      benchmark::DoNotOptimize(out.c.data());
+      benchmark::ClobberMemory();
+    }
+    st.SetItemsProcessed(st.iterations() * static_cast<int64_t>(spans.size()));
+  });
+  for (const auto& [name, path] : {std::pair{"setup_batch", SimdPath::automatic}, std::pair{"setup_batch_sse2", SimdPath::scalar}}) {
+    benchmark::RegisterBenchmark(name, [f, path = path](benchmark::State& st) {
+      host::RegisterBatch out;
+      for (auto _ : st) {
+        host::setup_batch(spans, f, out, path);
+        benchmark::DoNotOptimize(out.c.data());
+        benchmark::ClobberMemory();
+      }
+      st.SetItemsProcessed(st.iterations() * static_cast<int64_t>(spans.size()));
     });
   }
 

@@ -8,9 +8,12 @@
 
 #include "metrics.hpp"
 
+#include <glm/geometric.hpp>
+
 #include <algorithm>
 #include <cmath>
 #include <numbers>
+#include <random>
 #include <stdexcept>
 #include <utility>
 
@@ -104,6 +107,56 @@ void setup_batch(const SpanBatch& in, const device::Format& f, RegisterBatch& ou
   // Spans the kernel left to the scalar setup (hard cases: docs/scanline_setup.md#hard-cases).
   for (size_t i = 0; i < in.size(); ++i)
     if (out.status[i] == detail::kSpecialStatus) scalar_one(in, i, f, out);
+}
+
+namespace {
+
+glm::dvec3 random_unit(std::mt19937_64& rng) {
+  std::normal_distribution<double> g;
+  for (;;) {
+    const glm::dvec3 v{g(rng), g(rng), g(rng)};
+    const double l = glm::length(v);
+    if (l > 1e-3) return v / l;
+  }
+}
+
+// v turned by `angle` towards a random direction orthogonal to it.
+glm::dvec3 tilt(const glm::dvec3& v, double angle, std::mt19937_64& rng) {
+  glm::dvec3 w = random_unit(rng);
+  w = glm::normalize(w - glm::dot(w, v) * v);
+  return std::cos(angle) * v + std::sin(angle) * w;
+}
+
+ScanlineInput random_span(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  auto log_uniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, u01(rng)); };
+  static constexpr double kBoundaries[] = {1, 2, 3, 6, 7, 1000};
+  ScanlineInput in;
+  in.n1 = random_unit(rng);
+  in.n2 = u01(rng) < 0.1 ? in.n1 : tilt(in.n1, log_uniform(1e-9, 2.0), rng);
+  in.n = u01(rng) < 0.05 ? kBoundaries[rng() % 6] : std::min(std::floor(1.0 + 1000.0 * u01(rng)), 1000.0);
+  in.h1 = u01(rng) < 0.8 ? tilt(in.n1, log_uniform(1e-6, 3.0 / std::sqrt(in.n)), rng) : random_unit(rng);
+  in.he = u01(rng) < 0.5 ? in.h1 : tilt(in.h1, log_uniform(1e-9, 1.0), rng);
+  const double r = u01(rng);
+  in.l = static_cast<int>(rng() % (r < 0.6 ? 16 : r < 0.9 ? 256 : 2048));
+  in.is = u01(rng) < 0.02 ? 2.5 : u01(rng) * 1.2;
+  return in;
+}
+
+}  // namespace
+
+std::vector<ScanlineInput> random_spans(size_t count, uint64_t seed) {
+  std::mt19937_64 rng(seed);
+  std::vector<ScanlineInput> v;
+  v.reserve(count);
+  for (size_t i = 0; i < count; ++i) v.push_back(random_span(rng));
+  return v;
+}
+
+std::vector<ScanlineInput> random_spans_of_length(size_t count, uint64_t seed, int len) {
+  std::vector<ScanlineInput> v = random_spans(count, seed);
+  for (auto& s : v) s.l = len;
+  return v;
 }
 
 namespace {

@@ -70,6 +70,15 @@ void setup_scalar(const SpanBatch& in, const device::Format& f, RegisterBatch& o
 void setup_batch(const SpanBatch& in, const device::Format& f, RegisterBatch& out,
                  SimdPath path = SimdPath::automatic);
 
+// Synthetic spans for tests and benchmarks, shaped like those of meshes and of long spans
+// across a highlight: N2 a small to large turn of N1 (10 % equal), H1 near N1 (80 %: inside
+// or near the lobe) or anywhere, He = H1 (light and viewer at infinity, 50 %) or a turn of
+// it, n over 1..1000 (5 % on 1, 2, 3, 6, 7, 1000), l: 60 % 0..15, 30 % 0..255, 10 % 0..2047,
+// Is up to 1.2 (2 % at 2.5: C saturates). Deterministic for a seed.
+std::vector<ScanlineInput> random_spans(size_t count, uint64_t seed);
+// The same with every l = `len` (synthetic spans of one length: benchmarks).
+std::vector<ScanlineInput> random_spans_of_length(size_t count, uint64_t seed, int len);
+
 // How closely two register sets for the same span agree in the pixels they stand for,
 // P_i = C cos^n(psi_i) (0 where |psi_i| >= pi/2), decoded from the codes in double.
 // `ref` is the reference (the scalar setup's registers); the test of the batch is

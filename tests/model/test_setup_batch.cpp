@@ -40,44 +40,6 @@ std::vector<SimdPath> paths() {
   return p;
 }
 
-glm::dvec3 unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  for (;;) {
-    const glm::dvec3 v{g(rng), g(rng), g(rng)};
-    const double l = glm::length(v);
-    if (l > 1e-3) return v / l;
-  }
-}
-
-// v turned by `angle` towards a random direction orthogonal to it.
-glm::dvec3 tilt(const glm::dvec3& v, double angle, std::mt19937_64& rng) {
-  glm::dvec3 w = unit(rng);
-  w = glm::normalize(w - glm::dot(w, v) * v);
-  return std::cos(angle) * v + std::sin(angle) * w;
-}
-
-// Random spans shaped like those of meshes and of long spans across a highlight: N2 a
-// small to large turn of N1, H1 near N1 (inside or near the lobe) or anywhere, He = H1
-// (light and viewer at infinity) or a turn of it (point light, perspective), l from
-// single pixels to the counter maximum, n over 1..1000 with the boundaries, scale up to
-// a little over the C range (saturation).
-ScanlineInput random_span(std::mt19937_64& rng) {
-  std::uniform_real_distribution<double> u01(0.0, 1.0);
-  auto log_uniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, u01(rng)); };
-  ScanlineInput in;
-  in.n1 = unit(rng);
-  in.n2 = u01(rng) < 0.1 ? in.n1 : tilt(in.n1, log_uniform(1e-9, 2.0), rng);
-  const double n = u01(rng) < 0.05 ? std::vector<double>{1, 2, 3, 6, 7, 1000}[rng() % 6]
-                                   : std::floor(1.0 + 1000.0 * u01(rng));
-  in.n = std::min(n, 1000.0);
-  in.h1 = u01(rng) < 0.8 ? tilt(in.n1, log_uniform(1e-6, 3.0 / std::sqrt(in.n)), rng) : unit(rng);
-  in.he = u01(rng) < 0.5 ? in.h1 : tilt(in.h1, log_uniform(1e-9, 1.0), rng);
-  const double r = u01(rng);
-  in.l = r < 0.6 ? static_cast<int>(rng() % 16) : r < 0.9 ? static_cast<int>(rng() % 256) : static_cast<int>(rng() % 2048);
-  in.is = u01(rng) < 0.02 ? 2.5 : u01(rng) * 1.2;
-  return in;
-}
-
 // The hard cases of docs/scanline_setup.md#hard-cases, named.
 struct Hard {
   std::string name;
@@ -219,7 +181,6 @@ TEST_CASE("batched setup agrees with the scalar setup on random spans", "[setup_
   const device::Format f;
   const char* env = std::getenv("SPECULAR_SETUP_SPANS");
   const size_t total = env ? std::strtoull(env, nullptr, 10) : 1000000;
-  std::mt19937_64 rng(20261202);
   const size_t chunk = 1 << 16;
   SpanBatch b;
   std::vector<ScanlineInput> in;
@@ -230,8 +191,7 @@ TEST_CASE("batched setup agrees with the scalar setup on random spans", "[setup_
   };
   std::vector<Worst> worst(paths().size());
   for (size_t done = 0; done < total; done += chunk) {
-    in.clear();
-    for (size_t i = 0; i < std::min(chunk, total - done); ++i) in.push_back(random_span(rng));
+    in = host::random_spans(std::min(chunk, total - done), 20261202 + done);
     fill(b, in);
     host::setup_scalar(b, f, ref);
     for (size_t p = 0; p < paths().size(); ++p) {
