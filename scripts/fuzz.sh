@@ -1,4 +1,5 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
 # `make fuzz`: builds the libFuzzer targets of tests/fuzz with clang++-14
 # (-fsanitize=fuzzer,address,undefined) in BUILD/fuzz and runs each for a bounded time.
 #   scripts/fuzz.sh [BUILD] [FUZZ_SECONDS]     defaults: build, 60 (shared by all targets)

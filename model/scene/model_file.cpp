@@ -9,6 +9,7 @@
 #include <glm/geometric.hpp>
 
 #include <array>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -50,6 +51,7 @@ void sin_cos_deg(double deg, double& s, double& c) {
 
 [[noreturn]] void assimp_fail(const std::string& path, const Assimp::Importer& importer) {
   std::string err = importer.GetErrorString();
+  while (!err.empty() && std::isspace(static_cast<unsigned char>(err.back()))) err.pop_back();  // PLY's ends in a space
   if (err.empty()) err = "no reason given";
   fail(path, "assimp cannot read the model file: " + err);
 }

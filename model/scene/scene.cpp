@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scene loading (nlohmann::json) and mesh generation. See scene.hpp and scenes/README.md.
 #include "scene.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scenes: meshes, materials, lights, camera and image size, loaded from JSON
 // (format documented in scenes/README.md).
 //

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: the tools' argument parsers (model/cli_parse.hpp: parse_real,
 // parse_int, parse_list, parse_vec) and the round-trip number format cli::num.
 // The first byte picks the parser and its range; the rest is the argument text.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // libFuzzer target: the ROM hex reader (model/device/rom_image.hpp read_hex, format in roms/README.md).
 // The first two bytes choose the word width (0..40 bits, beyond the valid 1..32 on purpose)
 // and the depth (0..63); the rest is the file. Contract: read_hex returns exactly `depth`

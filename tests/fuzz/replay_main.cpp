@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Replays fuzz inputs through a libFuzzer target without libFuzzer: each argument is a
 // file or a directory of files, each file one input to LLVMFuzzerTestOneInput. Built
 // with the main compiler so that `make test` checks the committed corpora
