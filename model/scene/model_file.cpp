@@ -155,33 +155,38 @@ Mesh load_model_mesh(const std::string& path, const ModelFit& fit) {
   if (pos.size() > static_cast<size_t>(std::numeric_limits<int>::max()) / 2)
     fail(path, "the model has too many vertices");
 
-  // The fit: bounding box of the triangles' vertices only (stray points or lines that
-  // were dropped do not move the model).
-  dvec3 lo = pos[0], hi = pos[0];
-  for (const dvec3& p : pos) lo = glm::min(lo, p), hi = glm::max(hi, p);
-  const dvec3 extent = hi - lo;
-  const double side = std::max(extent.x, std::max(extent.y, extent.z));
-  if (!(side > 0.0) || !std::isfinite(side))
-    fail(path, "the model's triangles have no extent (every vertex at one point), so it cannot be fitted");
-  const double scale = fit.size / side;
-  const dvec3 box_center = 0.5 * (lo + hi);
-  const glm::dmat3 rot = model_rotation(fit.rotate_deg);
-  std::vector<dvec3> world(pos.size());
-  for (size_t i = 0; i < pos.size(); ++i) world[i] = fit.center + rot * (scale * (pos[i] - box_center));
-
-  // Triangles of zero area carry no normal and cover no pixel: dropped.
+  // Triangles of zero area carry no normal and cover no pixel: dropped. Face normals and
+  // angles are taken in the file's coordinates: the fit is a similarity (uniform scale,
+  // rotation), which keeps angles and turns normals by the rotation alone, and a tiny
+  // fit_size cannot underflow them there.
   std::vector<Tri> kept;
   std::vector<dvec3> face_n;
   kept.reserve(tris.size());
+  auto at = [&](const Tri& t, int k) -> const dvec3& {
+    return pos[static_cast<size_t>(pos_of[t.mesh][t.v[static_cast<size_t>(k)]])];
+  };
   for (const Tri& t : tris) {
-    const dvec3 a = world[pos_of[t.mesh][t.v[0]]], b = world[pos_of[t.mesh][t.v[1]]], c = world[pos_of[t.mesh][t.v[2]]];
-    const dvec3 n = glm::cross(b - a, c - a);
+    const dvec3 n = glm::cross(at(t, 1) - at(t, 0), at(t, 2) - at(t, 0));
     const double len = glm::length(n);
     if (!(len > 0.0) || !std::isfinite(len)) continue;
     kept.push_back(t);
     face_n.push_back(n / len);
   }
   if (kept.empty()) fail(path, "the model file has no triangles of non-zero area");
+
+  // The fit: bounding box of the vertices of the kept triangles only (dropped points,
+  // lines and degenerate triangles do not move the model).
+  dvec3 lo = at(kept[0], 0), hi = lo;
+  for (const Tri& t : kept)
+    for (int k = 0; k < 3; ++k) lo = glm::min(lo, at(t, k)), hi = glm::max(hi, at(t, k));
+  const dvec3 extent = hi - lo;
+  const double side = std::max(extent.x, std::max(extent.y, extent.z));
+  if (!(side > 0.0) || !std::isfinite(side)) fail(path, "the model's extent is not a finite number, so it cannot be fitted");
+  const double scale = fit.size / side;
+  const dvec3 box_center = 0.5 * (lo + hi);
+  const glm::dmat3 rot = model_rotation(fit.rotate_deg);
+  std::vector<dvec3> world(pos.size());
+  for (size_t i = 0; i < pos.size(); ++i) world[i] = fit.center + rot * (scale * (pos[i] - box_center));
 
   // Generated normals for every position: angle-weighted sum of the unit face normals
   // (interior angle at the vertex by atan2(|u x v|, u . v), accurate at any angle).
@@ -190,9 +195,9 @@ Mesh load_model_mesh(const std::string& path, const ModelFit& fit) {
   for (size_t f = 0; f < kept.size(); ++f) {
     const Tri& t = kept[f];
     for (int k = 0; k < 3; ++k) {
-      const int p = pos_of[t.mesh][t.v[k]];
-      const dvec3 u = world[pos_of[t.mesh][t.v[(k + 1) % 3]]] - world[p];
-      const dvec3 v = world[pos_of[t.mesh][t.v[(k + 2) % 3]]] - world[p];
+      const size_t p = static_cast<size_t>(pos_of[t.mesh][t.v[static_cast<size_t>(k)]]);
+      const dvec3 u = at(t, (k + 1) % 3) - pos[p];
+      const dvec3 v = at(t, (k + 2) % 3) - pos[p];
       const double angle = std::atan2(glm::length(glm::cross(u, v)), glm::dot(u, v));
       gen[p] += angle * face_n[f];
       if (first_face[p] < 0) first_face[p] = static_cast<int>(f);
@@ -202,7 +207,8 @@ Mesh load_model_mesh(const std::string& path, const ModelFit& fit) {
     if (first_face[p] < 0) continue;  // only on dropped triangles: not in the output
     const double len = glm::length(gen[p]);
     // A sum that cancels (a vertex of a two-sided sheet): the first face's normal.
-    gen[p] = len > 0.0 && std::isfinite(len) ? gen[p] / len : face_n[static_cast<size_t>(first_face[p])];
+    const dvec3 n = len > 0.0 && std::isfinite(len) ? gen[p] / len : face_n[static_cast<size_t>(first_face[p])];
+    gen[p] = glm::normalize(rot * n);
   }
 
   // Output vertices: a mesh with normals keeps one vertex per (mesh, vertex) as assimp

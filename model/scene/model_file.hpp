@@ -24,10 +24,10 @@
 
 namespace specular {
 
-// Where the model goes: the axis-aligned bounding box of its triangles is scaled
-// uniformly so that its largest side is `size`, its centre moved to `center`, then the
-// model is rotated about `center` by `rotate_deg` (about x, then y, then z; degrees,
-// right-hand rule about the world axes).
+// Where the model goes: the axis-aligned bounding box of its triangles (those of
+// non-zero area) is scaled uniformly so that its largest side is `size`, its centre
+// moved to `center`, then the model is rotated about `center` by `rotate_deg` (about x,
+// then y, then z; degrees, right-hand rule about the world axes).
 struct ModelFit {
   glm::dvec3 center{0, 0, 0};
   double size = 1.0;  // finite, > 0

@@ -267,13 +267,13 @@ TEST_CASE("model normals: the file normals are kept and rotated, a quad is trian
   fs::remove_all(dir);
 }
 
-TEST_CASE("model: merged meshes of a file, dropped points and lines", "[scene][model]") {
+TEST_CASE("model: merged meshes of a file, dropped points, lines and zero-area triangles", "[scene][model]") {
   const fs::path dir = temp_dir("mixed");
-  // Two OBJ groups (two assimp meshes), a stray far point and a line: the point and the
-  // line neither appear nor move the fit.
+  // Two OBJ groups (two assimp meshes), a stray far point, a line and a zero-area
+  // triangle reaching x = 10: none of them appears or moves the fit.
   const fs::path obj = write(dir / "two.obj",
-                             "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nv 3 0 0\nv 4 0 0\nv 3 1 0\n"
-                             "g a\nf 1 2 3\np 4\nl 1 4\ng b\nf 5 6 7\n");
+                             "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 5 5 5\nv 3 0 0\nv 4 0 0\nv 3 1 0\nv 10 0 0\n"
+                             "g a\nf 1 2 3\np 4\nl 1 4\nf 1 2 8\ng b\nf 5 6 7\n");
   const Mesh m = load_model_mesh(obj.string(), identity_fit({0, 0, 0}, 4.0));
   CHECK(m.triangles.size() == 2);
   CHECK(m.positions.size() == 6);
