@@ -214,7 +214,8 @@ int main(int argc, char** argv) {
     }
     st.SetItemsProcessed(st.iterations() * static_cast<int64_t>(spans.size()));
   });
-  for (const auto& [name, path] : {std::pair{"setup_batch", SimdPath::automatic}, std::pair{"setup_batch_sse2", SimdPath::scalar}}) {
+  for (const auto& [name, path] : {std::pair{"setup_batch", SimdPath::automatic}, std::pair{"setup_batch_avx2", SimdPath::avx2},
+                                  std::pair{"setup_batch_sse2", SimdPath::scalar}}) {
     benchmark::RegisterBenchmark(name, [f, path = path](benchmark::State& st) {
       host::RegisterBatch out;
       for (auto _ : st) {

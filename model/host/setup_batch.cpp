@@ -90,6 +90,15 @@ void setup_scalar(const SpanBatch& in, const device::Format& f, RegisterBatch& o
 
 namespace detail {
 
+bool cpu_has_avx512() {
+  static const bool has = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+           __builtin_cpu_supports("avx512vl");
+  }();
+  return has;
+}
+
 void setup_batch_baseline(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
   run_blocks(in, f, out, baseline_kernels::setup_block);
 }
@@ -100,7 +109,9 @@ void setup_batch(const SpanBatch& in, const device::Format& f, RegisterBatch& ou
   check_sizes(in);
   out.resize(in.size());
   if (in.size() == 0) return;
-  if (resolve(path) == SimdPath::avx2)
+  if (path == SimdPath::automatic && detail::cpu_has_avx512())
+    detail::setup_batch_avx512(in, f, out);
+  else if (resolve(path) == SimdPath::avx2)
     detail::setup_batch_avx2(in, f, out);
   else
     detail::setup_batch_baseline(in, f, out);

@@ -97,5 +97,7 @@ void run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& out
 
 void setup_batch_baseline(const SpanBatch& in, const device::Format& f, RegisterBatch& out);
 void setup_batch_avx2(const SpanBatch& in, const device::Format& f, RegisterBatch& out);
+void setup_batch_avx512(const SpanBatch& in, const device::Format& f, RegisterBatch& out);
+bool cpu_has_avx512();  // AVX-512 F, DQ and VL
 
 }  // namespace specular::host::detail

@@ -25,33 +25,64 @@
 namespace specular::host::SETUP_KERNEL_NS {
 
 using detail::BlockOut;
+using detail::kBlock;
 using detail::KernelFormat;
 
 // Adding and subtracting 1.5 * 2^52 rounds |x| < 2^51 to the nearest integer (ties to even)
 // with plain SSE2 arithmetic (no roundpd), so the baseline build vectorizes too.
 constexpr double kRoundMagic = 6755399441055744.0;
 
-template <int N>
-inline double horner(const double (&q)[N], double u) {
-  double r = q[0];
-  for (int i = 1; i < N; ++i) r = r * u + q[i];
-  return r;
+// q(u) for the coefficients q[0] (highest degree) .. q[N-1] by Estrin's scheme: the terms
+// of degree I .. I+M-1 are (low half) + u^(M/2) (high half), recursively. The dependency
+// chain is log2(N) multiply-adds deep instead of N (Horner), and chain length is what bounds
+// this kernel: its loop body is one long chain.
+template <int N, int I, int M>
+inline double estrin_part(const double (&q)[N], const double* pw) {
+  if constexpr (I >= N) {
+    return 0.0;
+  } else if constexpr (M == 1) {
+    return q[N - 1 - I];
+  } else if constexpr (I + M / 2 >= N) {
+    return estrin_part<N, I, M / 2>(q, pw);
+  } else {
+    constexpr int k = std::bit_width(static_cast<unsigned>(M / 2)) - 1;  // u^(M/2) = pw[k]
+    return estrin_part<N, I, M / 2>(q, pw) + pw[k] * estrin_part<N, I + M / 2, M / 2>(q, pw);
+  }
 }
 
-// atan(x) for x in [0, 1].
-inline double atan_unit(double x) { return x * horner(poly::kAtanRatio, 2.0 * x * x - 1.0); }
+template <int N>
+inline double poly_eval(const double (&q)[N], double u) {
+  constexpr int kTop = static_cast<int>(std::bit_ceil(static_cast<unsigned>(N)));
+  double pw[6];  // u^1, u^2, u^4, ..., u^32
+  pw[0] = u;
+  for (int k = 1; k < 6; ++k) pw[k] = pw[k - 1] * pw[k - 1];
+  return estrin_part<N, 0, kTop>(q, pw);
+}
 
-// atan2(y, x) for any finite y, x (atan2(0, 0) = 0), branch-free.
-inline double atan2_poly(double y, double x) {
+// atan(x) for x in [0, 1], with the polynomial Q: poly::kAtanRatio (gamma, 1.8e-12) or
+// poly::kAtanRatioLow (lambda, 4.5e-10).
+template <const auto& Q = poly::kAtanRatio>
+inline double atan_unit(double x) { return x * poly_eval(Q, 2.0 * x * x - 1.0); }
+
+// atan2 in two halves, so that a caller can share one division among several: the divisor
+// max(|x|, |y|) (1 for x = y = 0) and, given its reciprocal, the angle.
+inline double atan2_divisor(double y, double x) {
+  const double ax = std::fabs(x), ay = std::fabs(y);
+  const double mx = ax < ay ? ay : ax;
+  return mx > 0.0 ? mx : 1.0;
+}
+template <const auto& Q = poly::kAtanRatio>
+inline double atan2_with(double y, double x, double inv_divisor) {
   constexpr double kPi = 3.14159265358979323846, kHalfPi = kPi / 2;
   const double ax = std::fabs(x), ay = std::fabs(y);
-  const double mn = ax < ay ? ax : ay, mx = ax < ay ? ay : ax;
-  const double r = mn / (mx > 0.0 ? mx : 1.0);
-  double a = atan_unit(r);
+  double a = atan_unit<Q>((ax < ay ? ax : ay) * inv_divisor);
   a = ay > ax ? kHalfPi - a : a;
   a = x < 0.0 ? kPi - a : a;
   return std::copysign(a, y);
 }
+
+// atan2(y, x) for any finite y, x (atan2(0, 0) = 0), branch-free.
+inline double atan2_poly(double y, double x) { return atan2_with(y, x, 1.0 / atan2_divisor(y, x)); }
 
 // log2(v) for v >= 2^-1000 (normal doubles).
 inline double log2_poly(double v) {
@@ -63,8 +94,8 @@ inline double log2_poly(double v) {
   const bool hi = m > kSqrt2;
   m = hi ? 0.5 * m : m;
   e = hi ? e + 1.0 : e;
-  const double u = (2.0 * m - kSqrtHalf - kSqrt2) / (kSqrt2 - kSqrtHalf);
-  return e + (m - 1.0) * horner(poly::kLog2Ratio, u);
+  const double u = (2.0 * m - kSqrtHalf - kSqrt2) * kSqrt2;  // 1 / (sqrt(2) - sqrt(1/2)) = sqrt(2)
+  return e + (m - 1.0) * poly_eval(poly::kLog2Ratio, u);
 }
 
 // 2^x for x in [-1000, 1000].
@@ -73,7 +104,7 @@ inline double exp2_poly(double x) {
   const double f = x - k;  // [-1/2, 1/2], exact
   // 2^k from its exponent bits: k + 1023 as an integer in the low mantissa bits of 2^52.
   const uint64_t kb = std::bit_cast<uint64_t>(k + (4503599627370496.0 + 1023.0)) & 0x7ffULL;
-  return horner(poly::kExp2, 2.0 * f) * std::bit_cast<double>(kb << 52);
+  return poly_eval(poly::kExp2, 2.0 * f) * std::bit_cast<double>(kb << 52);
 }
 
 // Round half away from zero, as std::round (device::quantize_* use it), for |x| <= 2^50;
@@ -95,10 +126,12 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
   // Below the scalar setup's noise floor of the chord |H2 - H1| (16 ulp) gamma is 0.
   constexpr double kChordNoise = 16.0 * 2.220446049250313e-16;
   // Vectors whose squared length lies outside this range go to the scalar setup (it tests
-  // zero length and overflow on the length itself).
-  constexpr double kTiny = 1e-200, kHuge = 1e200;
+  // zero length and overflow on the length itself); inside it no product below overflows
+  // or underflows (the largest, |G|^2 |c|^4, stays within 1e+-240).
+  constexpr double kTiny = 1e-60, kHuge = 1e60;
   // Margins around the scalar setup's own thresholds (1 + c <= 1e-30, |H2 + H1| <= 1e-12),
-  // wide enough that rounding here cannot decide differently from the scalar setup.
+  // wide enough that rounding here cannot decide differently from the scalar setup:
+  // 1 + c <= 1e-20, and sin^2 gamma <= 1e-20 with cos gamma < 0 (|H2 + H1| <~ 1e-10).
   constexpr double kOpcSpecial = 1e-20, kHsSpecial = 1e-20;
   // Locals, so that the stores below cannot alias the format (which blocks vectorization).
   const double c_scale = kf.c_scale, c_top = kf.c_top, angle_scale = kf.angle_scale;
@@ -109,7 +142,20 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
   double* __restrict on = o.n;
   double* __restrict ofl = o.flags;
   double* __restrict osp = o.special;
-  // Every array is distinct (the caller's block buffers and the batch's inputs).
+  // The work is split into three loops over the block (geometry; the two atan2 and A^2; C and
+  // the codes) with block-local arrays between them. One loop body would be one long
+  // dependency chain; shorter bodies let the CPU overlap many spans (loop fission).
+  alignas(64) double b_ord[kBlock], b_sinr[kBlock], b_cosr[kBlock], b_t[kBlock], b_cos[kBlock];
+  alignas(64) double b_rl[kBlock], b_noise[kBlock], b_gamma[kBlock], b_lambda[kBlock], b_a2[kBlock];
+  // Stage 1, the geometry. Vectors from a rasterizer are unit to rounding, and then
+  // 1/sqrt(d) = 1 - e/2 + 3e^2/8 with e = d - 1 (the next term, 5e^3/16, is below 3e-19 for
+  // |e| <= 2^-20) replaces three square roots and a division. kNearUnit = true assumes that
+  // and returns true when some span of the block is farther from unit length; the block is
+  // then done again with kNearUnit = false.
+  constexpr double kNearUnitBound = 0x1p-20;
+  auto stage1 = [&]<bool kNearUnit>() -> bool {
+  int64_t far = 0;
+  // Every array is distinct (the caller's block buffers, the batch's inputs, the locals).
 #pragma GCC ivdep
   for (int i = 0; i < count; ++i) {
     const double nn = nexp[i], sc = scale[i], l = len[i];
@@ -136,52 +182,93 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
     ordinary = sc - sc == 0.0 ? ordinary : 0.0;  // finite
 
     // Unit N1, N2, H1.
-    const double r1 = 1.0 / std::sqrt(d_n1), r2 = 1.0 / std::sqrt(d_n2), rh = 1.0 / std::sqrt(d_h1);
+    double r1, r2, rh;
+    if constexpr (kNearUnit) {
+      const double e1 = d_n1 - 1.0, e2 = d_n2 - 1.0, e3 = d_h1 - 1.0;
+      r1 = 1.0 + e1 * (-0.5 + 0.375 * e1);
+      r2 = 1.0 + e2 * (-0.5 + 0.375 * e2);
+      rh = 1.0 + e3 * (-0.5 + 0.375 * e3);
+      far |= std::fabs(e1) > kNearUnitBound ? 1 : 0;
+      far |= std::fabs(e2) > kNearUnitBound ? 1 : 0;
+      far |= std::fabs(e3) > kNearUnitBound ? 1 : 0;
+    } else {
+      // Three square roots, one division for the three reciprocals.
+      const double s1 = std::sqrt(d_n1), s2 = std::sqrt(d_n2), s3 = std::sqrt(d_h1);
+      const double s12 = s1 * s2, p123 = 1.0 / (s12 * s3);
+      r1 = s2 * s3 * p123, r2 = s1 * s3 * p123, rh = s12 * p123;
+    }
     const double ax = n1x[i] * r1, ay = n1y[i] * r1, az = n1z[i] * r1;
     const double bx = n2x[i] * r2, by = n2y[i] * r2, bz = n2z[i] * r2;
     const double hx = h1x[i] * rh, hy = h1y[i] * rh, hz = h1z[i] * rh;
 
-    // 1. H2 = rotation of He taking N2 to N1 (Rodrigues, scanline_setup's stable form).
+    // 1. G = (1 + c) times the rotation of He taking N2 to N1 (Rodrigues in scanline_setup's
+    //    stable form, multiplied through by 1 + c > 0 to save the division). Only the
+    //    direction of H2 = G / |G| counts below, so neither He nor G is normalized.
     const double sx = ax + bx, sy = ay + by, sz = az + bz;
     const double opc = 0.5 * (sx * sx + sy * sy + sz * sz);
     const double vx = ay * sz - az * sy, vy = az * sx - ax * sz, vz = ax * sy - ay * sx;
     const double ex = hex[i], ey = hey[i], ez = hez[i];
     const double wx = vy * ez - vz * ey, wy = vz * ex - vx * ez, wz = vx * ey - vy * ex;  // v x He
-    const double ro = 1.0 / (opc > kOpcSpecial ? opc : 1.0);
-    const double gx = ex - wx + (vy * wz - vz * wy) * ro;
-    const double gy = ey - wy + (vz * wx - vx * wz) * ro;
-    const double gz = ez - wz + (vx * wy - vy * wx) * ro;
-    const double rg = 1.0 / std::sqrt(gx * gx + gy * gy + gz * gz);
-    const double kx = gx * rg, ky = gy * rg, kz = gz * rg;  // H2
+    const double kx = opc * (ex - wx) + (vy * wz - vz * wy);
+    const double ky = opc * (ey - wy) + (vz * wx - vx * wz);
+    const double kz = opc * (ez - wz) + (vx * wy - vy * wx);
 
-    // 2. gamma, and the special case H2 ~ -H1.
-    const double cx = hy * kz - hz * ky, cy = hz * kx - hx * kz, cz = hx * ky - hy * kx;  // c = H1 x H2
-    const double sinr = std::sqrt(cx * cx + cy * cy + cz * cz);
-    const double cosr = hx * kx + hy * ky + hz * kz;
-    const double px = hx + kx, py = hy + ky, pz = hz + kz;
-    const double hs2 = px * px + py * py + pz * pz;  // |H1 + H2|^2, no cancellation
-    const bool noise = sinr <= kChordNoise;
-    const double gamma = noise ? 0.0 : atan2_poly(sinr, cosr);
+    // 2. gamma = atan2(|c|, H1.G) with c = H1 x G (the scale |G| cancels).
+    const double cx = hy * kz - hz * ky, cy = hz * kx - hx * kz, cz = hx * ky - hy * kx;
+    const double k2 = kx * kx + ky * ky + kz * kz;
+    const double c2 = cx * cx + cy * cy + cz * cz;
+    const double cosr = hx * kx + hy * ky + hz * kz;  // |G| cos gamma
+    // Near gamma = 0 and pi the chord |H2 -+ H1| is sin gamma to first order, so both tests
+    // compare |c|^2 = |G|^2 sin^2 gamma with |G|^2 times the squared threshold.
+    const bool noise = c2 <= kChordNoise * kChordNoise * k2;
+    ordinary = opc > kOpcSpecial ? ordinary : 0.0;  // N1 ~ -N2
+    ordinary = (cosr < 0.0) & (c2 <= kHsSpecial * k2) ? 0.0 : ordinary;  // H2 ~ -H1
 
-    // 3. A and lambda: t = (c x H1).N1 = |c| (N1.u).
-    const double cos_t1 = ax * hx + ay * hy + az * hz;
+    // 3. t = (c x H1).N1 = |c| (N1.u) for the unit u of docs/scanline_setup.md step 3.
     const double ux = cy * hz - cz * hy, uy = cz * hx - cx * hz, uz = cx * hy - cy * hx;
-    const double t = noise ? 0.0 : ux * ax + uy * ay + uz * az;
-    const double w = noise ? 1.0 : sinr;
-    const double lambda = atan2_poly(t, w * cos_t1);
-    const double nu = t / w;
-    const double a2 = cos_t1 * cos_t1 + nu * nu;
+    b_ord[i] = ordinary;
+    b_sinr[i] = std::sqrt(c2);  // |G| sin gamma
+    b_cosr[i] = cosr;
+    b_cos[i] = ax * hx + ay * hy + az * hz;  // cos t1
+    b_t[i] = noise ? 0.0 : ux * ax + uy * ay + uz * az;
+    b_noise[i] = noise ? 1.0 : 0.0;
+  }
+  return far != 0;
+  };
+  if (stage1.template operator()<true>()) stage1.template operator()<false>();
 
-    // 4. Device inputs, rounded to the register codes.
+  // Stage 2: lambda = atan2(t, |c| cos t1) and A^2 = cos^2 t1 + t^2 / |c|^2; one division
+  // serves both atan2, 1 / |c|^2 and 1 / l. (The floor only keeps a degenerate span, A ~ 0
+  // and so C = 0, finite.)
+#pragma GCC ivdep
+  for (int i = 0; i < count; ++i) {
+    const bool noise = b_noise[i] != 0.0;
+    const double sinr = b_sinr[i], cosr = b_cosr[i], t = b_t[i], cos_t1 = b_cos[i];
+    const double w = noise ? 1.0 : sinr;
+    const double dg = atan2_divisor(sinr, cosr), dl = atan2_divisor(t, w * cos_t1), w2 = w * w;
+    const double lden = len[i] > 0.0 ? len[i] : 1.0;
+    const double den = dg * dl * w2;
+    const double prod = den * lden;
+    const double rl = 1.0 / (prod > 1e-300 ? prod : 1e-300);  // 1 / (den l)
+    const double rq = rl * lden;                               // 1 / den
+    b_rl[i] = rl * den;                                        // 1 / l
+    b_gamma[i] = noise ? 0.0 : atan2_with(sinr, cosr, rq * dl * w2);
+    b_lambda[i] = atan2_with<poly::kAtanRatioLow>(t, w * cos_t1, rq * dg * w2);
+    b_a2[i] = cos_t1 * cos_t1 + t * t * (rq * dg * dl);
+  }
+
+  // 4. Device inputs, rounded to the register codes.
+#pragma GCC ivdep
+  for (int i = 0; i < count; ++i) {
+    const double nn = nexp[i], sc = scale[i], l = len[i], a2 = b_a2[i];
     const double lg = log2_poly(a2 > 0x1p-1000 ? a2 : 0x1p-1000);
     const double x = 0.5 * nn * lg;
     const double an = exp2_poly(x > -1000.0 ? x : -1000.0);
-    const double cval = sc * an;
-    double cq = round_away(cval * c_scale);
+    double cq = round_away(sc * an * c_scale);
     const double c_flag = cq <= c_top ? 0.0 : 1.0;  // C >= 0 always here
     cq = cq <= c_top ? cq : c_top;
-    const double psi0 = -lambda + 0.0;
-    const double dpsi = l > 0.0 ? gamma / (l > 0.0 ? l : 1.0) : 0.0;
+    const double psi0 = -b_lambda[i] + 0.0;
+    const double dpsi = l > 0.0 ? b_gamma[i] * b_rl[i] : 0.0;
     double pq = round_away(psi0 * angle_scale), dq = round_away(dpsi * angle_scale);
     double a_flag = pq < angle_lo ? 2.0 : 0.0;
     a_flag = pq > angle_hi ? 2.0 : a_flag;
@@ -189,10 +276,8 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
     a_flag = dq > angle_hi ? 2.0 : a_flag;
     pq = pq < angle_lo ? angle_lo : pq > angle_hi ? angle_hi : pq;
     dq = dq < angle_lo ? angle_lo : dq > angle_hi ? angle_hi : dq;
-
-    ordinary = opc > kOpcSpecial ? ordinary : 0.0;
-    ordinary = hs2 > kHsSpecial ? ordinary : 0.0;
     // Special spans get 0 everywhere (never NaN: the caller converts to integers).
+    const double ordinary = b_ord[i];
     const bool take = ordinary > 0.0;
     oc[i] = take ? cq : 0.0;
     op[i] = take ? pq : 0.0;

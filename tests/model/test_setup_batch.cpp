@@ -34,9 +34,11 @@ using specular::host::SpanBatch;
 
 namespace {
 
+// The baseline build, AVX2, and whatever `automatic` picks (AVX-512 where the CPU has it).
 std::vector<SimdPath> paths() {
   std::vector<SimdPath> p{SimdPath::scalar};
   if (cpu_has_avx2()) p.push_back(SimdPath::avx2);
+  p.push_back(SimdPath::automatic);
   return p;
 }
 
@@ -114,10 +116,12 @@ void fill(SpanBatch& b, const std::vector<ScanlineInput>& v) {
 
 TEST_CASE("setup polynomials stay within their error bounds", "[setup_batch]") {
   // Against long double libm, on a grid 10x denser than the fit's.
-  double e_atan = 0, e_log = 0, e_exp = 0, e_atan2 = 0;
+  double e_atan = 0, e_atan_low = 0, e_log = 0, e_exp = 0, e_atan2 = 0;
   for (int i = 0; i <= 200000; ++i) {
     const double x = i / 200000.0;
     e_atan = std::max(e_atan, std::abs(static_cast<double>(host::test_kernels::atan_unit(x) - std::atan(static_cast<long double>(x)))));
+    e_atan_low = std::max(e_atan_low, std::abs(static_cast<double>(host::test_kernels::atan_unit<host::poly::kAtanRatioLow>(x) -
+                                                                    std::atan(static_cast<long double>(x)))));
     const double m = 0.5 + 1.5 * x;  // log2 over [1/2, 2] and beyond the fit interval by the exponent split
     e_log = std::max(e_log, std::abs(static_cast<double>(host::test_kernels::log2_poly(m) - std::log2(static_cast<long double>(m)))));
     const double f = -20.0 + 40.0 * x;
@@ -127,17 +131,20 @@ TEST_CASE("setup polynomials stay within their error bounds", "[setup_batch]") {
     e_atan2 = std::max(e_atan2, std::abs(static_cast<double>(host::test_kernels::atan2_poly(y, c) -
                                                                 std::atan2(static_cast<long double>(y), static_cast<long double>(c)))));
   }
-  INFO("atan " << e_atan << ", log2 " << e_log << ", exp2 (relative) " << e_exp << ", atan2 " << e_atan2);
-  CHECK(e_atan < 2e-14);
-  CHECK(e_atan2 < 2e-14);
-  CHECK(e_log < 2e-12);
-  CHECK(e_exp < 1e-13);
+  INFO("atan " << e_atan << ", atan (lambda) " << e_atan_low << ", log2 " << e_log << ", exp2 (relative) " << e_exp
+                << ", atan2 " << e_atan2);
+  // The bounds of docs/scanline_setup.md#batched-setup (fit error plus rounding).
+  CHECK(e_atan < 2e-12);
+  CHECK(e_atan2 < 2e-12);
+  CHECK(e_atan_low < 5e-10);
+  CHECK(e_log < 2.5e-10);
+  CHECK(e_exp < 1e-10);  // relative: the fit's 4.2e-11 absolute over 2^f in [0.71, 1.41]
   // Exact corners.
   CHECK(host::test_kernels::atan2_poly(0.0, 1.0) == 0.0);
   CHECK(host::test_kernels::atan2_poly(0.0, -1.0) == Approx(std::numbers::pi).epsilon(1e-15));
   CHECK(host::test_kernels::atan2_poly(0.0, 0.0) == 0.0);
   CHECK(host::test_kernels::log2_poly(0x1p-1000) == Approx(-1000.0).epsilon(1e-15));
-  CHECK(host::test_kernels::exp2_poly(-1000.0) == Approx(0x1p-1000).epsilon(1e-13));
+  CHECK(host::test_kernels::exp2_poly(-1000.0) == Approx(0x1p-1000).epsilon(1e-10));
   for (double v : {0.49999999999999994, 0.5, 1.5, 2.5, -0.5, -2.5, 1e15 + 0.5, 3.0})
     CHECK(host::test_kernels::round_away(v) == std::round(v));
 }

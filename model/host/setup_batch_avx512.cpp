@@ -1,0 +1,16 @@
+// SPDX-License-Identifier: Apache-2.0
+// AVX-512 (F, DQ, VL) variant of the batched setup kernel (model/host/setup_batch.hpp). This file is
+// compiled with -mavx512f -mavx512dq -mavx512vl -mprefer-vector-width=512 (model/CMakeLists.txt) and only called after cpu_has_avx512().
+#include "setup_batch_detail.hpp"
+
+#define SETUP_KERNEL_NS avx512_kernels
+#include "setup_batch_kernel.inl"
+#undef SETUP_KERNEL_NS
+
+namespace specular::host::detail {
+
+void setup_batch_avx512(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
+  run_blocks(in, f, out, avx512_kernels::setup_block);
+}
+
+}  // namespace specular::host::detail
