@@ -34,8 +34,9 @@ KernelFormat kernel_format(const device::Format& f) {
 
 }  // namespace
 
-// Output of the block kernel: codes as doubles (integral), flags, and `special` (1: the
-// caller runs the scalar setup for this span).
+// Output of the block kernel: the register codes as (integral) doubles, flags, and `special`
+// (1: the caller runs the scalar setup for this span). Doubles, because a loop that mixes
+// them with narrower integer stores does not vectorize; the driver converts afterwards.
 struct BlockOut {
   double* c;
   double* psi0;
@@ -56,14 +57,13 @@ namespace {
 template <class Kernel>
 void run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& out, Kernel kernel) {
   const KernelFormat kf = kernel_format(f);
-  alignas(64) double len[kBlock], c[kBlock], psi0[kBlock], dpsi[kBlock], n[kBlock], flags[kBlock], special[kBlock];
+  alignas(64) double c[kBlock], psi0[kBlock], dpsi[kBlock], n[kBlock], flags[kBlock], special[kBlock];
   const BlockOut o{c, psi0, dpsi, n, flags, special};
   const bool narrow = f.angle_bits <= 32;  // codes fit int32: a vector conversion
   for (size_t b = 0; b < in.size(); b += kBlock) {
     const int count = static_cast<int>(std::min<size_t>(kBlock, in.size() - b));
-    for (int i = 0; i < count; ++i) len[i] = in.l[b + i];
     kernel(&in.n1x[b], &in.n1y[b], &in.n1z[b], &in.n2x[b], &in.n2y[b], &in.n2z[b], &in.h1x[b], &in.h1y[b],
-           &in.h1z[b], &in.hex[b], &in.hey[b], &in.hez[b], &in.n[b], &in.scale[b], len, count, kf, o);
+           &in.h1z[b], &in.hex[b], &in.hey[b], &in.hez[b], &in.n[b], &in.scale[b], &in.l[b], count, kf, o);
     uint32_t* __restrict oc = &out.c[b];
     int64_t* __restrict op = &out.psi0[b];
     int64_t* __restrict od = &out.dpsi[b];

@@ -121,7 +121,7 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
                         const double* __restrict n2x, const double* __restrict n2y, const double* __restrict n2z,
                         const double* __restrict h1x, const double* __restrict h1y, const double* __restrict h1z,
                         const double* __restrict hex, const double* __restrict hey, const double* __restrict hez,
-                        const double* __restrict nexp, const double* __restrict scale, const double* __restrict len,
+                        const double* __restrict nexp, const double* __restrict scale, const int32_t* __restrict len,
                         int count, const KernelFormat& kf, const BlockOut& o) {
   // Below the scalar setup's noise floor of the chord |H2 - H1| (16 ulp) gamma is 0.
   constexpr double kChordNoise = 16.0 * 2.220446049250313e-16;
@@ -158,7 +158,7 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
   // Every array is distinct (the caller's block buffers, the batch's inputs, the locals).
 #pragma GCC ivdep
   for (int i = 0; i < count; ++i) {
-    const double nn = nexp[i], sc = scale[i], l = len[i];
+    const double nn = nexp[i], sc = scale[i], l = static_cast<double>(len[i]);
     const double d_n1 = n1x[i] * n1x[i] + n1y[i] * n1y[i] + n1z[i] * n1z[i];
     const double d_n2 = n2x[i] * n2x[i] + n2y[i] * n2y[i] + n2z[i] * n2z[i];
     const double d_h1 = h1x[i] * h1x[i] + h1y[i] * h1y[i] + h1z[i] * h1z[i];
@@ -246,7 +246,7 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
     const double sinr = b_sinr[i], cosr = b_cosr[i], t = b_t[i], cos_t1 = b_cos[i];
     const double w = noise ? 1.0 : sinr;
     const double dg = atan2_divisor(sinr, cosr), dl = atan2_divisor(t, w * cos_t1), w2 = w * w;
-    const double lden = len[i] > 0.0 ? len[i] : 1.0;
+    const double lden = len[i] > 0 ? static_cast<double>(len[i]) : 1.0;
     const double den = dg * dl * w2;
     const double prod = den * lden;
     const double rl = 1.0 / (prod > 1e-300 ? prod : 1e-300);  // 1 / (den l)
@@ -260,7 +260,7 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
   // 4. Device inputs, rounded to the register codes.
 #pragma GCC ivdep
   for (int i = 0; i < count; ++i) {
-    const double nn = nexp[i], sc = scale[i], l = len[i], a2 = b_a2[i];
+    const double nn = nexp[i], sc = scale[i], l = static_cast<double>(len[i]), a2 = b_a2[i];
     const double lg = log2_poly(a2 > 0x1p-1000 ? a2 : 0x1p-1000);
     const double x = 0.5 * nn * lg;
     const double an = exp2_poly(x > -1000.0 ? x : -1000.0);
