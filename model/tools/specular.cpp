@@ -7,11 +7,14 @@
 #include "metrics.hpp"
 #include "scanline_setup.hpp"
 #include "shade_command.hpp"
+#include "span_csv.hpp"
 
 #include <glm/vec3.hpp>
 
 #include <cmath>
 #include <cstdio>
+#include <fstream>
+#include <iterator>
 #include <iostream>
 #include <optional>
 #include <sstream>
@@ -125,11 +128,23 @@ int main(int argc, char** argv) {
   shade_cli::Args sh_args;
   shade_cli::add_options(sh, sh_args);
 
+  // --- setup-batch ---
+  auto* sb = app.add_subcommand("setup-batch",
+                                "Scanline setup of many spans to the default build's register codes "
+                                "(docs/scanline_setup.md#batched-setup). Input CSV with the header "
+                                "n1x,n1y,n1z,n2x,n2y,n2z,h1x,h1y,h1z,hex,hey,hez,n,l,scale (scale = Is ks s(n)); "
+                                "output status,c_code,psi0_code,dpsi_code,n,l,C,psi0,dpsi, one line per span");
+  std::string b_in, b_method = "batch", b_out;
+  sb->add_option("--in", b_in, "span CSV file")->required();
+  sb->add_option("--method", b_method, "scalar (scanline_setup, the reference) or batch (default, vectorized)");
+  sb->add_option("--out", b_out, "output file (default: standard output); written whole or not at all");
+
   // Name an unknown command instead of CLI11's generic "a subcommand is required".
   if (argc > 1 && argv[1][0] != '-') {
     const std::string c = argv[1];
-    if (c != "errors" && c != "krange" && c != "albedo" && c != "setup" && c != "shade") {
-      std::cerr << "specular: error: '" << c << "' is not a command; allowed errors, krange, albedo, setup, shade\n";
+    if (c != "errors" && c != "krange" && c != "albedo" && c != "setup" && c != "shade" && c != "setup-batch") {
+      std::cerr << "specular: error: '" << c
+                << "' is not a command; allowed errors, krange, albedo, setup, shade, setup-batch\n";
       return 2;
     }
   }
@@ -277,6 +292,41 @@ int main(int argc, char** argv) {
     } else if (*sh) {
       cmd += " shade";
       out.text = shade_cli::run(sh_args);
+    } else if (*sb) {
+      cmd += " setup-batch";
+      if (b_method != "scalar" && b_method != "batch")
+        bad("--method", "'" + b_method + "' is not allowed; allowed scalar, batch");
+      std::ifstream file(b_in, std::ios::binary);
+      if (!file) bad("--in", "cannot read '" + b_in + "'");
+      const std::string text{std::istreambuf_iterator<char>(file), std::istreambuf_iterator<char>()};
+      if (file.bad()) bad("--in", "cannot read '" + b_in + "'");
+      const host::SpanBatch spans = host::parse_span_csv(text, b_in);
+      const device::Format f;
+      host::RegisterBatch regs;
+      if (b_method == "scalar")
+        host::setup_scalar(spans, f, regs);
+      else
+        host::setup_batch(spans, f, regs);
+      out.text = host::register_csv(regs, f);
+      if (!b_out.empty()) {
+        // Whole file or nothing: a temporary next to it, renamed into place.
+        const std::string tmp = b_out + ".tmp";
+        {
+          std::ofstream o(tmp, std::ios::binary | std::ios::trunc);
+          if (!o) bad("--out", "cannot write '" + b_out + "'");
+          o << out.text;
+          o.close();
+          if (!o) {
+            std::remove(tmp.c_str());
+            bad("--out", "cannot write '" + b_out + "'");
+          }
+        }
+        if (std::rename(tmp.c_str(), b_out.c_str()) != 0) {
+          std::remove(tmp.c_str());
+          bad("--out", "cannot write '" + b_out + "'");
+        }
+        out.text.clear();
+      }
     }
   } catch (const UsageError& e) {
     std::cerr << cmd << ": error: " << e.what() << "\n";

@@ -274,3 +274,82 @@ TEST_CASE("cli: setup CSV round-trips: C cos^n(psi0) from the CSV equals (N1.H1)
                               blinn_0) < 1e-11);
   }
 }
+
+// `specular setup-batch` (docs/scanline_setup.md#batched-setup).
+namespace {
+std::string write_temp(const std::string& name, const std::string& text) {
+  const std::string path = "/tmp/specular_cli_test_" + std::to_string(::getpid()) + "_" + name;
+  std::ofstream(path) << text;
+  return path;
+}
+const std::string kSpanHeader = "n1x,n1y,n1z,n2x,n2y,n2z,h1x,h1y,h1z,hex,hey,hez,n,l,scale\n";
+}  // namespace
+
+TEST_CASE("CLI setup-batch: registers of the scalar and the batched setup, decoded values", "[cli]") {
+  // N1 = N2 = H1 = He = z: A = 1, lambda = gamma = 0, so C = scale exactly rounded, psi0 = dpsi = 0.
+  // The second span is N1 = -N2 (opposite_normals), the third invalid (zero normal).
+  const std::string in = write_temp("spans.csv", kSpanHeader + "0,0,1,0,0,1,0,0,1,0,0,1,50,7,0.75\n"
+                                                               "0,0,1,0,0,-1,0.1,0,1,0.1,0,1,50,4,1\n"
+                                                               "\n"
+                                                               "0,0,0,0,0,1,0,0,1,0,0,1,50,4,1\r\n");
+  const Run s = run("setup-batch --in " + in + " --method scalar");
+  const Run b = run("setup-batch --in " + in);
+  REQUIRE(s.code == 0);
+  REQUIRE(b.code == 0);
+  const auto ls = lines(s.out), lb = lines(b.out);
+  REQUIRE(ls.size() == 4);
+  CHECK(ls[0] == "status,c_code,psi0_code,dpsi_code,n,l,C,psi0,dpsi");
+  CHECK(ls[1] == "ok,24576,0,0,50,7,0.75,0,0");  // 0.75 * 2^15 = 24576
+  CHECK(cells(ls[2])[0] == "opposite_normals");
+  CHECK(ls[3] == "invalid_input,0,0,0,50,4,0,0,0");
+  // The batch gives the same statuses; these spans are exact or hard cases, so the same codes.
+  CHECK(lb == ls);
+  // Decoded values are the codes times 2^-frac exactly.
+  const auto c = cells(ls[2]);
+  CHECK(std::stod(c[6]) == std::ldexp(std::stod(c[1]), -15));
+  CHECK(std::stod(c[7]) == std::ldexp(std::stod(c[2]), -28));
+  CHECK(std::stod(c[8]) == std::ldexp(std::stod(c[3]), -28));
+  std::remove(in.c_str());
+}
+
+TEST_CASE("CLI setup-batch: bad input names the line and column, exit 2, nothing written", "[cli]") {
+  const std::string out = "/tmp/specular_cli_test_" + std::to_string(::getpid()) + "_regs.csv";
+  struct Case {
+    std::string text, expect;
+  };
+  const std::vector<Case> cases{
+      {kSpanHeader + "0,0,1,0,0,1,0,0,1,0,0,1,50,7,0.75\n0,0,1,0,0,1,0,0,1,0,x,1,50,7,1\n", ":3: column hey: 'x' is not a number"},
+      {kSpanHeader + "0,0,1,0,0,1,0,0,1,0,0,1,50,7.5,1\n", ":2: column l: '7.5' is not an integer"},
+      {kSpanHeader + "0,0,1,0,0,1,0,0,1,0,0,1,50,7\n", ":2: has 14 columns; expected 15"},
+      {kSpanHeader + "0,0,1,0,0,1,0,0,1,0,0,1,50,7,1,2\n", ":2: has more than 15 columns"},
+      {kSpanHeader + "0,0,1,0,0,1,0,0,1,0,0,1,50,,1\n", ":2: column l: '' is not a number"},
+      {"n1x,n1y\n", ":1: the header must be exactly n1x,n1y,n1z"},
+      {"", ":1: no header line"},
+  };
+  for (const auto& c : cases) {
+    const std::string in = write_temp("bad.csv", c.text);
+    const Run r = run("setup-batch --in " + in + " --out " + out);
+    INFO(c.text);
+    CHECK(r.code == 2);
+    CHECK(r.out.empty());
+    CHECK(r.err.find(in + c.expect) != std::string::npos);
+    CHECK_FALSE(std::ifstream(out).good());
+    std::remove(in.c_str());
+  }
+  const Run missing = run("setup-batch --in /nonexistent/spans.csv");
+  CHECK(missing.code == 2);
+  CHECK(missing.err.find("--in: cannot read '/nonexistent/spans.csv'") != std::string::npos);
+  const std::string in = write_temp("ok.csv", kSpanHeader + "0,0,1,0,0,1,0,0,1,0,0,1,50,7,0.75\n");
+  const Run method = run("setup-batch --in " + in + " --method fast");
+  CHECK(method.code == 2);
+  CHECK(method.err.find("--method: 'fast' is not allowed; allowed scalar, batch") != std::string::npos);
+  const Run ok = run("setup-batch --in " + in + " --out " + out);
+  CHECK(ok.code == 0);
+  CHECK(ok.out.empty());
+  std::ifstream written(out);
+  std::stringstream ss;
+  ss << written.rdbuf();
+  CHECK(ss.str() == "status,c_code,psi0_code,dpsi_code,n,l,C,psi0,dpsi\nok,24576,0,0,50,7,0.75,0,0\n");
+  std::remove(in.c_str());
+  std::remove(out.c_str());
+}
