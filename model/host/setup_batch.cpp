@@ -99,8 +99,8 @@ bool cpu_has_avx512() {
   return has;
 }
 
-void setup_batch_baseline(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
-  run_blocks(in, f, out, baseline_kernels::setup_block);
+size_t setup_batch_baseline(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
+  return run_blocks(in, f, out, baseline_kernels::setup_block);
 }
 
 }  // namespace detail
@@ -109,15 +109,16 @@ void setup_batch(const SpanBatch& in, const device::Format& f, RegisterBatch& ou
   check_sizes(in);
   out.resize(in.size());
   if (in.size() == 0) return;
+  size_t specials = 0;
   if (path == SimdPath::automatic && detail::cpu_has_avx512())
-    detail::setup_batch_avx512(in, f, out);
+    specials = detail::setup_batch_avx512(in, f, out);
   else if (resolve(path) == SimdPath::avx2)
-    detail::setup_batch_avx2(in, f, out);
+    specials = detail::setup_batch_avx2(in, f, out);
   else
-    detail::setup_batch_baseline(in, f, out);
-  // Spans the kernel left to the scalar setup (hard cases: docs/scanline_setup.md#hard-cases).
-  for (size_t i = 0; i < in.size(); ++i)
-    if (out.status[i] == detail::kSpecialStatus) scalar_one(in, i, f, out);
+    specials = detail::setup_batch_baseline(in, f, out);
+  // Spans the kernel left to the scalar setup (docs/scanline_setup.md#batched-setup).
+  for (size_t i = 0; specials > 0 && i < in.size(); ++i)
+    if (out.status[i] == detail::kSpecialStatus) scalar_one(in, i, f, out), --specials;
 }
 
 namespace {

@@ -9,8 +9,8 @@
 
 namespace specular::host::detail {
 
-void setup_batch_avx512(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
-  run_blocks(in, f, out, avx512_kernels::setup_block);
+size_t setup_batch_avx512(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
+  return run_blocks(in, f, out, avx512_kernels::setup_block);
 }
 
 }  // namespace specular::host::detail

@@ -54,12 +54,14 @@ inline constexpr int kBlock = 256;
 namespace {
 
 // Runs `kernel` over the batch in blocks of kBlock spans (block-local arrays stay in L1).
+// Returns how many spans it left to the scalar setup (status kSpecialStatus).
 template <class Kernel>
-void run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& out, Kernel kernel) {
+size_t run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& out, Kernel kernel) {
   const KernelFormat kf = kernel_format(f);
   alignas(64) double c[kBlock], psi0[kBlock], dpsi[kBlock], n[kBlock], flags[kBlock], special[kBlock];
   const BlockOut o{c, psi0, dpsi, n, flags, special};
   const bool narrow = f.angle_bits <= 32;  // codes fit int32: a vector conversion
+  size_t specials = 0;
   for (size_t b = 0; b < in.size(); b += kBlock) {
     const int count = static_cast<int>(std::min<size_t>(kBlock, in.size() - b));
     kernel(&in.n1x[b], &in.n1y[b], &in.n1z[b], &in.n2x[b], &in.n2y[b], &in.n2z[b], &in.h1x[b], &in.h1y[b],
@@ -72,17 +74,21 @@ void run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& out
     uint8_t* __restrict os = &out.status[b];
     uint8_t* __restrict of = &out.flags[b];
     const int32_t* __restrict il = &in.l[b];
+    // The output arrays are distinct vectors (GCC ignores __restrict on locals).
     if (narrow) {
+#pragma GCC ivdep
       for (int i = 0; i < count; ++i) {
         op[i] = static_cast<int32_t>(psi0[i]);
         od[i] = static_cast<int32_t>(dpsi[i]);
       }
     } else {
+#pragma GCC ivdep
       for (int i = 0; i < count; ++i) {
         op[i] = static_cast<int64_t>(psi0[i]);
         od[i] = static_cast<int64_t>(dpsi[i]);
       }
     }
+#pragma GCC ivdep
     for (int i = 0; i < count; ++i) {
       oc[i] = static_cast<uint32_t>(static_cast<int32_t>(c[i]));
       on[i] = static_cast<uint32_t>(static_cast<int32_t>(n[i]));
@@ -90,14 +96,19 @@ void run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& out
       of[i] = static_cast<uint8_t>(static_cast<int32_t>(flags[i]));
       os[i] = special[i] != 0.0 ? kSpecialStatus : static_cast<uint8_t>(SetupStatus::ok);
     }
+    int block_specials = 0;
+    for (int i = 0; i < count; ++i) block_specials += special[i] != 0.0 ? 1 : 0;
+    specials += static_cast<size_t>(block_specials);
   }
+  return specials;
 }
 
 }  // namespace
 
-void setup_batch_baseline(const SpanBatch& in, const device::Format& f, RegisterBatch& out);
-void setup_batch_avx2(const SpanBatch& in, const device::Format& f, RegisterBatch& out);
-void setup_batch_avx512(const SpanBatch& in, const device::Format& f, RegisterBatch& out);
+// Each returns the number of spans left to the scalar setup.
+size_t setup_batch_baseline(const SpanBatch& in, const device::Format& f, RegisterBatch& out);
+size_t setup_batch_avx2(const SpanBatch& in, const device::Format& f, RegisterBatch& out);
+size_t setup_batch_avx512(const SpanBatch& in, const device::Format& f, RegisterBatch& out);
 bool cpu_has_avx512();  // AVX-512 F, DQ and VL
 
 }  // namespace specular::host::detail
