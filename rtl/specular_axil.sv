@@ -56,7 +56,9 @@
 //   - AWPROT and ARPROT are ignored.
 //
 // Span FIFO: FifoDepth entries (default 4) of {tag, len, n, dpsi, psi0, c}. PUSH writes the
-// SPAN_* registers as they are (they keep their values, so a span can be pushed again).
+// SPAN_* registers as they are (they keep their values, so a span can be pushed again);
+// the span enters the FIFO at the edge after the write (in the first cycle of its B) and
+// the core can accept it in the next cycle. STATUS counts it from the write on.
 // A push when the FIFO holds FifoDepth spans is dropped and sets ERR.PUSH_FULL.
 // irq_o: registered, high while (ERR & IRQ_EN) != 0 (level; cleared through ERR or IRQ_EN).
 //
@@ -220,10 +222,18 @@ module specular_axil #(
   logic [LevelBits-1:0]    level_q, level_d;
   logic [InflightBits-1:0] inflight_q, inflight_d;
   logic                    fifo_full, push, pop, busy;
+  logic                    fifo_wr_q;  // the span pushed at the last edge enters the FIFO
+  logic [LevelBits-1:0]    level_shown;
   logic                    core_span_tready, px_fire;
 
-  assign fifo_full = level_q == LevelBits'(FifoDepth);
-  assign busy      = (level_q != '0) || (inflight_q != '0);
+  // A PUSH is decided at the write's edge (counters, errors) and enters the FIFO at the
+  // next edge (fifo_wr_q): the FIFO's write enable then comes from a register, not from
+  // the write decode (iCE40: that enable drives every FIFO flip-flop through a global
+  // buffer). The SPAN_* registers cannot change in between (the next write takes effect
+  // three clocks later at the earliest), and neither can the level seen by the next PUSH.
+  assign fifo_full   = level_q == LevelBits'(FifoDepth);
+  assign level_shown = level_q + LevelBits'(fifo_wr_q);
+  assign busy        = (level_shown != '0) || (inflight_q != '0);
 
   // ---------------------------------------------------------------------------------
   // Write channels: AW and W holding registers, the write, B
@@ -335,9 +345,11 @@ module specular_axil #(
     err_d = err_q & ~err_clear;
     if (push && bad_n) err_d[ErrBadN] = 1'b1;
     if (push_req && fifo_full) err_d[ErrFull] = 1'b1;
-    irq_d    = |(err_d & irq_en_d);
-    spans_d  = spans_q + (push ? 32'd1 : 32'd0);
-    pixels_d = pixels_q + (px_fire ? 32'd1 : 32'd0);
+    irq_d = |(err_d & irq_en_d);
+    // Counters: the increment is a constant-carry chain, the event only selects it (an
+    // event fed into the carry chain would ripple through all 32 bits).
+    spans_d  = push ? spans_q + 32'd1 : spans_q;
+    pixels_d = px_fire ? pixels_q + 32'd1 : pixels_q;
   end
 
   // ---------------------------------------------------------------------------------
@@ -361,7 +373,7 @@ module specular_axil #(
       RegVersion:      rd_value = VersionValue;
       RegIrqEn:        rd_value = 32'(irq_en_q);
       RegErr:          rd_value = 32'(err_q);
-      RegStatus:       rd_value = {21'b0, irq_q, busy, fifo_full, 8'(level_q)};
+      RegStatus:       rd_value = {21'b0, irq_q, busy, level_shown == LevelBits'(FifoDepth), 8'(level_shown)};
       RegSpans:        rd_value = spans_q;
       RegPixels:       rd_value = pixels_q;
       RegSpanC:        rd_value = 32'(span_c_q);
@@ -417,14 +429,14 @@ module specular_axil #(
   always_comb begin
     wr_ptr_d = wr_ptr_q;
     rd_ptr_d = rd_ptr_q;
-    if (push) wr_ptr_d = (wr_ptr_q == PtrBits'(FifoDepth - 1)) ? '0 : wr_ptr_q + PtrBits'(1);
-    if (pop)  rd_ptr_d = (rd_ptr_q == PtrBits'(FifoDepth - 1)) ? '0 : rd_ptr_q + PtrBits'(1);
-    level_d = level_q + LevelBits'(push) - LevelBits'(pop);
+    if (fifo_wr_q) wr_ptr_d = (wr_ptr_q == PtrBits'(FifoDepth - 1)) ? '0 : wr_ptr_q + PtrBits'(1);
+    if (pop)       rd_ptr_d = (rd_ptr_q == PtrBits'(FifoDepth - 1)) ? '0 : rd_ptr_q + PtrBits'(1);
+    level_d = level_q + LevelBits'(fifo_wr_q) - LevelBits'(pop);
   end
 
   // The FIFO words have no reset (they are read only while the level is non-zero).
   always_ff @(posedge clk_i) begin
-    if (push) begin
+    if (fifo_wr_q) begin
       fifo_mem_q[wr_ptr_q] <= {span_tag_q, span_len_q, span_n_q, span_dpsi_q, span_psi0_q, span_c_q};
     end
   end
@@ -503,6 +515,7 @@ module specular_axil #(
       wr_ptr_q    <= '0;
       rd_ptr_q    <= '0;
       level_q     <= '0;
+      fifo_wr_q   <= 1'b0;
       inflight_q  <= '0;
     end else begin
       aw_full_q   <= aw_full_d;
@@ -529,6 +542,7 @@ module specular_axil #(
       wr_ptr_q    <= wr_ptr_d;
       rd_ptr_q    <= rd_ptr_d;
       level_q     <= level_d;
+      fifo_wr_q   <= push;
       inflight_q  <= inflight_d;
     end
   end

@@ -1,14 +1,15 @@
 #!/usr/bin/env bash
 # Out-of-context place and route of the core on iCE40 FPGAs (issue 8 item 7): Yosys
 # synth_ice40, then nextpnr-ice40, of the harnesses in rtl/fpga/ (registered IO around
-# specular_unit and specular_stream), and a summary of LUTs, FFs, block RAMs, DSPs, Fmax
+# specular_unit, specular_stream and specular_axil), and a summary of LUTs, FFs, block RAMs, DSPs, Fmax
 # and pixels per second per harness and device. `make fpga` runs it; so does `make report`.
 #
-#   scripts/fpga.sh [--top unit|stream|all] [--device hx8k|up5k|all] [--out DIR]
+#   scripts/fpga.sh [--top unit|stream|axil|all] [--device hx8k|up5k|all] [--out DIR]
 #                   [--param NAME=VALUE]... [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ]
 #                   [--strict] [--fresh] [--elaborate-only]
 #
-#   --top         harness: unit (fpga_ooc_unit), stream (fpga_ooc_stream) or all (default)
+#   --top         harness: unit (fpga_ooc_unit), stream (fpga_ooc_stream), axil
+#                 (fpga_ooc_axil: the AXI4-Lite core) or all (default)
 #   --device      hx8k (iCE40-HX8K, package ct256, LUT multipliers), up5k (iCE40-UP5K,
 #                 package sg48, synth_ice40 -dsp: SB_MAC16 multipliers) or all (default)
 #   --out         output directory (default build/fpga); one folder per run, TOP_DEVICE/,
@@ -16,7 +17,8 @@
 #   --param       a core parameter by name, e.g. --param CosAddrBits=9
 #                 --param CosRomFile=build/roms9/cos_k_1_2_4_16.hex (repeatable; paths
 #                 relative to the repository root). Interface widths (CBits, AngleBits,
-#                 NBits, LenBits, TagBits) go to the harness, every other name to the core
+#                 NBits, LenBits, TagBits, and AddrWidth of the axil harness only) go to
+#                 the harness, every other name to the core
 #                 module (chparam before elaboration), so any parameter the core has can be
 #                 set and the core's own defaults apply to the rest. Integers and Verilog
 #                 literals (40'h...) are passed as numbers, anything else as a string.
@@ -40,7 +42,7 @@ me=scripts/fpga.sh
 
 die_usage() {
   echo "$me: $*" >&2
-  echo "usage: $me [--top unit|stream|all] [--device hx8k|up5k|all] [--out DIR] [--param NAME=VALUE]... [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--strict] [--fresh] [--elaborate-only]" >&2
+  echo "usage: $me [--top unit|stream|axil|all] [--device hx8k|up5k|all] [--out DIR] [--param NAME=VALUE]... [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--strict] [--fresh] [--elaborate-only]" >&2
   exit 2
 }
 
@@ -75,9 +77,9 @@ while [ $# -gt 0 ]; do
 done
 
 case "$top_arg" in
-  unit|stream) tops=("$top_arg") ;;
-  all)         tops=(unit stream) ;;
-  *) die_usage "--top must be one of unit, stream, all (got '$top_arg')" ;;
+  unit|stream|axil) tops=("$top_arg") ;;
+  all)         tops=(unit stream axil) ;;
+  *) die_usage "--top must be one of unit, stream, axil, all (got '$top_arg')" ;;
 esac
 case "$dev_arg" in
   hx8k|up5k) devices=("$dev_arg") ;;
@@ -92,7 +94,7 @@ done
 
 # Parameters: NAME=VALUE, NAME an identifier; numbers and sized literals as they are,
 # anything else a quoted string (no quotes, backslashes or spaces inside).
-harness_widths=" CBits AngleBits NBits LenBits TagBits "
+harness_widths=" CBits AngleBits NBits LenBits TagBits AddrWidth "
 core_chparam=()
 harness_chparam=()
 for p in "${params[@]+"${params[@]}"}"; do
@@ -126,10 +128,10 @@ rtl_filelist || exit 1
 sources=("${RTL_SOURCES[@]}")
 incflags=""
 for d in "${RTL_INCDIRS[@]+"${RTL_INCDIRS[@]}"}"; do incflags+=" -I$d"; done
-sources+=(rtl/fpga/fpga_ooc_io.sv rtl/fpga/fpga_ooc_unit.sv rtl/fpga/fpga_ooc_stream.sv)
+sources+=(rtl/fpga/fpga_ooc_io.sv rtl/fpga/fpga_ooc_unit.sv rtl/fpga/fpga_ooc_stream.sv rtl/fpga/fpga_ooc_axil.sv)
 
-harness_of() { case "$1" in unit) echo fpga_ooc_unit ;; stream) echo fpga_ooc_stream ;; esac; }
-core_of()    { case "$1" in unit) echo specular_unit ;; stream) echo specular_stream ;; esac; }
+harness_of() { case "$1" in unit) echo fpga_ooc_unit ;; stream) echo fpga_ooc_stream ;; axil) echo fpga_ooc_axil ;; esac; }
+core_of()    { case "$1" in unit) echo specular_unit ;; stream) echo specular_stream ;; axil) echo specular_axil ;; esac; }
 
 # Everything a run's result depends on: sources, ROM files (the defaults in roms/ and any
 # file named by a parameter), parameters, options, this script and the tool versions.

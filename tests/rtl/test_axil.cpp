@@ -516,12 +516,13 @@ TEST_CASE("specular_axil: PUSH to pixel 0 is BUILD_CORE's latency", "[rtl][axil]
   Bench<Vaxil> b(51);
   const uint32_t latency = rd(b.bus, kBuildCore) & 0xff;
   CHECK(latency == 22);
-  // The span enters the FIFO at the edge that ends the write; B is valid in the next cycle,
-  // in which the core accepts the span; pixel 0 follows Latency cycles later.
+  // PUSH takes effect at the edge that ends the write; B is valid in the next cycle, at
+  // whose end the span enters the FIFO; the core accepts it in the cycle after that, and
+  // pixel 0 follows Latency cycles later (docs/interfaces.md).
   push(b, BusSpan{0x4000, 0, 0, 10, 5, 3});
   const long b_cycle = b.bus.last_bvalid_cycle();
   b.bus.idle_cycles(40);
-  CHECK(b.sink.first_valid_cycle - b_cycle == static_cast<long>(latency));
+  CHECK(b.sink.first_valid_cycle - b_cycle == 1 + static_cast<long>(latency));
   CHECK(b.sink.got.size() == 6);
   b.no_protocol_errors();
 }
