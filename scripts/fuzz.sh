@@ -12,7 +12,7 @@ BUILD=${1:-build}
 SECONDS_TOTAL=${2:-60}
 ROOT=$(cd "$(dirname "$0")/.." && pwd)
 OUT="$BUILD/fuzz"
-TARGETS=(scene rom_hex cli_parse)
+TARGETS=(scene rom_hex cli_parse span_csv)
 
 cmake -S "$ROOT/tests/fuzz" -B "$OUT" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo > /dev/null
 cmake --build "$OUT" -j "${JOBS:-2}" > "$OUT/build.log" 2>&1 || { cat "$OUT/build.log"; exit 1; }

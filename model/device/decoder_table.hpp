@@ -1,4 +1,4 @@
-// Decoder 10's table for a bank set (SPEC section 5): which bank k serves which n.
+// Decoder 10's table for a bank set (docs/device.md): which bank k serves which n.
 #pragma once
 
 #include "coefficients.hpp"

@@ -1,4 +1,4 @@
-// Bit-accurate golden model of the device datapath (patent UA 71489), SPEC sections 5, 6, 9.
+// Bit-accurate golden model of the device datapath (patent UA 71489), docs/device.md and docs/interfaces.md.
 //
 // One definition of every width and rounding rule, shared by the ROM generator
 // (model/tools/romgen.cpp), the Verilator testbench (sim/) and the report. The RTL
@@ -93,7 +93,7 @@ double angle_value(int64_t code, const Format& f);
 // stands for.
 double coef_value(uint32_t code, const Format& f);
 
-// The host's register writes for one scanline (SPEC section 4 -> section 6): C, psi0 and dpsi
+// The host's register writes for one scanline (docs/scanline_setup.md -> docs/interfaces.md): C, psi0 and dpsi
 // quantized as above; n to the nearest integer code (0 and > 1000 stay invalid, so the
 // device outputs 0, as the setup's C = 0 does); l clamped to the counter. Every path that
 // loads the device (regression, scenes, report) goes through here.

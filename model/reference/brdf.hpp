@@ -1,4 +1,4 @@
-// Reflectance ("shape") functions of SPEC section 2 and their normalizations.
+// Reflectance ("shape") functions of docs/reflectance.md and their normalizations.
 //
 // Shape functions equal 1 at x = 0. Functions of an angle take x in radians (the angle
 // between N and H for Blinn, between V and R for Phong); functions of a cosine take
@@ -38,11 +38,11 @@ double f16_norm(double n);          // (n + 6) / 24.55
 // 1 / (2 pi Int), Int = integral_0^gran cos(a t)^k cos t sin t dt, gran = min(pi/2, pi/(2a)):
 // the factor that makes the phong-convention albedo of the kutlog shape exactly 1.
 double kutlog_coef_exact(double n, int k, double Q);
-// The paper's symbolic-regression fits (SPEC section 7); Q in [0.1, 0.4] or [0.5, 0.9],
+// The paper's symbolic-regression fits (docs/reflectance.md#energy-normalizations); Q in [0.1, 0.4] or [0.5, 0.9],
 // otherwise std::invalid_argument.
 double kutlog_coef_fit(double n, int k, double Q);
 // Worst absolute error of the fit, max |coef_fit * 2 pi Int - 1| over integer n in [k+1, 1000]
-// (SPEC section 7); *n_at gets the n where it occurs.
+// (docs/reflectance.md#energy-normalizations); *n_at gets the n where it occurs.
 double kutlog_fit_error(int k, double Q, int* n_at = nullptr);
 
 // --- a model described by name, evaluable at an angle ------------------------------

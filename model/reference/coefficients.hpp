@@ -1,9 +1,9 @@
-// Decoder table (patent block 10) and the coefficient policies of ROM 9, SPEC section 5.
+// Decoder table (patent block 10) and the coefficient policies of ROM 9, docs/device.md.
 //
 // The device approximates cos^n(x) by cos^k(a x). The decoder picks k from n; the
 // coefficient policy picks a:
 //   maclaurin  a = sqrt(n/k)          (the patent: equal x^2 terms of the two series)
-//   minimax    the a minimizing the max relative epicenter error (SPEC section 3),
+//   minimax    the a minimizing the max relative epicenter error (docs/metrics.md),
 //              solved numerically and deterministically, converged to 1e-9 relative
 //   kutlog:Q   a = acos(Q^(1/k)) / acos(Q^(1/n))   (the 2023 paper: exact at level Q)
 #pragma once

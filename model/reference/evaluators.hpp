@@ -1,4 +1,4 @@
-// Fast per-pixel evaluators of the specular term, the competitors of SPEC section 8.
+// Fast per-pixel evaluators of the specular term, the competitors of docs/speed_error.md.
 //
 // Each is a small value type built once per exponent n (per scanline, as a renderer would)
 // and called per pixel with the input it naturally takes:
@@ -94,7 +94,7 @@ struct DeviceLine {
 // The line from psi = 0 to about `end` (radians) with l + 1 pixels, C = 1, exponent n.
 DeviceLine make_device_line(const device::Format& f, int n, double end, int l);
 
-// Device error of one configuration at exponent n, SPEC section 3 metrics measured at the
+// Device error of one configuration at exponent n, docs/metrics.md metrics measured at the
 // pixels of three scanlines of 2048 pixels (l = 2047): [0, x_e(n)] for the relative
 // epicenter error, [0, min(pi/2, 12/sqrt(n))] and [0, pi/2] for the absolute lobe error.
 // The reference is C cos^n(psi_i) at the exact (quantized) pixel angle, so the figure is

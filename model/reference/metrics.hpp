@@ -1,4 +1,4 @@
-// Error metrics and albedo integrals of SPEC section 3.
+// Error metrics and albedo integrals of docs/metrics.md.
 #pragma once
 
 #include <functional>

@@ -1,4 +1,4 @@
-// Scanline setup, SPEC section 4. How every hard case is resolved (tests/model/test_scanline.cpp
+// Scanline setup, docs/scanline_setup.md. How every hard case is resolved (tests/model/test_scanline.cpp
 // has one named test per case):
 //
 //  * NaN / infinite components, zero-length N1 or N2, n outside [1, 1000], l outside

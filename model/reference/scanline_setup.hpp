@@ -1,4 +1,4 @@
-// Scanline setup by spherical (angular) interpolation, SPEC section 4.
+// Scanline setup by spherical (angular) interpolation, docs/scanline_setup.md.
 //
 // The host turns the geometry of one scanline into the five device inputs
 // (C, psi0, dpsi, n, l). Along the span the Blinn cosine is exactly
@@ -24,7 +24,7 @@ struct ScanlineInput {
   int l = 0;               // X_end - X_start; the span has l + 1 pixels
 };
 
-// How the setup resolved the input; every hard case of SPEC section 4 maps to one.
+// How the setup resolved the input; every hard case of docs/scanline_setup.md maps to one.
 enum class SetupStatus {
   ok,
   invalid_input,   // NaN / infinite / zero-length vector, n out of range, l < 0: C = 0, all pixels 0

@@ -1,13 +1,13 @@
 // Whole-span specular evaluators for a software rasterizer, and the competitors they are
-// timed against (issue 9; SPEC section 8's speed axis).
+// timed against (the speed axis of docs/speed_error.md).
 //
 // A span is l + 1 pixels i = 0..l of one scanline. The device method of patent UA 71489
-// makes the angle psi between N and H linear along the span (SPEC section 4, spherical
+// makes the angle psi between N and H linear along the span (docs/scanline_setup.md, spherical
 // interpolation): psi_i = psi0 + i * dpsi. The intensity is C * cos^n(psi_i), approximated
 // by C * cos^k(a psi_i) (zero where a|psi_i| >= pi/2).
 //
 //   device_span   the device method, float, vectorized; about 0.05 % worst relative
-//                 epicenter error over n = 2..1000 (SPEC section 3 metric)
+//                 epicenter error over n = 2..1000 (docs/metrics.md metric)
 //   pow_cos_span  scalar double std::pow(std::cos(psi_i), n): the exact reference
 //   phong_span    per-pixel (Blinn-)Phong as a renderer writes it: lerp the normal between
 //                 the span ends, normalize, N.H, pow; float; scalar libm or SLEEF AVX2
@@ -46,7 +46,7 @@ std::string to_string(SimdPath p);         // "automatic", "scalar", "avx2"
 // (The patent's banks {1, 2, 4, 16} give 0.185 % at best; the power-of-two banks up to 64
 // give 0.381 % at n = 3.) The set is tuned for integer n: a real n just above a bank, in the
 // gap 2 < n < 3, exceeds 0.1 % (measured: n = 2.5 0.254 %, n = 3.5 0.0996 %, 4.5 0.053 %). Over the lobe past the
-// epicenter the absolute error of the shape is up to about 6e-3 (SPEC section 3 lobe metric).
+// epicenter the absolute error of the shape is up to about 6e-3 (docs/metrics.md lobe metric).
 struct DeviceSpanPlan {
   double n = 1.0;
   int k = 1;

@@ -1,14 +1,14 @@
 // report_data: the model-side measurements of the speed-against-error report as JSON.
 //   report_data [--out FILE] [--n-step S] [--section NAME]...
 // Sections (all by default):
-//   evaluators  SPEC section 3 errors (max relative epicenter, max absolute lobe) of every
+//   evaluators  docs/metrics.md errors (max relative epicenter, max absolute lobe) of every
 //               C++ evaluator of model/reference/evaluators.hpp for n = 1, 1+S, ... 1000 (and 1000)
 //   curves      evaluator values against the angle for n = 5, 50, 500 (error-vs-angle plots)
 //   albedo      albedo against n, both conventions: normalized blinn, f16, kutlog (exact
 //               coef and the paper's fits)
 //   hardware    device error of RTL configurations, measured with the golden fixed-point
 //               model over scanlines for every n in 1..1000, plus the ROM sizes
-//   hardcases   the SPEC section 4 hard cases through scanline_setup, one object each
+//   hardcases   the docs/scanline_setup.md hard cases through scanline_setup, one object each
 // Non-finite numbers are written as the strings "inf", "-inf", "nan" (JSON has no such
 // numbers). Exit code 2 on bad arguments (nothing written).
 #include "cli_parse.hpp"
@@ -80,7 +80,7 @@ std::vector<EvalDef> evaluator_defs() {
       {"prototype", "angle", [](int n) { return ShapeFn(prototype_eval(n)); }},
       {"patent", "angle", [](int n) { return ShapeFn(patent_eval(n, CoefSpec{CoefPolicy::maclaurin})); }},
       {"patent_minimax", "angle", [](int n) { return ShapeFn(patent_eval(n, CoefSpec{CoefPolicy::minimax})); }},
-      // Whole-span evaluators of model/reference/span_shade.hpp, one pixel at a time (issue 9).
+      // Whole-span evaluators of model/reference/span_shade.hpp, one pixel at a time.
       {"pow_cos", "angle", [](int n) { return ShapeFn([n](double x) { double v; pow_cos_span(n, x, 0.0, 0, 1.0, &v); return v; }); }},
       {"device_simd", "angle", [](int n) {
          const DeviceSpanPlan p = device_span_plan(n);

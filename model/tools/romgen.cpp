@@ -1,4 +1,4 @@
-// romgen: writes the device ROMs (SPEC section 5) from the golden-model formats.
+// romgen: writes the device ROMs (docs/device.md) from the golden-model formats.
 //   romgen --out-dir roms                  the default build: coef_minimax.hex and
 //                                          cos_k_1_2_3_4_6_8_12_16_interp256.hex
 //   romgen --config patent --out-dir roms/patent    coef_maclaurin.hex, cos_k_1_2_4_16.hex

@@ -1,4 +1,4 @@
-// `specular shade`: one span through one evaluator, CSV `i,psi,value` (issue 9).
+// `specular shade`: one span through one evaluator, CSV `i,psi,value`.
 //
 //   specular shade --evaluator NAME --n N --psi0 X --dpsi D --len L [--c C] [--simd PATH]
 //

@@ -104,7 +104,7 @@ int main(int argc, char** argv) {
 
   // --- setup ---
   auto* su = app.add_subcommand("setup",
-                                "Scanline setup (SPEC section 4): A,lambda,gamma,C,psi0,dpsi; with --pixels also "
+                                "Scanline setup (docs/scanline_setup.md): A,lambda,gamma,C,psi0,dpsi; with --pixels also "
                                 "i,psi,blinn,device_float,truth");
   std::string s_n1, s_n2, s_h1, s_he, s_len, s_exp, s_is = "1", s_ks = "1", s_norm = "none", s_coef = "maclaurin", s_q;
   bool s_pixels = false;
@@ -121,7 +121,7 @@ int main(int argc, char** argv) {
   su->add_option("--Q", s_q, "kutlog: level in (0, 1)");
   su->add_flag("--pixels", s_pixels, "also print the per-pixel table");
 
-  // --- shade (issue 9) ---
+  // --- shade ---
   auto* sh = app.add_subcommand("shade",
                                 "One span through one evaluator: i,psi,value with value ~ C cos^n(psi_i), "
                                 "psi_i = psi0 + i dpsi (see model/tools/shade_command.hpp)");

@@ -70,7 +70,7 @@ TEST_CASE("normalizations", "[brdf]") {
   CHECK_THAT(blinn_phong_norm(8), WithinRel(16.0 / (8.0 * kPi), 1e-15));
   CHECK_THAT(phong_norm(2), WithinRel(2.0 / kPi, 1e-15));
   CHECK_THAT(f16_norm(18.55), WithinRel(1.0, 1e-15));
-  // Fits of SPEC section 7, evaluated by hand: Q = 0.5, k = 2, n = 100:
+  // Fits of docs/reflectance.md#energy-normalizations, evaluated by hand: Q = 0.5, k = 2, n = 100:
   // 0.743*0.5*(-0.0133*2*100 + 16.7)/2 + 16.7 + 0.245 = 18.30549...
   CHECK_THAT(kutlog_coef_fit(100, 2, 0.5), WithinRel(0.3715 * (16.7 - 2.66) / 2 + 16.945, 1e-12));
   // Q = 0.3, k = 1, n = 10: 0.608*10*0.107/2.6 + 1.61 + 0.284.

@@ -223,7 +223,7 @@ TEST_CASE("cli: errors --model patent --n 1..1000 gives one row per n", "[cli]")
   for (int n = 1; n <= 1000; n += 111) CHECK(cells(ls[n])[1] == std::to_string(n));
 }
 
-// Issue 10: with 9 significant digits, C cos^n(psi0) recomputed from the CSV differed from
+// With 9 significant digits, C cos^n(psi0) recomputed from the CSV differed from
 // (N1.H1)^n by up to 4e-8 relative at n = 1000. The CSV now prints the shortest text that
 // parses back to the same double, so the recomputation is limited only by the setup's own
 // double arithmetic: A = hypot(.,.), lambda = atan2(.,.) carry a few ulp each, raised to

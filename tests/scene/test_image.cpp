@@ -263,7 +263,7 @@ TEST_CASE("render: bad input exits with 2, names the problem and writes nothing"
   fs::remove_all(dir);
 }
 
-// Issue 10: CSV numbers round-trip. render prints max_abs_interp_error, rms_interp_error and
+// CSV numbers round-trip. render prints max_abs_interp_error, rms_interp_error and
 // peak_phong as the shortest text that parses back to the same double, so they equal,
 // bit for bit, what the same computation gives in this process (with the old %.6e / %.6f
 // they differed from the seventh significant digit on).

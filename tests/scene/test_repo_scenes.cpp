@@ -112,8 +112,7 @@ TEST_CASE("spheres: four silhouettes of area pi r^2, normals match the analytic 
 
 TEST_CASE("dense mesh: many spans of one and two pixels", "[scene][repo]") {
   const Raster& r = raster_of("dense_mesh");
-  // Measured on the committed scene (the raster is deterministic): 57,074 spans (issue 7
-  // quotes the same figure) for 256 rows, 54,768 of them with l = 0 and 2,304 with l = 1.
+  // Measured on the committed scene (the raster is deterministic): 57,074 spans for 256 rows, 54,768 of them with l = 0 and 2,304 with l = 1.
   // The bounds keep a 2 % margin each way: a fill-rule or span-splitting change that merges,
   // drops or splits spans moves them by far more.
   CHECK(r.stats.spans_l0 > 53'600);
