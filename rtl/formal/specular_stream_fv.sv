@@ -3,8 +3,8 @@
 // specular_stream_fv: formal property harness of specular_stream's handshakes (issue 7,
 // item 5). Run by scripts/formal.sh (ctest rtl_formal_stream): Yosys read_verilog -formal,
 // Yosys sat -tempinduct: base case from reset plus induction (an unbounded proof).
-// Everything below the instance is under `ifdef FORMAL; this file lives in rtl/formal/ so
-// the rtl/*.sv globs of the Verilator and synthesis builds do not pick it up.
+// Everything below the instance is under `ifdef FORMAL; this file lives in rtl/formal/ and
+// is not in the filelist rtl/specular.f, so the Verilator and synthesis builds do not read it.
 //
 // REDUCED PARAMETERS. The solver cannot handle the production widths (a 44-bit
 // accumulator, 21-bit multiplier trees, an 8 x 256-word ROM, 11-bit span length) in useful
