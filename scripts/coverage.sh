@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+#
 # RTL coverage (issue 10 item 4): builds sim_regression with every model verilated with
 # --coverage (line/branch, toggle, user) in its own build directory, runs a reduced but
 # complete regression (every configuration: the deterministic sweep, random lines, the

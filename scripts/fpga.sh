@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+#
 # Out-of-context place and route of the core on iCE40 FPGAs (issue 8 item 7): Yosys
 # synth_ice40, then nextpnr-ice40, of the harnesses in rtl/fpga/ (registered IO around
 # specular_unit, specular_stream and specular_axil), and a summary of LUTs, FFs, block RAMs, DSPs, Fmax
@@ -71,7 +73,7 @@ while [ $# -gt 0 ]; do
     --strict)    strict=1; shift ;;
     --fresh)     fresh=1; shift ;;
     --elaborate-only) elab_only=1; shift ;;
-    -h|--help)   sed -n '2,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
+    -h|--help)   sed -n '4,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
     *)           die_usage "unknown argument '$1' (allowed: --top, --device, --out, --param, --seed, --freq-hx8k, --freq-up5k, --strict, --fresh, --elaborate-only, --help)" ;;
   esac
 done

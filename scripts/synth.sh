@@ -1,6 +1,8 @@
 #!/usr/bin/env bash
-# Yosys synthesis check of rtl/specular_unit (run by ctest as rtl_yosys_synth and
-# rtl_yosys_ice40, and by `make lint`).
+# SPDX-License-Identifier: Apache-2.0
+#
+# Yosys synthesis check of a top of the core, specular_unit by default (run by ctest as
+# rtl_yosys_synth, rtl_yosys_ice40 and rtl_yosys_ice40_{stream,axis,axil}, and by `make lint`).
 #
 #   scripts/synth.sh generic|ice40 [OUT_DIR]
 #

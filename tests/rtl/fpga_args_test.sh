@@ -1,4 +1,6 @@
 #!/usr/bin/env bash
+# SPDX-License-Identifier: Apache-2.0
+#
 # ctest fpga_args: scripts/fpga.sh rejects bad arguments with exit 2 and a message naming
 # the argument and its allowed values, before running any tool (no place and route here).
 set -u
