@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Top-level entry points. Everything is built by CMake into $(BUILD); this file
 # only wraps it so that a new user needs two commands: `make sim` and `make test`.
 

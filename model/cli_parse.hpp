@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Command-line parsing shared by the tools (model/tools/*, sim_regression): help exits 0,
 // a bad argument exits 2 with "<tool>: error: <what>" on stderr, the project's contract
 // for bad input. Header-only so that the model library itself does not need CLI11.

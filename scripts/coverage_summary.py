@@ -1,4 +1,5 @@
 #!/usr/bin/env python3
+# SPDX-License-Identifier: Apache-2.0
 """Per-file summary of Verilator coverage (make coverage, issue 10 item 4).
 
 Reads a Verilator coverage file (SystemC::Coverage-3, e.g. the merge of every model's .dat

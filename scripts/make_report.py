@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Speed-against-error report (SPEC section 8): `make report`.
 
 Runs this build's measurement programs and writes OUT/report.md with PNG plots beside it.

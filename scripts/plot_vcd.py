@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Draw a timing diagram of specular_unit from a VCD file (written by sim_regression
 --vcd-dir DIR --vcd-only), laid out like the timing diagram of patent UA 71489.
 

@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # ctest sim_regression_cli: sim_regression's exit codes and JSON summary.
 #   -DSIM=<sim_regression> -DTMP=<scratch dir>, run from the repository root.
 file(REMOVE_RECURSE ${TMP})

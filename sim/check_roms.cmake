@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # ctest roms_up_to_date: regenerate every build configuration's ROMs (romgen --all) into TMP and
 # compare with the committed SRC.
 file(REMOVE_RECURSE ${TMP})

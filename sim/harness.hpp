@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Harness around one verilated specular_unit: owns the VerilatedContext, the model of the
 // same configuration (golden model), and an on-demand VCD writer. A template over the
 // Verilator class so that the two policy builds (different --prefix) share one harness.

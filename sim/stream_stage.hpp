@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Stream stage of the regression: rtl/specular_stream under random spans, random gaps on
 // span_valid_i, random px_ready_i patterns and random resets, every pixel checked by the
 // scoreboard of stream_harness.hpp (bit-exact intensity, tag, last, count and order); and

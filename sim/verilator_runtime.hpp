@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Settings shared by every VerilatedContext the harnesses create, and what the run
 // accumulates across them (issue 10 items 4 and 5):
 //   - Verilator runtime arguments (+verilator+seed+N, +verilator+rand+reset+2, ...): each

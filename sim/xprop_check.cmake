@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # X-propagation check (ctest sim_xprop): runs sim_regression once per seed in SEEDS with
 # +verilator+rand+reset+2 +verilator+seed+<seed> (every register without reset, every RAM
 # word, every X constant random) and compares the output digests, which cover every output

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Decoder 10's table for a bank set (docs/device.md): which bank k serves which n.
 #pragma once
 

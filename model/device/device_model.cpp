@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bit-accurate golden model of the device datapath; the contract is the header comment
 // of device_model.hpp. Integer arithmetic only between the registers and the output.
 #include "device_model.hpp"

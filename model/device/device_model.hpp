@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Bit-accurate golden model of the device datapath (patent UA 71489), docs/device.md and docs/interfaces.md.
 //
 // One definition of every width and rounding rule, shared by the ROM generator

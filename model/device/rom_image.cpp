@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ROM images and hex files; the format is documented in rom_image.hpp and roms/README.md.
 #include "rom_image.hpp"
 

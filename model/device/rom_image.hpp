@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ROM images of the device (docs/device.md): ROM 9 (coefficients a(n), addressed by n)
 // and ROM 12 (cos^k, one bank per k), built from the golden-model formats in
 // device_model.hpp so that the generator, the RTL and the testbench share one definition.

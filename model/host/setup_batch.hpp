@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Batched scanline setup: many spans at once, straight to the device's register codes.
 //
 // The scalar double `scanline_setup` (model/reference/scanline_setup.hpp) is the reference

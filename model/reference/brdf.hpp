@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Reflectance ("shape") functions of docs/reflectance.md and their normalizations.
 //
 // Shape functions equal 1 at x = 0. Functions of an angle take x in radians (the angle

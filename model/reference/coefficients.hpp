@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Decoder table (patent block 10) and the coefficient policies of ROM 9, docs/device.md.
 //
 // The device approximates cos^n(x) by cos^k(a x). The decoder picks k from n; the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fast per-pixel evaluators of the specular term, the competitors of docs/speed_error.md.
 //
 // Each is a small value type built once per exponent n (per scanline, as a renderer would)

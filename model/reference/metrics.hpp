@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Error metrics and albedo integrals of docs/metrics.md.
 #pragma once
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scanline setup, docs/scanline_setup.md. How every hard case is resolved (tests/model/test_scanline.cpp
 // has one named test per case):
 //

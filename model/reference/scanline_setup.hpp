@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scanline setup by spherical (angular) interpolation, docs/scanline_setup.md.
 //
 // The host turns the geometry of one scanline into the five device inputs

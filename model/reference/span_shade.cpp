@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Span evaluators (model/reference/span_shade.hpp): plans, run-time dispatch, the portable kernels
 // and the scalar competitors.
 #include "span_shade.hpp"

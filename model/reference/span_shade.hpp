@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Whole-span specular evaluators for a software rasterizer, and the competitors they are
 // timed against (the speed axis of docs/speed_error.md).
 //

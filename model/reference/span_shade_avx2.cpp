@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // AVX2 + FMA variants of the span kernels (model/reference/span_shade.hpp). This file is compiled
 // with -mavx2 -mfma -ffp-contract=fast (model/CMakeLists.txt) and only ever called after
 // cpu_has_avx2() said yes; nothing here runs at static-initialization time.

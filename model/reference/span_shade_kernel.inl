@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The device-method span kernel, compiled twice: by span_shade.cpp for the x86-64 baseline
 // and by span_shade_avx2.cpp with -mavx2 -mfma. Each includes this file inside its own
 // namespace (SPAN_KERNEL_NS), so the two instantiations never merge at link time.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Images from spans, PNG output and heatmaps with a drawn colour bar (image.hpp).
 #define STB_IMAGE_WRITE_IMPLEMENTATION
 #include <stb_image_write.h>

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Image accumulation from spans, per-pixel evaluators, PNG output and error heatmaps.
 //
 // Typical use (and how a device image is added: one more Evaluator):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scanline rasterizer; the rules are documented in raster.hpp.
 #include "raster.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scanline rasterizer: scene -> spans of visible pixels, ready for the scanline setup.
 //
 // Fill rule (top-left, pixel centres at integer coordinates, y downwards): a pixel

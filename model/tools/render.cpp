@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // render: scene -> spans -> Phong truth and spherical-interpolation float model images.
 //
 //   render --scene scenes/spheres.json --out-dir out [--scale S] [--csv-header]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // report_data: the model-side measurements of the speed-against-error report as JSON.
 //   report_data [--out FILE] [--n-step S] [--section NAME]...
 // Sections (all by default):

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // romgen: writes the device ROMs (docs/device.md) from the golden-model formats.
 //   romgen --out-dir roms                  the default build: coef_minimax.hex and
 //                                          cos_k_1_2_3_4_6_8_12_16_interp256.hex

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `specular shade`: one span through one evaluator, CSV `i,psi,value`.
 //
 //   specular shade --evaluator NAME --n N --psi0 X --dpsi D --len L [--c C] [--simd PATH]

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // `specular`: command-line front end of the reference model. Its CSV output is a contract
 // (the report and outside scripts parse it): exact headers, every number the shortest
 // text that parses back to the same double (cli::num), errors on stderr with exit code 2 and nothing on stdout.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
 // specular_stream_fv: formal property harness of specular_stream's handshakes (issue 7,

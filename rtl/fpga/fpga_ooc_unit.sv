@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
 // fpga_ooc_unit: out-of-context place-and-route harness around specular_unit (registered

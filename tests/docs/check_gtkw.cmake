@@ -1,3 +1,4 @@
+# SPDX-License-Identifier: Apache-2.0
 # Checks a GTKWave save file against a VCD: every signal the save file names exists in the
 # VCD's hierarchy, and a bus's [msb:lsb] matches the VCD's declaration.
 #   cmake -DSIM=<sim_regression> -DVCD_DIR=<dir> -DGTKW=<file.gtkw> -P check_gtkw.cmake

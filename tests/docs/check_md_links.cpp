@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Checks that every relative link in every Markdown file of the repository resolves: the
 // target file or directory exists, and a #fragment names a heading of the target Markdown
 // file (GitHub's anchor rules: lower case, punctuation dropped, spaces to '-', "-1", "-2"

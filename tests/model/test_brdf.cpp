@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Shape functions against values worked out by hand from their closed forms.
 #include "brdf.hpp"
 

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The `specular` CLI contract: headers, a known row per subcommand (values from closed forms
 // or an independent brute-force computation), exit code 2 with a clear message on bad input.
 #include "coefficients.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Decoder table and coefficient policies.
 #include "brdf.hpp"
 #include "coefficients.hpp"

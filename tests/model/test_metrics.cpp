@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Error metrics and albedo against closed forms and an independent brute-force long double sweep.
 #include "brdf.hpp"
 #include "coefficients.hpp"

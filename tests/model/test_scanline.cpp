@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scanline setup (docs/scanline_setup.md): the slerp identity on random vectors, and one named test
 // per hard case. Expected values come from the geometry (dot products of the inputs), a
 // quaternion rotation and a direct slerp, never from the setup's own output.

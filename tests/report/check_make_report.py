@@ -1,4 +1,5 @@
 #!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
 """Smoke test of scripts/make_report.py: run it in --smoke mode (report_data only, a coarse
 n grid) and cross-check the tables of report.md against the report_data.json it read.
 Every expected cell is recomputed here from the JSON, not taken from make_report.py.

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The fast evaluators against independent references: std::pow / cos in long double,
 // closed forms worked by hand, and the documented error bounds of evaluators.hpp.
 #include "device_model.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // report_data CLI: bad arguments exit 2 and write nothing; the hard-case section is
 // complete, finite and within the device's error budget; decoder tables are derived.
 #include "brdf.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Streaming check of a pipelined RTL block with a clock enable (en_i).
 //
 // Item j enters at the j-th enabled clock edge (the inputs of that cycle) and must be on the

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Small helpers shared by the RTL block tests: clocking and reset of a Verilator model.
 //
 // Cycle convention used by every test: in "cycle c" the test sets the inputs, calls

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Accumulator (adder 6, mux 7, register 8): psi0 on the first strobe, psi + dpsi after,
 // sign extension from 32 to 44 bits, no overflow over the longest line. Register 8 is two
 // stages (low half, then high half with the carry): the pixel written by a strobe appears on

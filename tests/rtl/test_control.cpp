@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Control unit 14 of the streaming pipeline, cycle by cycle (its block model has the
 // default PipeDepth = 5). Counter 5 is modelled here (loaded with l on accept, decremented
 // by every count pulse 34), so the unit is checked against the stream contract,

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Down counter 5: the borrow (35) comes with the (l+1)-th count pulse, exactly once,
 // and the written l is reloaded for the next line.
 #include "Vcounter.h"

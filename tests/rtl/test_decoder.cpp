@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Decoder 10: exhaustive over all 1024 codes of n against the patent's table
 // (n = 1 -> k = 1, n = 2 -> k = 2, n = 3..6 -> k = 4, n = 7..1000 -> k = 16; the
 // banks hold k = 1, 2, 4, 16 in that order; n = 0 and n > 1000 select nothing).

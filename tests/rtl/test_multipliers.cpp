@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // The pipelined multiplier (specular_pipe_mul), multiplier 11 (|psi| -> ROM 12 address,
 // weight and zero flag, both builds) and multiplier 13 (C * cos^k, output register).
 // Expected values come from the real-number meaning of the formats in long double

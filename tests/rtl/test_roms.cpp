@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // ROM 9 (coefficients) and ROM 12 (cos^k), both builds, entry by entry. The RTL ROMs load
 // the committed hex files with $readmemh (paths relative to the repository root, the
 // working directory of this test). ROM 12 is checked against values computed here from

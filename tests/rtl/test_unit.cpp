@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Top level specular_unit: the protocol of SPEC section 6 as fixed for the RTL
 // (latency L = specular_unit's Latency, 20 with the default parameters; one pixel per
 // clock, busy through the last pixel, l + L + 1 clocks per line), zero conditions, writes

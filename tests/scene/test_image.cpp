@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Image accumulation, PNG and heatmap output, and the render tool's command line.
 #include "image.hpp"
 #include "raster.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Generated meshes: analytic normals, exact surfaces, closed topology, areas.
 #include "scene.hpp"
 

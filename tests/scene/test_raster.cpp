@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Fill rule, depth test and span attributes of the scanline rasterizer.
 #include "raster.hpp"
 #include "scanline_setup.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Every repository scene loads and rasterizes into sane spans; scene-specific
 // properties (short spans, long spans, sphere silhouettes) against geometry.
 #include "evaluators.hpp"

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scene file errors name the file, the field and what was expected.
 #include "scene.hpp"
 
