@@ -122,8 +122,28 @@ inline constexpr int kDeviceFlushAt = 1024;  // pixels per stage-3 pass: u and C
   st.fill = fill, st.cur_k = cur_k;
 }
 
+// Stage 2 for a block of spans with one k that fits the buffer as a whole: no test per span.
+[[gnu::noinline]] inline int device_expand_fast(const float* __restrict u0, const float* __restrict du,
+                                                const float* __restrict cc, const int32_t* __restrict cnt, int m,
+                                                float* __restrict ubuf, float* __restrict cbuf, int fill) {
+  for (int j = 0; j < m; ++j) {
+    const int n = cnt[j];
+    const v8f vu0 = splat(u0[j]), vdu = splat(du[j]), vc = splat(cc[j]);
+    float* pu = ubuf + fill;
+    float* pc = cbuf + fill;
+    store8(pu, vu0 + kLane * vdu);
+    store8(pc, vc);
+    for (int i = 8; i < n; i += 8) {
+      store8(pu + i, vu0 + (kLane + splat(static_cast<float>(i))) * vdu);
+      store8(pc + i, vc);
+    }
+    fill += n;
+  }
+  return fill;
+}
+
 inline void device_shade(const DeviceShader::Tables& t, const RegisterBatch& regs, float* out) {
-  constexpr int kBuf = kCapacity + kDeviceFlushAt;
+  constexpr int kBuf = kCapacity + 2 * kDeviceFlushAt;
   std::vector<float> ubuf_v(kBuf), cbuf_v(kBuf);
   std::vector<int32_t> run_begin_v(kBuf + 1), run_k_v(kBuf + 1);
   DeviceBuffer st{ubuf_v.data(), cbuf_v.data(), run_begin_v.data(), run_k_v.data(), 0, 1, 1, out};
@@ -145,11 +165,12 @@ inline void device_shade(const DeviceShader::Tables& t, const RegisterBatch& reg
     const uint32_t* __restrict rl = &regs.len[b0];
     // Stage 1: u0 = a psi0, du = a dpsi rounded to float from double (device_span's
     // arithmetic; a_scaled = a 2^-angle_frac, exact); invalid n codes: a = 0, C = 0.
-    uint32_t longest = 0, differ = 0;
+    uint32_t longest = 0, differ = 0, block_pixels = 0;
     for (int j = 0; j < m; ++j) {
       cnt[j] = static_cast<int32_t>(rl[j]) + 1;
       longest = longest > rl[j] ? longest : rl[j];
       differ |= rn[j] ^ rn[0];
+      block_pixels += rl[j] + 1;
     }
     if (narrow && differ == 0) {
       // One n in the block (spans come material by material): a, C's scale and k are
@@ -182,7 +203,29 @@ inline void device_shade(const DeviceShader::Tables& t, const RegisterBatch& reg
       }
     }
     if (longest >= static_cast<uint32_t>(kMaxPixels)) throw std::invalid_argument("DeviceShader::shade: len above 2047");
-    device_expand(t, u0, du, cc, kk, cnt, m, st);
+    if (narrow && differ == 0 && block_pixels + 8 <= static_cast<uint32_t>(kBuf)) {
+      // One k for the block and room for all of it: the run and the flush are decided once.
+      if (st.fill + static_cast<int>(block_pixels) + 8 > kBuf) {
+        device_flush(t, st.ubuf, st.cbuf, st.run_begin, st.run_k, st.runs, st.fill, st.dst);
+        st.dst += st.fill;
+        st.fill = 0, st.runs = 1, st.run_begin[0] = 0, st.run_k[0] = st.cur_k;
+      }
+      if (kk[0] != st.cur_k) {
+        st.cur_k = kk[0];
+        if (st.run_begin[st.runs - 1] == st.fill)
+          st.run_k[st.runs - 1] = st.cur_k;
+        else
+          st.run_begin[st.runs] = st.fill, st.run_k[st.runs] = st.cur_k, ++st.runs;
+      }
+      st.fill = device_expand_fast(u0, du, cc, cnt, m, st.ubuf, st.cbuf, st.fill);
+      if (st.fill >= kDeviceFlushAt) {
+        device_flush(t, st.ubuf, st.cbuf, st.run_begin, st.run_k, st.runs, st.fill, st.dst);
+        st.dst += st.fill;
+        st.fill = 0, st.runs = 1, st.run_begin[0] = 0, st.run_k[0] = st.cur_k;
+      }
+    } else {
+      device_expand(t, u0, du, cc, kk, cnt, m, st);
+    }
   }
   device_flush(t, st.ubuf, st.cbuf, st.run_begin, st.run_k, st.runs, st.fill, st.dst);
 }
@@ -192,17 +235,19 @@ inline void device_shade(const DeviceShader::Tables& t, const RegisterBatch& reg
 // Stage-2 buffers of the Phong shaders, one stage-3 pass at a time.
 struct PhongBuffers {
   static constexpr int kFlushAt = 512;  // 9 floats per pixel (per-pixel H): 18 KB per pass
+  static constexpr int kSize = kCapacity + 2 * kFlushAt;
   std::vector<float> d, q;              // constant H: N.H and |N|^2
   std::vector<float> nx, ny, nz, px, py, pz, den;  // per-pixel H: N, P numerator and denominator
   std::vector<float> n, c;              // exponent, C
   PhongBuffers() {
-    for (auto* v : {&d, &q, &nx, &ny, &nz, &px, &py, &pz, &den, &n, &c}) v->assign(kCapacity + kFlushAt, 0.0f);
+    for (auto* v : {&d, &q, &nx, &ny, &nz, &px, &py, &pz, &den, &n, &c}) v->assign(kSize, 0.0f);
   }
 };
 
 // Stage 2 of constant-H spans (a function of its own: the fill level stays in a register).
 // Returns the new fill level; full buffers go to eval(B, fill, dst) and dst advances.
-template <class Eval>
+// Check = false: the caller made room for the whole block (no test per span).
+template <bool Check, class Eval>
 [[gnu::noinline]] int phong_expand_const(const float* __restrict a, const float* __restrict b,
                                          const float* __restrict q0, const float* __restrict q1,
                                          const float* __restrict q2, const float* __restrict sn,
@@ -214,7 +259,7 @@ template <class Eval>
   float* const bc = B.c.data();
   for (int j = 0; j < m; ++j) {
     const int n = cnt[j];
-    if (__builtin_expect(fill + n > PhongBuffers::kFlushAt, 0)) {
+    if (Check && __builtin_expect(fill + n > PhongBuffers::kFlushAt, 0)) {
       eval(B, fill, dst);
       dst += fill;
       fill = 0;
@@ -235,7 +280,7 @@ template <class Eval>
 
 // Stage 2 of per-pixel-H spans: k[0..2] slope of N, k[3..5] P1/w1, k[6..8] slope of P/w,
 // k[9] 1/w1, k[10] slope of 1/w, k[11..13] N1.
-template <class Eval>
+template <bool Check, class Eval>
 [[gnu::noinline]] int phong_expand_pp(const float* const (&k)[14], const float* __restrict sn,
                                       const float* __restrict sc, const int32_t* __restrict cnt, int m, int fill,
                                       PhongBuffers& B, float*& dst, const PhongGroup& g, Eval& eval) {
@@ -250,7 +295,7 @@ template <class Eval>
   float* const bc = B.c.data();
   for (int j = 0; j < m; ++j) {
     const int n = cnt[j];
-    if (__builtin_expect(fill + n > PhongBuffers::kFlushAt, 0)) {
+    if (Check && __builtin_expect(fill + n > PhongBuffers::kFlushAt, 0)) {
       eval(B, fill, g, dst);
       dst += fill;
       fill = 0;
@@ -271,6 +316,58 @@ template <class Eval>
     fill += n;
   }
   return fill;
+}
+
+// Stage 1 of constant-H spans (restrict parameters: GCC vectorizes it over spans).
+// N_i = N1 + (i / l)(N2 - N1), so N_i.H = N1.H + i (D.H / l) and
+// |N_i|^2 = |N1|^2 + i (2 N1.D / l + i |D|^2 / l^2) with D = N2 - N1.
+inline void phong_stage1_const(const float* __restrict ax, const float* __restrict ay, const float* __restrict az,
+                               const float* __restrict bx, const float* __restrict by, const float* __restrict bz,
+                               const float* __restrict hx, const float* __restrict hy, const float* __restrict hz,
+                               const int32_t* __restrict ll, int m, float* __restrict k0, float* __restrict k1,
+                               float* __restrict k2, float* __restrict k3, float* __restrict k4) {
+  for (int j = 0; j < m; ++j) {
+    const float inv = ll[j] > 0 ? 1.0f / static_cast<float>(ll[j]) : 0.0f;
+    const float dx = bx[j] - ax[j], dy = by[j] - ay[j], dz = bz[j] - az[j];
+    k0[j] = ax[j] * hx[j] + ay[j] * hy[j] + az[j] * hz[j];
+    k1[j] = (dx * hx[j] + dy * hy[j] + dz * hz[j]) * inv;
+    k2[j] = ax[j] * ax[j] + ay[j] * ay[j] + az[j] * az[j];
+    k3[j] = 2.0f * (ax[j] * dx + ay[j] * dy + az[j] * dz) * inv;
+    k4[j] = (dx * dx + dy * dy + dz * dz) * inv * inv;
+  }
+}
+
+// Stage 1 of per-pixel-H spans: N_i = N1 + i D / l; the surface point (raster.hpp span_point)
+// P_i = (P1/w1 + i (P2/w2 - P1/w1) / l) / (1/w1 + i (1/w2 - 1/w1) / l). Outputs as
+// phong_expand_pp reads them.
+inline void phong_stage1_pp(const float* __restrict ax, const float* __restrict ay, const float* __restrict az,
+                            const float* __restrict bx, const float* __restrict by, const float* __restrict bz,
+                            const float* __restrict p1x, const float* __restrict p1y, const float* __restrict p1z,
+                            const float* __restrict p2x, const float* __restrict p2y, const float* __restrict p2z,
+                            const float* __restrict w1, const float* __restrict w2, const int32_t* __restrict ll, int m,
+                            float* __restrict k0, float* __restrict k1, float* __restrict k2, float* __restrict k3,
+                            float* __restrict k4, float* __restrict k5, float* __restrict k6, float* __restrict k7,
+                            float* __restrict k8, float* __restrict k9, float* __restrict k10, float* __restrict k11,
+                            float* __restrict k12, float* __restrict k13) {
+  for (int j = 0; j < m; ++j) {
+    const float inv = ll[j] > 0 ? 1.0f / static_cast<float>(ll[j]) : 0.0f;
+    const float r1 = 1.0f / w1[j], r2 = 1.0f / w2[j];
+    const float q1x = p1x[j] * r1, q1y = p1y[j] * r1, q1z = p1z[j] * r1;
+    k0[j] = (bx[j] - ax[j]) * inv;
+    k1[j] = (by[j] - ay[j]) * inv;
+    k2[j] = (bz[j] - az[j]) * inv;
+    k3[j] = q1x;
+    k4[j] = q1y;
+    k5[j] = q1z;
+    k6[j] = (p2x[j] * r2 - q1x) * inv;
+    k7[j] = (p2y[j] * r2 - q1y) * inv;
+    k8[j] = (p2z[j] * r2 - q1z) * inv;
+    k9[j] = r1;
+    k10[j] = (r2 - r1) * inv;
+    k11[j] = ax[j];
+    k12[j] = ay[j];
+    k13[j] = az[j];
+  }
 }
 
 // Runs one group of spans through stages 1 and 2 and hands each filled buffer to stage 3:
@@ -297,63 +394,44 @@ void phong_shade(const PhongSpans& s, float* out, EvalConst eval_const, EvalPP e
       const int32_t* __restrict ll = &s.l[b0];
       const float* __restrict sn = &s.n[b0];
       const float* __restrict sc = &s.scale[b0];
-      uint32_t longest = 0;
+      uint32_t longest = 0, block_pixels = 0;
       for (int j = 0; j < m; ++j) {
         cnt[j] = ll[j] + 1;
         const uint32_t u = static_cast<uint32_t>(ll[j]);
         longest = longest > u ? longest : u;
+        block_pixels += u + 1;
       }
       if (longest >= static_cast<uint32_t>(kMaxPixels)) throw std::invalid_argument("shade_phong: l outside 0..2047");
+      // Room for the whole block (the same rule as the device's): no test per span.
+      const bool whole = block_pixels + 8 <= static_cast<uint32_t>(PhongBuffers::kSize);
+      if (whole && fill + static_cast<int>(block_pixels) + 8 > PhongBuffers::kSize) {
+        if (g.constant_h)
+          eval_const(B, fill, dst);
+        else
+          eval_pp(B, fill, g, dst);
+        dst += fill;
+        fill = 0;
+      }
       if (g.constant_h) {
-        const float* __restrict hx = &s.hx[b0];
-        const float* __restrict hy = &s.hy[b0];
-        const float* __restrict hz = &s.hz[b0];
-        // Stage 1: N_i = N1 + (i / l)(N2 - N1), so N_i.H = N1.H + i (D.H / l) and
-        // |N_i|^2 = |N1|^2 + i (2 N1.D / l + i |D|^2 / l^2) with D = N2 - N1.
-        for (int j = 0; j < m; ++j) {
-          const float inv = ll[j] > 0 ? 1.0f / static_cast<float>(ll[j]) : 0.0f;
-          const float dx = bx[j] - ax[j], dy = by[j] - ay[j], dz = bz[j] - az[j];
-          k0[j] = ax[j] * hx[j] + ay[j] * hy[j] + az[j] * hz[j];
-          k1[j] = (dx * hx[j] + dy * hy[j] + dz * hz[j]) * inv;
-          k2[j] = ax[j] * ax[j] + ay[j] * ay[j] + az[j] * az[j];
-          k3[j] = 2.0f * (ax[j] * dx + ay[j] * dy + az[j] * dz) * inv;
-          k4[j] = (dx * dx + dy * dy + dz * dz) * inv * inv;
-        }
+        phong_stage1_const(ax, ay, az, bx, by, bz, &s.hx[b0], &s.hy[b0], &s.hz[b0], ll, m, k0, k1, k2, k3, k4);
         // Stage 2.
-        fill = phong_expand_const(k0, k1, k2, k3, k4, sn, sc, cnt, m, fill, B, dst, eval_const);
+        fill = whole ? phong_expand_const<false>(k0, k1, k2, k3, k4, sn, sc, cnt, m, fill, B, dst, eval_const)
+                     : phong_expand_const<true>(k0, k1, k2, k3, k4, sn, sc, cnt, m, fill, B, dst, eval_const);
       } else {
-        const float* __restrict p1x = &s.p1x[b0];
-        const float* __restrict p1y = &s.p1y[b0];
-        const float* __restrict p1z = &s.p1z[b0];
-        const float* __restrict p2x = &s.p2x[b0];
-        const float* __restrict p2y = &s.p2y[b0];
-        const float* __restrict p2z = &s.p2z[b0];
-        const float* __restrict w1 = &s.w1[b0];
-        const float* __restrict w2 = &s.w2[b0];
-        // Stage 1: N_i = N1 + i D / l; the surface point (raster.hpp span_point)
-        // P_i = (P1/w1 + i (P2/w2 - P1/w1) / l) / (1/w1 + i (1/w2 - 1/w1) / l).
-        for (int j = 0; j < m; ++j) {
-          const float inv = ll[j] > 0 ? 1.0f / static_cast<float>(ll[j]) : 0.0f;
-          const float r1 = 1.0f / w1[j], r2 = 1.0f / w2[j];
-          const float q1x = p1x[j] * r1, q1y = p1y[j] * r1, q1z = p1z[j] * r1;
-          k0[j] = (bx[j] - ax[j]) * inv;
-          k1[j] = (by[j] - ay[j]) * inv;
-          k2[j] = (bz[j] - az[j]) * inv;
-          k3[j] = q1x;
-          k4[j] = q1y;
-          k5[j] = q1z;
-          k6[j] = (p2x[j] * r2 - q1x) * inv;
-          k7[j] = (p2y[j] * r2 - q1y) * inv;
-          k8[j] = (p2z[j] * r2 - q1z) * inv;
-          k9[j] = r1;
-          k10[j] = (r2 - r1) * inv;
-          k11[j] = ax[j];
-          k12[j] = ay[j];
-          k13[j] = az[j];
-        }
+        phong_stage1_pp(ax, ay, az, bx, by, bz, &s.p1x[b0], &s.p1y[b0], &s.p1z[b0], &s.p2x[b0], &s.p2y[b0], &s.p2z[b0],
+                        &s.w1[b0], &s.w2[b0], ll, m, k0, k1, k2, k3, k4, k5, k6, k7, k8, k9, k10, k11, k12, k13);
         // Stage 2.
         const float* const k[14] = {k0, k1, k2, k3, k4, k5, k6, k7, k8, k9, k10, k11, k12, k13};
-        fill = phong_expand_pp(k, sn, sc, cnt, m, fill, B, dst, g, eval_pp);
+        fill = whole ? phong_expand_pp<false>(k, sn, sc, cnt, m, fill, B, dst, g, eval_pp)
+                     : phong_expand_pp<true>(k, sn, sc, cnt, m, fill, B, dst, g, eval_pp);
+      }
+      if (whole && fill >= PhongBuffers::kFlushAt) {
+        if (g.constant_h)
+          eval_const(B, fill, dst);
+        else
+          eval_pp(B, fill, g, dst);
+        dst += fill;
+        fill = 0;
       }
     }
     if (fill > 0) {
