@@ -227,7 +227,8 @@ json break_even(int max_len, size_t count, int reps, double min_time) {
     ms.push_back({"device", [&] { host::setup_batch(batch, f, regs); shader.shade(regs, a.data()); }, np});
     ms.push_back({"phong_sleef", [&] { host::shade_phong(ps, b.data(), SimdPath::automatic); }, np});
     time_methods(ms, reps, min_time);
-    rows.push_back({{"l", l}, {"pixels_per_span", l + 1}, {"device", ms[0].median()}, {"phong_sleef", ms[1].median()}});
+    rows.push_back({{"l", l}, {"pixels_per_span", l + 1}, {"spans", count}, {"device", ms[0].median()},
+                    {"phong_sleef", ms[1].median()}});
   }
   return rows;
 }

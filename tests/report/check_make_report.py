@@ -1,8 +1,9 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: Apache-2.0
-"""Smoke test of scripts/make_report.py: run it in --smoke mode (report_data only, a coarse
-n grid) and cross-check the tables of report.md against the report_data.json it read.
-Every expected cell is recomputed here from the JSON, not taken from make_report.py.
+"""Smoke test of scripts/make_report.py: run it in --smoke mode (report_data with a coarse n
+grid, scene_bench on one small scene) and cross-check the tables of report.md against the
+report_data.json and scene_bench.json it read. Every expected cell is recomputed here from
+the JSON, not taken from make_report.py.
 
   check_make_report.py --build BUILD [--out DIR]   run make_report.py, then check
   check_make_report.py --check-only DIR            check an existing DIR/report.md
@@ -36,6 +37,106 @@ def table_rows(md):
         if line.startswith("|") and not line.startswith("|---"):
             rows.append([c.strip() for c in line.strip().strip("|").split("|")])
     return rows
+
+
+def table_after(md, header_start):
+    """Rows (lists of cells) of the markdown table whose header row starts with header_start;
+    None when there is no such table."""
+    lines = md.splitlines()
+    for k, line in enumerate(lines):
+        if line.startswith(header_start):
+            rows = []
+            for row in lines[k + 2:]:
+                if not row.startswith("|"):
+                    break
+                rows.append([c.strip() for c in row.strip().strip("|").split("|")])
+            return rows
+    return None
+
+
+def check_system(out, md):
+    """Section 7 (System) against scene_bench.json: the three tables, the goals, the break-even
+    sentence and plot, the headline."""
+    errors = []
+    path = os.path.join(out, "scene_bench.json")
+    if not os.path.exists(path):
+        return ["scene_bench.json missing: make_report.py did not run scene_bench"]
+    with open(path) as f:
+        sb = json.load(f)
+    scenes = sb.get("scenes", [])
+    if not scenes:
+        return ["scene_bench.json has no scenes"]
+    if "## 7. System: the speed per scene, setup included" not in md:
+        errors.append("section 7 (System) heading missing")
+    main = table_after(md, "| scene | spans | pixels | mean span (px) | H | device ns/px |")
+    split = table_after(md, "| scene | setup ns/span | setup ns/px | shading ns/px |")
+    feed = table_after(md, "| scene | mean span (px) | setup M spans/s (one host core) |")
+    for name, t in (("per-scene", main), ("setup/shading", split), ("feeding", feed)):
+        if t is None:
+            errors.append(f"System: the {name} table is missing")
+        elif len(t) != len(scenes):
+            errors.append(f"System: the {name} table has {len(t)} rows, scene_bench.json {len(scenes)} scenes")
+    if errors:
+        return errors
+    for x, r, q, fd in zip(scenes, main, split, feed):
+        t = x["ns_per_pixel"]
+        for key in ("device", "phong_sleef", "phong_scalar", "pow_cos"):
+            if not t[key] > 0:
+                errors.append(f"System {x['scene']}: ns per pixel of {key} is {t[key]}")
+        ps = t["phong_sleef"]
+        want = [x["scene"], str(x["spans"]), str(x["pixels"]), f"{x['pixels'] / x['spans']:.2f}",
+                ", ".join(sorted(set(x["lights"]))), f"{t['device']:.2f}", f"{ps:.2f}", f"{t['phong_scalar']:.2f}",
+                f"{t['pow_cos']:.2f}", f"{ps / t['device']:.2f}", f"{ps / t['phong_scalar']:.2f}", f"{ps / t['pow_cos']:.2f}"]
+        if r != want:
+            errors.append(f"System per-scene row {r} != {want} (from scene_bench.json)")
+        sp = x["device_setup_ns_per_span"] * x["spans"] / x["pixels"]
+        sh = x["device_shade_ns_per_pixel"]
+        want = [x["scene"], f"{x['device_setup_ns_per_span']:.2f}", f"{sp:.2f}", f"{sh:.2f}", f"{100 * sp / (sp + sh):.0f} %"]
+        if q != want:
+            errors.append(f"System setup/shading row {q} != {want}")
+        setup_rate = 1e3 / x["device_setup_ns_per_span"]
+        core_rate = sb["fmax_mhz"] * x["spans"] / x["pixels"]
+        want = [x["scene"], f"{x['pixels'] / x['spans']:.2f}", f"{setup_rate:.1f}", f"{core_rate:.1f}",
+                f"{core_rate / setup_rate:.2f}"]
+        if fd != want:
+            errors.append(f"System feeding row {fd} != {want}")
+    # The Fmax comes from the one committed file.
+    with open(os.path.join(ROOT, "docs", "fpga_figures.json")) as f:
+        fig = json.load(f)
+    fmax = [r["fmax_mhz"] for r in fig["runs"] if r["core"] == "specular_stream" and r["part"].startswith("HX8K")]
+    if fmax != [sb["fmax_mhz"]]:
+        errors.append(f"scene_bench's Fmax {sb['fmax_mhz']} is not docs/fpga_figures.json's {fmax}")
+    if f"({sb['fmax_mhz']:.2f} MHz, `specular_stream`; read from `docs/fpga_figures.json`)" not in md:
+        errors.append("System: the Fmax sentence does not name docs/fpga_figures.json and its value")
+    # Goals and headline, recomputed.
+    ratio = {x["scene"]: x["ns_per_pixel"]["phong_sleef"] / x["ns_per_pixel"]["device"] for x in scenes}
+    ok1 = all(v >= 1.0 for v in ratio.values())
+    goal_line = next((l for l in md.splitlines() if l.startswith("Goals: device (setup included)")), "")
+    if f">= 1.0 x phong_sleef on every scene: **{'met' if ok1 else 'missed'}**" not in goal_line:
+        errors.append(f"System goals: the 1.0 x verdict does not follow from {ratio}")
+    long_ = [x["scene"] for x in scenes if x["pixels"] / x["spans"] >= 8]
+    if long_:
+        ok5 = all(ratio[n] >= 5.0 for n in long_)
+        if f"8 pixels or more: **{'met' if ok5 else 'missed'}**" not in goal_line:
+            errors.append(f"System goals: the 5 x verdict does not follow from {ratio}")
+    elif "8 pixels or more: no such scene" not in goal_line:
+        errors.append("System goals: no scene has a mean span >= 8 but the line says otherwise")
+    head = next((l for l in md.splitlines() if l.startswith("**Headline (per scene")), "")
+    if f"**{min(ratio.values()):.2f}-{max(ratio.values()):.2f} x**" not in head:
+        errors.append(f"headline '{head[:80]}...' does not give the range of {ratio}")
+    # Break-even: the first length where the device is at or below phong_sleef.
+    be = sb.get("break_even", [])
+    if not be:
+        errors.append("scene_bench.json has no break-even rows")
+    else:
+        first = next((r["l"] for r in be if r["device"] <= r["phong_sleef"]), None)
+        if sb.get("break_even_l") != first:
+            errors.append(f"break_even_l {sb.get('break_even_l')} is not the first crossing {first}")
+        if first is not None and f"from **l = {first} ({first + 1} pixels per span)**" not in md:
+            errors.append(f"System: the break-even sentence does not give l = {first}")
+        if not os.path.exists(os.path.join(out, "break_even.png")) or "![break-even](break_even.png)" not in md:
+            errors.append("System: break_even.png missing or not shown")
+    return errors
 
 
 def check(out):
@@ -113,6 +214,7 @@ def check(out):
                         errors.append(f"albedo {s['name']} {conv} n={n}: report '{cell}', JSON '{want}'")
         if checked == 0:
             errors.append("albedo table: nothing compared")
+    errors += check_system(out, md)
     return errors
 
 
@@ -134,7 +236,7 @@ def main():
     errors = check(out)
     for e in errors:
         print(e)
-    print(f"{len(errors)} mismatches between {out}/report.md and report_data.json")
+    print(f"{len(errors)} mismatches between {out}/report.md and report_data.json, scene_bench.json")
     return 1 if errors else 0
 
 
