@@ -91,7 +91,9 @@ def check_system(out, md):
             errors.append(f"System per-scene row {r} != {want} (from scene_bench.json)")
         sp = x["device_setup_ns_per_span"] * x["spans"] / x["pixels"]
         sh = x["device_shade_ns_per_pixel"]
+        a2 = x.get("device_setup_avx2_ns_per_pixel")
         want = [x["scene"], f"{x['device_setup_ns_per_span']:.2f}", f"{sp:.2f}", f"{sh:.2f}", f"{100 * sp / (sp + sh):.0f} %"]
+        want += [f"{a2:.2f}", f"{ps / a2:.2f}"] if a2 else ["n/a", "n/a"]
         if q != want:
             errors.append(f"System setup/shading row {q} != {want}")
         setup_rate = 1e3 / x["device_setup_ns_per_span"]
