@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "scanlines.hpp"
 
 #include "metrics.hpp"
@@ -94,7 +95,7 @@ std::vector<Scanline> deterministic_scanlines(const device::Format& f) {
     }
   }
 
-  // Hard cases of SPEC section 4, each at the decoder boundaries and the extremes of n and l.
+  // Hard cases of docs/scanline_setup.md#hard-cases, each at the decoder boundaries and the extremes of n and l.
   const double hard_n[] = {1, 2, 3, 6, 7, 1000};
   const int hard_l[] = {0, 3, max_len};
   const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -171,6 +172,15 @@ std::vector<Scanline> deterministic_scanlines(const device::Format& f) {
     raw(cmax, (int64_t{8} << f.angle_frac) - 64, 1, n, 255, "|psi|=8-boundary");
     raw(cmax, -(int64_t{8} << f.angle_frac) - 64, 1, n, 255, "|psi|=-8-boundary");
     raw(1, -small, 1, n, 255, "C=1lsb");
+  }
+  // Negative dpsi whose low half carries at every step (its two's complement low half is
+  // nearly all ones): the setup never produces dpsi < 0, so only these lines check the carry
+  // between register 8's halves (docs/device.md#fixed-point-contract) going downwards.
+  for (uint32_t n : {2u, 7u, 100u}) {
+    raw(cmax, int64_t{1} << (f.angle_frac - 1), -(int64_t{1} << (f.angle_frac - 20)), n, max_len,
+        "negative-dpsi-carry");
+    raw(cmax, (int64_t{3} << (f.angle_frac - 4)) + 12345, -(int64_t{1} << (f.angle_frac - 12)) - 77, n, max_len,
+        "negative-dpsi-carry-across-0");
   }
   const int64_t hp = f.half_pi_code();
   for (uint32_t n : {1u, 2u, 3u, 4u, 6u, 9u, 13u, 15u, 100u}) {

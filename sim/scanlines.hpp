@@ -1,5 +1,6 @@
+// SPDX-License-Identifier: Apache-2.0
 // Scanlines for the regression: register contents produced by the model's scanline setup
-// (SPEC section 4) from geometry, plus raw register patterns the setup never produces.
+// (docs/scanline_setup.md) from geometry, plus raw register patterns the setup never produces.
 #pragma once
 
 #include "device_model.hpp"
@@ -17,7 +18,7 @@ struct Scanline {
 };
 
 // Every n in 1..max_n over spans crossing 0 and past +-pi/2, l in {0,1,2,3,2047}, C at 0,
-// mid and full scale, the hard cases of SPEC section 4, and raw register edge patterns.
+// mid and full scale, the hard cases of docs/scanline_setup.md, and raw register edge patterns.
 std::vector<Scanline> deterministic_scanlines(const device::Format& f);
 
 // `count` random scanlines from random geometry (fixed by `seed`): most lines short, a few

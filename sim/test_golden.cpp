@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Unit tests of the golden model (model/device/device_model) and the ROM images (model/device/rom_image)
 // against hand-computed values of the header contract, with synthetic ROMs whose contents
 // make every stage visible (identity cos ROM, power-of-two coefficients).
@@ -210,9 +211,11 @@ TEST_CASE("accumulator adds dpsi exactly, line has len + 1 pixels, invalid n giv
   for (int i : {0, 1, 256, 2047}) CHECK(m.trace(r, i).psi == -(int64_t{1} << 28) + int64_t{i} * (int64_t{1} << 20));
   const auto line = m.line(r);
   REQUIRE(line.size() == 2048u);
-  CHECK(line[256] == m.pixel(r, 256));
-  // psi = 0 at i = 256: address 0 of bank 3 -> synthetic word 30000.
+  // psi = 0 at i = 256: address 0 of bank 3 -> synthetic word 30000, and multiplier 13 of
+  // the patent's format (16 fraction bits, round half up): I = (C * 30000 + 2^15) >> 16.
   CHECK(m.trace(r, 256).cosk == 30000u);
+  CHECK(line[256] == (40000u * 30000u + (1u << 15)) >> 16);
+  CHECK(line[256] == 18311u);
   r.n = 0;
   for (uint32_t v : m.line(r)) CHECK(v == 0u);
   // Register widths: len is cut to 11 bits, dpsi sign-extended from 32 bits.
