@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
 // Angle accumulator of patent UA 71489: adder 6, 2:1 multiplexer 7 and register 8.
@@ -21,6 +22,8 @@
 // invalid (its valid bit is the control unit's), and a clock enable shared with the rest of
 // the pipeline keeps the strobe logic off the clock-enable network of an iCE40.
 
+`include "specular_assert.svh"
+
 module specular_accumulator #(
   parameter int AngleBits = 32,   // registers 2 and 3, signed, radians
   parameter int AccBits   = 44    // register 8, signed, same fraction bits
@@ -39,7 +42,7 @@ module specular_accumulator #(
   localparam int HiBits = AccBits - LoBits;
 
   if (AccBits < AngleBits + 1) begin : gen_width_check
-    $error("specular_accumulator: AccBits must exceed AngleBits");
+    `SPEC_PARAM_ERROR("specular_accumulator: AccBits must exceed AngleBits")
   end
 
   logic [AccBits-1:0] psi0_ext, dpsi_ext;
@@ -90,5 +93,13 @@ module specular_accumulator #(
   end
 
   assign psi_o = {hi_q, lo_b_q};
+
+  // Assertions (rtl/specular_assert.svh): the strobes are never X, the operand a write
+  // takes is known (psi0 on the first strobe, dpsi on the others), so register 8 never
+  // holds an X.
+  `SPEC_ASSERT_KNOWN(StrobesKnown_A, {we_i, sel_i, step_i}, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(Psi0Known_A, psi0_i, we_i && !sel_i, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(DpsiKnown_A, dpsi_i, we_i && sel_i, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN(PsiKnown_A, psi_o, clk_i, rst_ni)
 
 endmodule

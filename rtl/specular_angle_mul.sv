@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
 // Multiplier 11 of patent UA 71489: zeta = a(n) * |psi|, turned into the ROM 12 address.
@@ -19,6 +20,8 @@
 // stages 2 .. 1 + MulStages the radix-4 multiplier tree (specular_pipe_mul) with the pi/2 test
 // (stages 2 and 3) and n_valid beside it; then the address register: 2 + MulStages clocks
 // from psi_i to addr_o / frac_o / zero_o.
+
+`include "specular_assert.svh"
 
 module specular_angle_mul #(
   parameter int AccBits     = 44,
@@ -52,19 +55,19 @@ module specular_angle_mul #(
   localparam logic [AccBits-1:0] HalfPiCode = AccBits'((PiHalfQ62 >> (62 - AngleFrac)) + 64'd1);
 
   if (PsiMulFrac > AngleFrac) begin : gen_frac_check
-    $error("specular_angle_mul: PsiMulFrac must not exceed AngleFrac");
+    `SPEC_PARAM_ERROR("specular_angle_mul: PsiMulFrac must not exceed AngleFrac")
   end
   if (AngleFrac > 62 || AccBits < AngleFrac + 2) begin : gen_acc_check
-    $error("specular_angle_mul: AccBits must hold the sign and an integer bit, AngleFrac <= 62");
+    `SPEC_PARAM_ERROR("specular_angle_mul: AccBits must hold the sign and an integer bit, AngleFrac <= 62")
   end
   if (DropBits < 1) begin : gen_drop_check
-    $error("specular_angle_mul: CoefFrac + PsiMulFrac must exceed CosAddrBits");
+    `SPEC_PARAM_ERROR("specular_angle_mul: CoefFrac + PsiMulFrac must exceed CosAddrBits")
   end
   if (MulStages < 2) begin : gen_stages_check
-    $error("specular_angle_mul: PsiMulFrac must be >= 2 (the pi/2 test needs two stages)");
+    `SPEC_PARAM_ERROR("specular_angle_mul: PsiMulFrac must be >= 2 (the pi/2 test needs two stages)")
   end
   if (CosInterp && DropBits < CosFracBits) begin : gen_interp_check
-    $error("specular_angle_mul: zeta has too few fraction bits for CosAddrBits + CosFracBits");
+    `SPEC_PARAM_ERROR("specular_angle_mul: zeta has too few fraction bits for CosAddrBits + CosFracBits")
   end
 
   // ---- Stage 1: one's complement magnitude, coefficient copy (off the ROM 9 output).
@@ -91,7 +94,7 @@ module specular_angle_mul #(
   localparam int LoBits = AccBits / 2;
   localparam logic [AccBits-1:0] HalfPiNeg = HalfPiCode - AccBits'(1);
   if (HalfPiCode[LoBits-1:0] == '0) begin : gen_half_check
-    $error("specular_angle_mul: the low half of ceil(pi/2 * 2^AngleFrac) must not be 0");
+    `SPEC_PARAM_ERROR("specular_angle_mul: the low half of ceil(pi/2 * 2^AngleFrac) must not be 0")
   end
   logic gt_hi_q, eq_hi_q, ge_lo_q;
   always_ff @(posedge clk_i) begin
@@ -181,5 +184,11 @@ module specular_angle_mul #(
   end else begin : gen_no_low
     assign unused_ones = 1'b0;
   end
+
+  // Assertions (rtl/specular_assert.svh): the advance and the zero flag are never X.
+  // (Whether a stage holds a pixel is known only to the control unit: the address of a
+  // bubble may be X, and the known checks of the pixels are further on.)
+  `SPEC_ASSERT_KNOWN(EnKnown_A, en_i, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN(ZeroKnown_A, zero_o, clk_i, rst_ni)
 
 endmodule

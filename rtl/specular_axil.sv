@@ -66,6 +66,8 @@
 // (>= 8) and FifoDepth (1 .. 255). The interface widths CBits, AngleBits, NBits, LenBits and
 // TagBits must not exceed 32 (one register each).
 
+`include "specular_assert.svh"
+
 module specular_axil #(
   parameter int CBits /*verilator public*/       = 16,
   parameter int CFrac /*verilator public*/       = 15,
@@ -181,19 +183,19 @@ module specular_axil #(
   localparam logic [NBits-1:0] NMax = BankMaxN[NumBanks*NBits-1 -: NBits];
 
   if (AddrWidth < 8) begin : gen_addr_check
-    $error("specular_axil: AddrWidth must be >= 8 (the register map spans 0x00 .. 0xBC)");
+    `SPEC_PARAM_ERROR("specular_axil: AddrWidth must be >= 8 (the register map spans 0x00 .. 0xBC)")
   end
   if (FifoDepth < 1 || FifoDepth > 255) begin : gen_fifo_check
-    $error("specular_axil: FifoDepth must be 1 .. 255");
+    `SPEC_PARAM_ERROR("specular_axil: FifoDepth must be 1 .. 255")
   end
   if (CBits > 32 || AngleBits > 32 || NBits > 32 || LenBits > 32 || TagBits > 32) begin : gen_width_check
-    $error("specular_axil: CBits, AngleBits, NBits, LenBits and TagBits must be <= 32");
+    `SPEC_PARAM_ERROR("specular_axil: CBits, AngleBits, NBits, LenBits and TagBits must be <= 32")
   end
   if (NumBanks > 16) begin : gen_banks_check
-    $error("specular_axil: BANK_MAX_N shows at most 16 banks");
+    `SPEC_PARAM_ERROR("specular_axil: BANK_MAX_N shows at most 16 banks")
   end
   if (Latency > 255) begin : gen_latency_check
-    $error("specular_axil: Latency does not fit BUILD_CORE[7:0]");
+    `SPEC_PARAM_ERROR("specular_axil: Latency does not fit BUILD_CORE[7:0]")
   end
 
   // Byte lanes of WSTRB applied to a 32-bit register value.

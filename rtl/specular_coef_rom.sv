@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
 // Coefficient ROM, block 9 of patent UA 71489 (the "second ROM"): 2^NBits words addressed
@@ -11,6 +12,8 @@
 // (registered output, no reset) so synthesis maps it to block RAM. The stream reads it
 // with the span's n in the cycle the span is accepted, so the word sits beside register 4
 // while the span's pixels leave register 8.
+
+`include "specular_assert.svh"
 
 module specular_coef_rom #(
   parameter int NBits       = 10,
@@ -28,8 +31,18 @@ module specular_coef_rom #(
   logic [CoefBits-1:0] mem [Depth];
   logic [CoefBits-1:0] coef_q;
 
+`ifndef SYNTHESIS
+  int unsigned unloaded;   // words the file left X (a four-state simulator sees them)
+`endif
   initial begin
     $readmemh(CoefRomFile, mem, 0, Depth - 1);
+`ifndef SYNTHESIS
+    unloaded = 0;
+    for (int i = 0; i < Depth; i++) begin
+      unloaded += `SPEC_KNOWN(mem[i]) ? 0 : 1;
+    end
+    `SPEC_ASSERT_I(AllWordsLoaded_A, unloaded == 0)
+`endif
   end
 
   always_ff @(posedge clk_i) begin
@@ -39,5 +52,9 @@ module specular_coef_rom #(
   end
 
   assign coef_o = coef_q;
+
+  // Assertions (rtl/specular_assert.svh; no reset here: an X strobe is vacuous): a read
+  // has a known address.
+  `SPEC_ASSERT_KNOWN_IF(AddrKnown_A, n_i, en_i, clk_i, 1'b1)
 
 endmodule

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
 // Control unit, block 14 of patent UA 71489, for the streaming pipeline. The patent builds
@@ -23,6 +24,8 @@
 // With adv_i high a new span's first pixel enters register 8 on the edge at which the
 // previous span's last pixel leaves it: one pixel per clock, l = 0 spans included.
 
+`include "specular_assert.svh"
+
 module specular_control #(
   parameter int PipeDepth = 5
 ) (
@@ -43,7 +46,7 @@ module specular_control #(
 );
 
   if (PipeDepth < 2) begin : gen_depth_check
-    $error("specular_control: PipeDepth must be >= 2");
+    `SPEC_PARAM_ERROR("specular_control: PipeDepth must be >= 2")
   end
 
   logic [PipeDepth-1:0] vld_d, vld_q;
@@ -79,5 +82,24 @@ module specular_control #(
   assign out_valid_o   = vld_q[PipeDepth-1];
   assign out_last_o    = last_q[PipeDepth-1];
   assign busy_o        = |vld_q;
+
+  // Assertions (rtl/specular_assert.svh). State legality: a last flag only on a valid
+  // stage, and no gap inside a span (a valid stage that is not its span's last pixel has
+  // a valid stage right behind it). Inputs: never X; a span offered and not taken is
+  // still offered at the next clock (AXI4-Stream: valid waits for ready).
+  `SPEC_ASSERT(LastIsValid_A, (last_q & ~vld_q[PipeDepth-1:1]) == '0, clk_i, rst_ni)
+  `SPEC_ASSERT(NoGapInSpan_A, (vld_q[PipeDepth-1:1] & ~last_q & ~vld_q[PipeDepth-2:0]) == '0, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN(InputsKnown_A, {span_valid_i, adv_i, cnt_zero_i}, clk_i, rst_ni)
+`ifndef SYNTHESIS
+  logic offered_q;   // a span was offered and not taken at the last edge
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      offered_q <= 1'b0;
+    end else begin
+      offered_q <= span_valid_i & ~span_ready_o;
+    end
+  end
+  `SPEC_ASSERT_IF(SpanValidHeld_A, offered_q, span_valid_i, clk_i, rst_ni)
+`endif
 
 endmodule

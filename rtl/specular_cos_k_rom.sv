@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
 // cos^k ROM, block 12 of patent UA 71489 (the "first ROM"): NumBanks banks of
@@ -28,6 +29,8 @@
 // stages) and the subtraction; the direct table is delayed by as many clocks, so both
 // have Latency = 3 + clog2(ceil(CosDeltaBits / 2)).
 
+`include "specular_assert.svh"
+
 module specular_cos_k_rom #(
   parameter int NumBanks     = 8,
   parameter int CosAddrBits  = 8,
@@ -52,7 +55,7 @@ module specular_cos_k_rom #(
   localparam int MulStages = 1 + ((((CosDeltaBits + 1) / 2) > 1) ? $clog2((CosDeltaBits + 1) / 2) : 0);
 
   if (CosInterp && CosDeltaBits > CosDataBits) begin : gen_delta_check
-    $error("specular_cos_k_rom: CosDeltaBits must not exceed CosDataBits");
+    `SPEC_PARAM_ERROR("specular_cos_k_rom: CosDeltaBits must not exceed CosDataBits")
   end
 
   // One-hot to binary bank number. With no bank selected (invalid n) bank 0 is read;
@@ -81,8 +84,18 @@ module specular_cos_k_rom #(
     assign addr = addr_i;
   end
 
+`ifndef SYNTHESIS
+  int unsigned unloaded;   // words the file left X (a four-state simulator sees them)
+`endif
   initial begin
     $readmemh(CosRomFile, mem, 0, Depth - 1);
+`ifndef SYNTHESIS
+    unloaded = 0;
+    for (int i = 0; i < Depth; i++) begin
+      unloaded += `SPEC_KNOWN(mem[i]) ? 0 : 1;
+    end
+    `SPEC_ASSERT_I(AllWordsLoaded_A, unloaded == 0)
+`endif
   end
 
   always_ff @(posedge clk_i) begin
@@ -137,6 +150,13 @@ module specular_cos_k_rom #(
 
     logic unused_dt_lsbs;
     assign unused_dt_lsbs = ^dt_rnd[CosFracBits-1:0];
+`ifndef SYNTHESIS
+    // Every word read has v <= 1.0 and d <= v, so v - d t cannot wrap below 0.
+    logic word_known;
+    assign word_known = `SPEC_KNOWN(word_q);
+    `SPEC_ASSERT_IF(WordInRange_A, en_i && word_known, v <= (CosDataBits + 1)'(1 << CosDataBits), clk_i, 1'b1)
+    `SPEC_ASSERT_IF(StepBelowValue_A, en_i && word_known, (CosDataBits + 1)'(d) <= v, clk_i, 1'b1)
+`endif
   end else begin : gen_direct
     logic [CosDataBits-1:0] w_m;
     specular_delay #(.Width (CosDataBits), .Depth (MulStages + 1), .Reset (1'b0)) u_w (
@@ -145,5 +165,10 @@ module specular_cos_k_rom #(
     logic unused_frac;
     assign unused_frac = ^{frac_q, frac3_q};
   end
+
+  // Assertions (rtl/specular_assert.svh; no reset here: an X enable is vacuous): the
+  // bank select from decoder 10 is one-hot or zero (invalid n) and known.
+  `SPEC_ASSERT_KNOWN_IF(BankKnown_A, bank_i, en_i, clk_i, 1'b1)
+  `SPEC_ASSERT_IF(BankOneHot0_A, en_i, $onehot0(bank_i), clk_i, 1'b1)
 
 endmodule

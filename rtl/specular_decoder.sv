@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
 // Decoder, block 10 of patent UA 71489: maps the exponent n (register 4) to a one-hot
@@ -18,6 +19,8 @@
 // so the outputs follow n_i one clock later and no clock holds a comparison and the
 // select logic behind it (an iCE40-UP5K critical path otherwise).
 
+`include "specular_assert.svh"
+
 module specular_decoder #(
   parameter int                      NBits    = 10,
   parameter int                      NumBanks = 4,
@@ -32,11 +35,11 @@ module specular_decoder #(
 );
 
   if (NumBanks < 1) begin : gen_banks_check
-    $error("specular_decoder: NumBanks must be >= 1");
+    `SPEC_PARAM_ERROR("specular_decoder: NumBanks must be >= 1")
   end
   for (genvar j = 1; j < NumBanks; j++) begin : gen_order_check
     if (BankMaxN[j*NBits +: NBits] <= BankMaxN[(j-1)*NBits +: NBits]) begin : gen_err
-      $error("specular_decoder: BankMaxN must increase strictly");
+      `SPEC_PARAM_ERROR("specular_decoder: BankMaxN must increase strictly")
     end
   end
 
@@ -76,5 +79,16 @@ module specular_decoder #(
   end
 
   assign n_valid_o = |bank_o;
+
+  // Assertions (rtl/specular_assert.svh; no reset here, so checked once the comparisons
+  // hold a known n): le is a thermometer code (BankMaxN increases strictly), so at most one
+  // bank is selected, and exactly one for every n in 1 .. BankMaxN[NumBanks-1].
+`ifndef SYNTHESIS
+  logic le_known;
+  assign le_known = `SPEC_KNOWN({le, nz});
+  `SPEC_ASSERT_IF(LeThermometer_A, le_known, ((le << 1) & ~le) == '0, clk_i, 1'b1)
+  `SPEC_ASSERT_IF(BankOneHot0_A, le_known, $onehot0(bank_o), clk_i, 1'b1)
+  `SPEC_ASSERT_IF(ValidNOneBank_A, le_known && nz && le[NumBanks-1], $onehot(bank_o), clk_i, 1'b1)
+`endif
 
 endmodule

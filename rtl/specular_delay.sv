@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
 // Delay line of Depth registers with a common enable (pipeline stall): carries per-pixel
@@ -6,6 +7,8 @@
 // Reset = 1: asynchronous reset to 0 (values that must read 0 before the first pixel).
 // Reset = 0: no reset, for datapath values whose validity travels in reset valid bits
 // elsewhere (block RAM and multiplier outputs have no reset either); rst_ni is unused.
+
+`include "specular_assert.svh"
 
 module specular_delay #(
   parameter int Width = 1,
@@ -20,7 +23,7 @@ module specular_delay #(
 );
 
   if (Width < 1 || Depth < 0) begin : gen_param_check
-    $error("specular_delay: Width must be >= 1 and Depth >= 0");
+    `SPEC_PARAM_ERROR("specular_delay: Width must be >= 1 and Depth >= 0")
   end
 
   if (Depth == 0) begin : gen_wire
@@ -55,6 +58,12 @@ module specular_delay #(
       end
     end
     assign q_o = pipe_q[Depth-1];
+  end
+
+  // Assertions (rtl/specular_assert.svh): the enable of a line with reset is never X (an
+  // X enable would smear the whole line).
+  if (Reset && Depth > 0) begin : gen_known_check
+    `SPEC_ASSERT_KNOWN(EnKnown_A, en_i, clk_i, rst_ni)
   end
 
 endmodule

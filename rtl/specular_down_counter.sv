@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
 // Down counter, block 5 of patent UA 71489: holds the pixel count l (input 23, write 24),
@@ -9,6 +10,8 @@
 // register and reloaded into the counter by the borrow, so l persists from line to line
 // like the contents of registers 1-4 (the patent reloads the counter before every line;
 // a host that does so sees no difference).
+
+`include "specular_assert.svh"
 
 module specular_down_counter #(
   parameter int LenBits = 11
@@ -24,7 +27,7 @@ module specular_down_counter #(
 );
 
   if (LenBits < 1) begin : gen_width_check
-    $error("specular_down_counter: LenBits must be >= 1");
+    `SPEC_PARAM_ERROR("specular_down_counter: LenBits must be >= 1")
   end
 
   logic [LenBits-1:0] len_q;
@@ -66,5 +69,15 @@ module specular_down_counter #(
 
   assign count_o = cnt_q;
   assign zero_o  = zero_q;
+
+  // Assertions (rtl/specular_assert.svh): the zero flag is the count's zero test, the
+  // count never passes below zero (a decrement starts above zero, the borrow comes only at
+  // zero) and never exceeds the written l; the strobes are never X.
+  `SPEC_ASSERT(ZeroFlag_A, zero_q == (cnt_q == '0), clk_i, rst_ni)
+  `SPEC_ASSERT_IF(BorrowAtZero_A, borrow_o, cnt_q == '0, clk_i, rst_ni)
+  `SPEC_ASSERT_IF(NoWrap_A, count_i && !len_we_i && !borrow_o, cnt_q != '0, clk_i, rst_ni)
+  `SPEC_ASSERT(CntLeLen_A, cnt_q <= len_q, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN(StrobesKnown_A, {len_we_i, count_i}, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(LenKnown_A, len_i, len_we_i, clk_i, rst_ni)
 
 endmodule

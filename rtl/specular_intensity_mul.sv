@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
 // Multiplier 13 of patent UA 71489 and the output register (output 27):
@@ -11,6 +12,8 @@
 // (specular_pipe_mul over the bits of cos^k, 1 + clog2(ceil((CosDataBits + 1) / 2)) stages)
 // with the zero flag beside it, then the rounding and the output register:
 // Latency = 2 + clog2(ceil((CosDataBits + 1) / 2)).
+
+`include "specular_assert.svh"
 
 module specular_intensity_mul #(
   parameter int CBits       = 16,
@@ -27,7 +30,7 @@ module specular_intensity_mul #(
 );
 
   if (CosDataBits < 1 || CBits < 1) begin : gen_width_check
-    $error("specular_intensity_mul: widths must be >= 1");
+    `SPEC_PARAM_ERROR("specular_intensity_mul: widths must be >= 1")
   end
 
   localparam int ProdBits  = CBits + CosDataBits + 1;
@@ -74,5 +77,13 @@ module specular_intensity_mul #(
   // The discarded low product bits are the rounding remainder; the top bit is 0 (see above).
   logic unused_prod_bits;
   assign unused_prod_bits = ^{prod_rnd[CosDataBits-1:0], prod_rnd[ProdBits-1]};
+
+  // Assertions (rtl/specular_assert.svh): cos^k of a pixel that is not zero is at most 1.0
+  // (so I <= C and the top product bit is 0) and known, as are C and 3 C beside it; the
+  // output is never X.
+  `SPEC_ASSERT_IF(CoskAtMostOne_A, en_i && !zero_i, cosk_i <= (CosDataBits + 1)'(1 << CosDataBits), clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(OperandsKnown_A, {c_i, c3_i, cosk_i}, en_i && !zero_i, clk_i, rst_ni)
+  `SPEC_ASSERT(TopBitZero_A, keep_m == 1'b0 || prod_rnd[ProdBits-1] == 1'b0, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN(IntensityKnown_A, intensity_o, clk_i, rst_ni)
 
 endmodule

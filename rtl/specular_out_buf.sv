@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
 // Output register slice of the stream (part of output 27 and strobe 29): a two-entry
@@ -14,6 +15,8 @@
 // px_valid_o never waits for px_ready_i. px_data_o reads 0 while px_valid_o is low. With
 // px_ready_i always high the buffer holds at most one pixel and adv_o stays high: one
 // pixel per clock, one clock of latency.
+
+`include "specular_assert.svh"
 
 module specular_out_buf #(
   parameter int Width = 33
@@ -82,5 +85,16 @@ module specular_out_buf #(
   assign adv_o      = adv_q;
   assign px_valid_o = count_q != 2'd0;
   assign px_data_o  = head_q;
+
+  // Assertions (rtl/specular_assert.svh). At most two entries, and the advance is the
+  // registered "room" (so a push never meets a full buffer); while stalled the pixel
+  // stays valid and unchanged; an empty buffer reads 0; a valid pixel is known.
+  `SPEC_ASSERT(CountMax_A, count_q <= 2'd2, clk_i, rst_ni)
+  `SPEC_ASSERT(AdvIsRoom_A, adv_q == (count_q <= 2'd1), clk_i, rst_ni)
+  `SPEC_ASSERT_IF(HoldWhileStalled_A, px_valid_o && !px_ready_i, count_d != 2'd0 && head_d == head_q, clk_i, rst_ni)
+  `SPEC_ASSERT_IF(EmptyReadsZero_A, !px_valid_o, px_data_o == '0, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN(InputsKnown_A, {in_valid_i, px_ready_i}, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(PushKnown_A, in_data_i, push, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(DataKnown_A, px_data_o, px_valid_o, clk_i, rst_ni)
 
 endmodule

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
 // Pipelined unsigned multiplier p = a * b, exact, for the LUT fabric of an iCE40 (no DSP
@@ -14,6 +15,8 @@
 // Either way no stage holds more than one carry chain.
 // Used by multiplier 11 (coef * |psi|), the ROM 12 interpolation (t * d) and
 // multiplier 13 (C * cos^k) of patent UA 71489.
+
+`include "specular_assert.svh"
 
 module specular_pipe_mul #(
   parameter int ABits  = 16,
@@ -37,7 +40,7 @@ module specular_pipe_mul #(
   localparam int Levels   = (FirstLvl + TreeLvl > 0) ? FirstLvl + TreeLvl : 1;
 
   if (ABits < 1 || BBits < 1) begin : gen_width_check
-    $error("specular_pipe_mul: widths must be >= 1");
+    `SPEC_PARAM_ERROR("specular_pipe_mul: widths must be >= 1")
   end
 
   // rows[l][j]: row j after level l; level 0 is combinational.
@@ -47,9 +50,11 @@ module specular_pipe_mul #(
     logic [2*NRows-1:0] b_pad;
     assign b_pad = (2 * NRows)'(b_i);
     for (genvar j = 0; j < NRows; j++) begin : gen_pp
+      logic [1:0]       digit;
       logic [ABits+1:0] digit_row;
+      assign digit = b_pad[2*j +: 2];  // Icarus 11: no constant part select in always_comb
       always_comb begin
-        unique case (b_pad[2*j +: 2])
+        unique case (digit)
           2'd0:    digit_row = '0;
           2'd1:    digit_row = (ABits + 2)'(a_i);
           2'd2:    digit_row = (ABits + 2)'(a_i) << 1;
@@ -73,7 +78,7 @@ module specular_pipe_mul #(
     localparam int NPrev = Adds ? (NRows + (1 << (Shift - 1)) - 1) >> (Shift - 1) : NRows;
     localparam int NCur  = (NRows + (1 << Shift) - 1) >> Shift;
     for (genvar j = 0; j < NCur; j++) begin : gen_row
-      logic [PBits-1:0] sum;
+      logic [PBits-1:0] sum, sum_q;
       if (!Adds) begin : gen_copy
         assign sum = rows[l-1][j];
       end else if (2 * j + 1 < NPrev) begin : gen_add
@@ -83,9 +88,12 @@ module specular_pipe_mul #(
       end
       always_ff @(posedge clk_i) begin
         if (en_i) begin
-          rows[l][j] <= sum;
+          sum_q <= sum;
         end
       end
+      // rows is driven by continuous assignments only (Icarus 11 cannot mix them with
+      // procedural writes to other words of the same array).
+      assign rows[l][j] = sum_q;
     end
     // Rows beyond NCur are not used at this level.
     for (genvar j = NCur; j < NRows; j++) begin : gen_unused_row
@@ -94,5 +102,15 @@ module specular_pipe_mul #(
   end
 
   assign p_o = rows[Levels][0];
+
+  // Assertions (rtl/specular_assert.svh; no reset here, so checked on known operands): the
+  // caller's 3a matches a (it computes it a clock earlier, beside a).
+  if (Radix4) begin : gen_a3_check
+`ifndef SYNTHESIS
+    logic a_known;
+    assign a_known = `SPEC_KNOWN({a_i, a3_i});
+    `SPEC_ASSERT_IF(A3IsThreeA_A, en_i && a_known, a3_i == (ABits + 2)'(a_i) * (ABits + 2)'(3), clk_i, 1'b1)
+`endif
+  end
 
 endmodule

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
 // Input register with write enable: blocks 1 (C), 2 (dpsi), 3 (psi0) and 4 (n) of
@@ -6,6 +7,8 @@
 // The write enable arriving here is already qualified by the control unit (block 14):
 // writes while the device is busy are dropped before they reach the register, so the
 // register is stable for the whole line.
+
+`include "specular_assert.svh"
 
 module specular_reg #(
   parameter int Width = 16
@@ -18,7 +21,7 @@ module specular_reg #(
 );
 
   if (Width < 1) begin : gen_width_check
-    $error("specular_reg: Width must be >= 1");
+    `SPEC_PARAM_ERROR("specular_reg: Width must be >= 1")
   end
 
   logic [Width-1:0] q_d, q_q;
@@ -34,5 +37,10 @@ module specular_reg #(
   end
 
   assign q_o = q_q;
+
+  // Assertions (rtl/specular_assert.svh): the write strobe is never X, a written value is
+  // known (an X would sit in the register for the whole line).
+  `SPEC_ASSERT_KNOWN(WeKnown_A, we_i, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(DataKnown_A, d_i, we_i, clk_i, rst_ni)
 
 endmodule

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
 // specular_stream: the device of patent UA 71489 as a streaming pixel pipeline. Span
@@ -63,6 +64,8 @@
 // parameters are /*verilator public*/ here too, so a testbench of the stream alone can
 // check them against specular::device::Format.
 
+`include "specular_assert.svh"
+
 module specular_stream #(
   parameter int CBits /*verilator public*/       = 16,
   parameter int CFrac /*verilator public*/       = 15,
@@ -118,13 +121,13 @@ module specular_stream #(
   /* verilator lint_on UNUSEDPARAM */
 
   if (CFrac > CBits) begin : gen_c_check
-    $error("specular_stream: CFrac must not exceed CBits");
+    `SPEC_PARAM_ERROR("specular_stream: CFrac must not exceed CBits")
   end
   if (AccBits < AngleBits + LenBits + 1) begin : gen_acc_check
-    $error("specular_stream: AccBits too small for 2^LenBits additions of dpsi");
+    `SPEC_PARAM_ERROR("specular_stream: AccBits too small for 2^LenBits additions of dpsi")
   end
   if (TagBits < 1) begin : gen_tag_check
-    $error("specular_stream: TagBits must be >= 1");
+    `SPEC_PARAM_ERROR("specular_stream: TagBits must be >= 1")
   end
 
   // ---------------------------------------------------------------------------------
@@ -370,57 +373,40 @@ module specular_stream #(
   );
 
   // ---------------------------------------------------------------------------------
-  // Immediate assertions of the handshake invariants (Verilator --assert; the formal
-  // proof of the same properties is rtl/formal/specular_stream_fv.sv)
+  // Assertions (rtl/specular_assert.svh). The blocks check their own invariants (the
+  // output buffer: valid held and the pixel stable while stalled, 0 while invalid); these
+  // are the ones that span blocks: every pixel belongs to an accepted span. The formal
+  // proof of the handshake is rtl/formal/specular_stream_fv.sv.
   // ---------------------------------------------------------------------------------
+  // Inputs: the handshake bits are never X; a span offered and a pixel sent are known.
+  `SPEC_ASSERT_KNOWN(SpanValidKnown_A, span_valid_i, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(SpanCKnown_A, {span_c_i, span_n_i, span_len_i}, span_valid_i, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(SpanPsiKnown_A, {span_psi0_i, span_dpsi_i}, span_valid_i, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(SpanTagKnown_A, span_tag_i, span_valid_i, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN(PxReadyKnown_A, px_ready_i, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(PxKnown_A, {px_intensity_o, px_last_o, px_tag_o}, px_valid_o, clk_i, rst_ni)
+
 `ifndef SYNTHESIS
   // Pixels owed: l + 1 per accepted span, minus one per transfer. Wide enough for every
   // span that fits in the pipeline.
   localparam int OweBits = LenBits + 4;
   logic [OweBits-1:0] owed_q;
-  logic               stalled_q;
-  logic [CBits+TagBits:0] held_q;
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      owed_q    <= '0;
-      stalled_q <= 1'b0;
-      held_q    <= '0;
+      owed_q <= '0;
     end else begin
       owed_q <= owed_q
                 + (accept ? OweBits'(span_len_i) + OweBits'(1) : '0)
                 - ((px_valid_o && px_ready_i) ? OweBits'(1) : '0);
-      stalled_q <= px_valid_o & ~px_ready_i;
-      held_q    <= {px_intensity_o, px_last_o, px_tag_o};
     end
   end
 
-  always_comb begin
-    if (rst_ni) begin
-      // Valid held and data stable while stalled.
-      if (stalled_q) begin
-        assert (px_valid_o)
-          else $error("specular_stream: px_valid_o fell without a transfer");
-        assert ({px_intensity_o, px_last_o, px_tag_o} == held_q)
-          else $error("specular_stream: pixel changed while stalled");
-      end
-      // No pixel without an accepted span; none left over at the end of a span.
-      if (px_valid_o) begin
-        assert (owed_q != '0)
-          else $error("specular_stream: pixel without an accepted span");
-        assert (owed_q != OweBits'(1) || px_last_o)
-          else $error("specular_stream: the last pixel owed is not marked last");
-      end
-      if (owed_q == '0) begin
-        assert (stage_valid == '0)
-          else $error("specular_stream: pixel in flight with none owed");
-      end
-      if (!px_valid_o) begin
-        assert (px_intensity_o == '0 && !px_last_o)
-          else $error("specular_stream: output not cleared while invalid");
-      end
-    end
-  end
+  // No pixel without an accepted span; the last pixel owed is marked last; nothing in
+  // flight when nothing is owed.
+  `SPEC_ASSERT_IF(PxOwed_A, px_valid_o, owed_q != '0, clk_i, rst_ni)
+  `SPEC_ASSERT_IF(LastOwedIsLast_A, px_valid_o && owed_q == OweBits'(1), px_last_o, clk_i, rst_ni)
+  `SPEC_ASSERT_IF(NoneOwedEmpty_A, owed_q == '0, stage_valid == '0, clk_i, rst_ni)
 `endif
 
 endmodule

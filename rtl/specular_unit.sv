@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
 // specular_unit: specular (Blinn) intensity of every pixel of a scanline, after patent
@@ -60,6 +61,8 @@
 // The numeric parameters are /*verilator public*/: a Verilator testbench reads them as
 // static constants V<prefix>_specular_unit::CBits, ... (header V<prefix>_specular_unit.h),
 // e.g. to refuse to run when they differ from Format.
+
+`include "specular_assert.svh"
 
 module specular_unit #(
   parameter int CBits       /*verilator public*/ = 16,  // Format::c_bits
@@ -238,5 +241,13 @@ module specular_unit #(
 
   logic unused_px;
   assign unused_px = px_last ^ px_tag[0];
+
+  // Assertions (rtl/specular_assert.svh): the register interface's own contract (the
+  // stream and the blocks check theirs): offer and pixels only while busy, intensity_o
+  // reads 0 while valid_o is low, the host's strobes are never X.
+  `SPEC_ASSERT_IF(OfferWhileBusy_A, offer_q, start_q, clk_i, rst_ni)
+  `SPEC_ASSERT_IF(ValidWhileBusy_A, valid_o, start_q, clk_i, rst_ni)
+  `SPEC_ASSERT_IF(IdleReadsZero_A, !valid_o, intensity_o == '0, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN(StrobesKnown_A, {c_we_i, dpsi_we_i, psi0_we_i, n_we_i, len_we_i, start_i}, clk_i, rst_ni)
 
 endmodule
