@@ -859,17 +859,25 @@ class Report:
               f"{t['phong_sleef']:.2f} | {t['phong_scalar']:.2f} | {t['pow_cos']:.2f} | {r['device']:.2f} | "
               f"{r['phong_scalar']:.2f} | {r['pow_cos']:.2f} |")
         w("\nThe device method's two parts, each timed alone in the same rounds: the setup per span (and per pixel of "
-          "the scene), the shading per pixel (from fixed registers); and the whole device method with the setup held to "
-          "AVX2 (`setup_batch`'s automatic path takes AVX-512 where the CPU has it, the shading kernels of every method "
-          "are AVX2), with its ratio to phong_sleef.\n")
-        w("| scene | setup ns/span | setup ns/px | shading ns/px | setup share | device, AVX2 setup, ns/px | x phong_sleef |")
-        w("|---|---|---|---|---|---|---|")
+          "the scene), the shading per pixel (from fixed registers).\n")
+        w("| scene | setup ns/span | setup ns/px | shading ns/px | setup share |")
+        w("|---|---|---|---|---|")
         for x in scenes:
             sp, sh = x["device_setup_ns_per_pixel"], x["device_shade_ns_per_pixel"]
-            a2 = x.get("device_setup_avx2_ns_per_pixel")
-            a2c = f"{a2:.2f} | {x['ns_per_pixel']['phong_sleef'] / a2:.2f}" if a2 else "n/a | n/a"
             w(f"| {x['scene']} | {x['device_setup_ns_per_span']:.2f} | {sp:.2f} | {sh:.2f} | "
-              f"{100 * sp / (sp + sh) if sp + sh > 0 else 0:.0f} % | {a2c} |")
+              f"{100 * sp / (sp + sh) if sp + sh > 0 else 0:.0f} % |")
+        w("\nAt one instruction set: `setup_batch`'s automatic path takes AVX-512 where the CPU has it, while `device` "
+          "and `phong_sleef` above shade with AVX2. AVX2 throughout: the setup held to AVX2. AVX-512 throughout: both "
+          "shaders built for AVX-512 as well (Phong with SLEEF `Sleef_powf16_u10avx512f`). n/a: the CPU lacks it.\n")
+        w("| scene | AVX2: device ns/px | AVX2: phong_sleef ns/px | AVX2: device x phong_sleef | AVX-512: device ns/px | "
+          "AVX-512: phong_sleef ns/px | AVX-512: device x phong_sleef |")
+        w("|---|---|---|---|---|---|---|")
+        for x in scenes:
+            cells = []
+            for isa in ("avx2", "avx512"):
+                m = x.get("isa_matched", {}).get(isa)
+                cells += [f"{m['device']:.2f}", f"{m['phong_sleef']:.2f}", f"{m['speedup']:.2f}"] if m else ["n/a"] * 3
+            w(f"| {x['scene']} | " + " | ".join(cells) + " |")
         goals = self.system_goals(sb)
         if goals:
             ok1, worst, ok5, worst_long = goals

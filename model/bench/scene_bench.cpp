@@ -13,8 +13,9 @@
 //   phong_sleef   per-pixel Phong across spans, SLEEF powf8 (AVX2); per-span preparation timed
 //   phong_scalar  the same with libm powf
 //   pow_cos       host::setup_scalar (scanline_setup + load_registers) + pow_cos_span per span
-// and, beside them, the device with setup_batch forced to AVX2 (setup_batch's automatic path
-// takes AVX-512 where the CPU has it; every shading kernel here is AVX2),
+// and, beside them, the methods at one instruction set ("isa_matched"): setup_batch's automatic
+// path takes AVX-512 where the CPU has it while the shaders above are AVX2, so also the device
+// with its setup held to AVX2, and device and phong_sleef both built for AVX-512,
 // and, for the host-feeding figures, setup_batch alone (M spans per second on this core)
 // against what the streaming core consumes at the HX8K Fmax of `make fpga` (one pixel per
 // clock: Fmax / mean pixels per span), read from docs/fpga_figures.json.
@@ -163,11 +164,16 @@ json bench_scene(const std::string& path, int reps, double min_time, double fmax
   // The device method's two parts alone: setup per span, shading per pixel.
   ms.push_back({"setup_batch", [&] { host::setup_batch(batch, f, regs); }, ns});
   ms.push_back({"device_shade", [&] { shader.shade(regs_fixed, out_shade.data()); }, np});
-  // The device method with the setup held to AVX2 (what a CPU without AVX-512 runs; the
-  // shading kernels of every method are AVX2 in any case).
-  const bool avx2 = cpu_has_avx2();
+  // The methods at one instruction set: setup_batch's automatic path takes AVX-512 where the
+  // CPU has it, while device and phong_sleef above shade with AVX2. AVX2 throughout: the setup
+  // held to AVX2; AVX-512 throughout: both shaders built for AVX-512 (SLEEF powf16 for Phong).
+  const bool avx2 = cpu_has_avx2(), avx512 = avx2 && host::cpu_has_avx512();
   if (avx2)
-    ms.push_back({"device_setup_avx2", [&] { host::setup_batch(batch, f, regs, SimdPath::avx2); shader.shade(regs, out_dev.data()); }, np});
+    ms.push_back({"device_avx2", [&] { host::setup_batch(batch, f, regs, SimdPath::avx2); shader.shade(regs, out_dev.data(), SimdPath::avx2); }, np});
+  if (avx512) {
+    ms.push_back({"device_avx512", [&] { host::setup_batch(batch, f, regs); shader.shade_avx512(regs, out_dev.data()); }, np});
+    ms.push_back({"phong_sleef_avx512", [&] { host::shade_phong_avx512(ps, out_ps.data()); }, np});
+  }
   if (pixels > 0) time_methods(ms, reps, min_time);
   std::map<std::string, double> t;
   for (const Method& m : ms) t[m.name] = pixels > 0 ? m.median() : 0.0;
@@ -194,7 +200,14 @@ json bench_scene(const std::string& path, int reps, double min_time, double fmax
   j["device_setup_ns_per_span"] = t["setup_batch"];
   j["device_setup_ns_per_pixel"] = t["setup_batch"] * ns / std::max(np, 1.0);
   j["device_shade_ns_per_pixel"] = t["device_shade"];
-  if (avx2) j["device_setup_avx2_ns_per_pixel"] = t["device_setup_avx2"];
+  json isa = json::object();
+  if (avx2)
+    isa["avx2"] = {{"device", t["device_avx2"]}, {"phong_sleef", t["phong_sleef"]},
+                   {"speedup", t["device_avx2"] > 0 ? t["phong_sleef"] / t["device_avx2"] : 0.0}};
+  if (avx512)
+    isa["avx512"] = {{"device", t["device_avx512"]}, {"phong_sleef", t["phong_sleef_avx512"]},
+                     {"speedup", t["device_avx512"] > 0 ? t["phong_sleef_avx512"] / t["device_avx512"] : 0.0}};
+  j["isa_matched"] = isa;
   const double setup_rate = t["setup_batch"] > 0 ? 1e3 / t["setup_batch"] : 0.0;  // M spans/s
   const double core_rate = mean_span > 0 ? fmax_mhz / mean_span : 0.0;           // M spans/s
   j["setup_mspans_per_s"] = setup_rate;

@@ -43,6 +43,25 @@ DeviceShader::DeviceShader(const device::Format& f) {
   }
 }
 
+bool cpu_has_avx512() {
+  static const bool has = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+           __builtin_cpu_supports("avx512vl");
+  }();
+  return has;
+}
+
+void DeviceShader::shade_avx512(const RegisterBatch& regs, float* out) const {
+  if (!cpu_has_avx512()) throw std::runtime_error("DeviceShader::shade_avx512: this CPU lacks AVX-512 F/DQ/VL");
+  detail::device_shade_avx512(t_, regs, out);
+}
+
+void shade_phong_avx512(const PhongSpans& spans, float* out) {
+  if (!cpu_has_avx512()) throw std::runtime_error("shade_phong_avx512: this CPU lacks AVX-512 F/DQ/VL");
+  detail::phong_shade_avx512(spans, out);
+}
+
 void DeviceShader::shade(const RegisterBatch& regs, float* out, SimdPath path) const {
   if (resolve(path) == SimdPath::avx2)
     detail::device_shade_avx2(t_, regs, out);

@@ -11,6 +11,9 @@
 //      pixels end and overwrite the surplus lanes), into an L1/L2-resident buffer;
 //   3. per pixel, full vectors across span boundaries: the expensive function.
 // So a span of 1 pixel costs one pass of stage 2, never a vector of stage 3 with one lane used.
+// Builds: x86-64 baseline (shade_spans.cpp), AVX2 + FMA (shade_spans_avx2.cpp), AVX-512
+// (shade_spans_avx512.cpp: the setup's automatic path uses AVX-512 where the CPU has it, so
+// scene_bench can compare the methods at one instruction set, AVX2 or AVX-512).
 //
 //   DeviceShader::shade  the device method of model/reference/span_shade.hpp (device_span)
 //                        from the register codes of host::setup_batch: stage 1 decodes psi0,
@@ -27,7 +30,8 @@
 //                        writes N_i and the perspective-correct surface point P_i as a numerator
 //                        and a denominator (raster.hpp span_point); stage 3 forms L and V from
 //                        P_i, H = normalize(L + V) and c. Powers: SLEEF Sleef_powf8_u10avx2
-//                        (SimdPath::avx2) or libm powf per pixel (SimdPath::scalar).
+//                        (SimdPath::avx2) or libm powf per pixel (SimdPath::scalar); an AVX-512
+//                        build with Sleef_powf16_u10avx512f (shade_phong_avx512).
 //   shade_pow_cos        the scalar reference: C std::pow(std::cos(psi_i), n) in double from the
 //                        register codes, pow_cos_span per span.
 #pragma once
@@ -57,6 +61,9 @@ class DeviceShader {
   // out must hold pixel_count(regs) floats. A span whose n code is 0 or above 1000 is dark
   // (as the device); len above 2047 throws std::invalid_argument.
   void shade(const RegisterBatch& regs, float* out, SimdPath path = SimdPath::automatic) const;
+  // The same kernels built for AVX-512 (stage 3 16 floats wide); throws std::runtime_error
+  // when cpu_has_avx512() is false. Same pixels as shade() with AVX2.
+  void shade_avx512(const RegisterBatch& regs, float* out) const;
 
   // Per n code (0 .. 2^n_bits - 1): a(n) and k(n) of device_span_plan; invalid codes
   // (0, above 1000) have a = 0 and k = 1 and make the span dark.
@@ -105,6 +112,12 @@ PhongSpans phong_spans(const std::vector<ScanlineInput>& spans);
 
 // SimdPath::avx2 (or automatic on an AVX2 CPU): SLEEF powf8; SimdPath::scalar: libm powf.
 void shade_phong(const PhongSpans& spans, float* out, SimdPath path = SimdPath::automatic);
+// AVX-512 (stage 3 16 floats wide, SLEEF Sleef_powf16_u10avx512f); throws std::runtime_error
+// when cpu_has_avx512() is false.
+void shade_phong_avx512(const PhongSpans& spans, float* out);
+
+// AVX-512 F, DQ and VL: what setup_batch's automatic path takes when present.
+bool cpu_has_avx512();
 
 // C cos^n(psi_i) in double from the register codes (pow_cos_span per span); out must hold
 // pixel_count(regs) doubles.
@@ -120,6 +133,8 @@ void device_shade_baseline(const DeviceShader::Tables& t, const RegisterBatch& r
 void device_shade_avx2(const DeviceShader::Tables& t, const RegisterBatch& regs, float* out);
 void phong_shade_scalar(const PhongSpans& s, float* out);
 void phong_shade_avx2(const PhongSpans& s, float* out);
+void device_shade_avx512(const DeviceShader::Tables& t, const RegisterBatch& regs, float* out);
+void phong_shade_avx512(const PhongSpans& s, float* out);
 }  // namespace detail
 
 }  // namespace specular::host

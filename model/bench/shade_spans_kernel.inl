@@ -240,7 +240,7 @@ struct PhongBuffers {
   std::vector<float> nx, ny, nz, px, py, pz, den;  // per-pixel H: N, P numerator and denominator
   std::vector<float> n, c;              // exponent, C
   PhongBuffers() {
-    for (auto* v : {&d, &q, &nx, &ny, &nz, &px, &py, &pz, &den, &n, &c}) v->assign(kSize, 0.0f);
+    for (auto* v : {&d, &q, &nx, &ny, &nz, &px, &py, &pz, &den, &n, &c}) v->assign(kSize + 16, 0.0f);  // + 16: a 16-wide stage 3 reads past the last pixel
   }
 };
 

@@ -70,15 +70,16 @@ def check_system(out, md):
         errors.append("section 7 (System) heading missing")
     main = table_after(md, "| scene | spans | pixels | mean span (px) | H | device ns/px |")
     split = table_after(md, "| scene | setup ns/span | setup ns/px | shading ns/px |")
+    isa = table_after(md, "| scene | AVX2: device ns/px |")
     feed = table_after(md, "| scene | mean span (px) | setup M spans/s (one host core) |")
-    for name, t in (("per-scene", main), ("setup/shading", split), ("feeding", feed)):
+    for name, t in (("per-scene", main), ("setup/shading", split), ("instruction-set", isa), ("feeding", feed)):
         if t is None:
             errors.append(f"System: the {name} table is missing")
         elif len(t) != len(scenes):
             errors.append(f"System: the {name} table has {len(t)} rows, scene_bench.json {len(scenes)} scenes")
     if errors:
         return errors
-    for x, r, q, fd in zip(scenes, main, split, feed):
+    for x, r, q, ir, fd in zip(scenes, main, split, isa, feed):
         t = x["ns_per_pixel"]
         for key in ("device", "phong_sleef", "phong_scalar", "pow_cos"):
             if not t[key] > 0:
@@ -91,11 +92,16 @@ def check_system(out, md):
             errors.append(f"System per-scene row {r} != {want} (from scene_bench.json)")
         sp = x["device_setup_ns_per_span"] * x["spans"] / x["pixels"]
         sh = x["device_shade_ns_per_pixel"]
-        a2 = x.get("device_setup_avx2_ns_per_pixel")
         want = [x["scene"], f"{x['device_setup_ns_per_span']:.2f}", f"{sp:.2f}", f"{sh:.2f}", f"{100 * sp / (sp + sh):.0f} %"]
-        want += [f"{a2:.2f}", f"{ps / a2:.2f}"] if a2 else ["n/a", "n/a"]
         if q != want:
             errors.append(f"System setup/shading row {q} != {want}")
+        want = [x["scene"]]
+        for key in ("avx2", "avx512"):
+            m = x.get("isa_matched", {}).get(key)
+            want += ([f"{m['device']:.2f}", f"{m['phong_sleef']:.2f}", f"{m['phong_sleef'] / m['device']:.2f}"] if m
+                     else ["n/a"] * 3)
+        if ir != want:
+            errors.append(f"System instruction-set row {ir} != {want}")
         setup_rate = 1e3 / x["device_setup_ns_per_span"]
         core_rate = sb["fmax_mhz"] * x["spans"] / x["pixels"]
         want = [x["scene"], f"{x['pixels'] / x['spans']:.2f}", f"{setup_rate:.1f}", f"{core_rate:.1f}",

@@ -53,10 +53,15 @@ struct DeviceCheck {
   double worst_rel_epicenter = 0.0, worst_abs_over_c = 0.0;
 };
 
-DeviceCheck check_device(const host::RegisterBatch& r, const device::Format& f, SimdPath path) {
+// avx512: DeviceShader::shade_avx512, compared with device_span's AVX2 path (the same
+// arithmetic, wider vectors).
+DeviceCheck check_device(const host::RegisterBatch& r, const device::Format& f, SimdPath path, bool avx512 = false) {
   const host::DeviceShader shader(f);
   std::vector<float> out(host::pixel_count(r));
-  shader.shade(r, out.data(), path);
+  if (avx512)
+    shader.shade_avx512(r, out.data());
+  else
+    shader.shade(r, out.data(), path);
   DeviceCheck c;
   size_t at = 0;
   std::vector<float> ref;
@@ -91,10 +96,13 @@ struct PhongCheck {
   double worst_abs = 0.0;
 };
 
-PhongCheck check_phong(const Scene& scene, const std::vector<Span>& spans, SimdPath path) {
+PhongCheck check_phong(const Scene& scene, const std::vector<Span>& spans, SimdPath path, bool avx512 = false) {
   const host::PhongSpans ps = host::phong_spans(scene, spans);
   std::vector<float> out(ps.pixels());
-  host::shade_phong(ps, out.data(), path);
+  if (avx512)
+    host::shade_phong_avx512(ps, out.data());
+  else
+    host::shade_phong(ps, out.data(), path);
   PhongCheck c;
   size_t at = 0;
   for (const Span& s : spans) {
@@ -133,6 +141,14 @@ TEST_CASE("DeviceShader: device_span's pixels, across spans of every length and 
     // n = 2..1000 plus a few 1e-6 of float; about 6e-3 of C over the lobe.
     CHECK(c.worst_rel_epicenter < 6e-4);
     CHECK(c.worst_abs_over_c < 6.5e-3);
+  }
+  if (host::cpu_has_avx512()) {
+    const DeviceCheck c = check_device(r, f, SimdPath::avx2, true);
+    CHECK(c.differ_from_device_span == 0);
+    CHECK(c.worst_rel_epicenter < 6e-4);
+  } else {
+    std::vector<float> out(host::pixel_count(r));
+    CHECK_THROWS_AS(host::DeviceShader(f).shade_avx512(r, out.data()), std::runtime_error);
   }
 }
 
@@ -183,6 +199,11 @@ TEST_CASE("shade_phong: the per-pixel truth within float accuracy", "[shade_span
       CHECK(c.pixels > 10000);
       CHECK(c.worst <= 1.0);
       CHECK(c.worst_abs < 2e-4);
+    }
+    if (host::cpu_has_avx512()) {
+      INFO(name << ", AVX-512");
+      const PhongCheck c = check_phong(scene, spans, SimdPath::avx2, true);
+      CHECK(c.worst <= 1.0);
     }
   }
 }
@@ -258,6 +279,13 @@ TEST_CASE("scene_bench: JSON fields of one small scene", "[shade_spans][scene_be
   for (const char* k : {"setup_mspans_per_s", "core_mspans_per_s_at_fmax", "host_cores_to_feed",
                         "device_setup_ns_per_pixel", "device_shade_ns_per_pixel"})
     CHECK(s.at(k).get<double>() > 0);
+  for (const auto& [isa, m] : s.at("isa_matched").items())
+    for (const char* k : {"device", "phong_sleef", "speedup"}) {
+      INFO(isa << " " << k);
+      CHECK(m.at(k).get<double>() > 0);
+    }
+  CHECK(s.at("isa_matched").contains("avx2") == cpu_has_avx2());
+  CHECK(s.at("isa_matched").contains("avx512") == (cpu_has_avx2() && host::cpu_has_avx512()));
   // Its own sanity figures (the tests above are the real check): device against C cos^n
   // and Phong against the truth.
   CHECK(s.at("max_abs_device_vs_pow_cos").get<double>() < 1e-2);
