@@ -27,12 +27,20 @@ def plot(data, out):
         raise ValueError("no break_even rows in the scene_bench JSON (run without --no-break-even)")
     px = [r["pixels_per_span"] for r in rows]
     fig, ax = plt.subplots(figsize=(8, 5))
-    ax.plot(px, [r["device"] for r in rows], "o-", ms=3, label="device method (setup_batch + cross-span shading)")
-    ax.plot(px, [r["phong_sleef"] for r in rows], "s-", ms=3, label="per-pixel Phong, SLEEF powf8 (constant H)")
+    ax.plot(px, [r["device"] for r in rows], "o-", ms=3, color="tab:blue",
+            label="device method (setup_batch automatic + AVX2 shading)")
+    ax.plot(px, [r["phong_sleef"] for r in rows], "s-", ms=3, color="tab:orange",
+            label="per-pixel Phong, AVX2 + SLEEF powf8 (constant H)")
+    # The same at one instruction set, when measured.
+    for key, style, color, label in (("device_avx2", "--", "tab:blue", "device, AVX2 throughout"),
+                                     ("device_avx512", ":", "tab:blue", "device, AVX-512 throughout"),
+                                     ("phong_sleef_avx512", ":", "tab:orange", "Phong, AVX-512 + SLEEF powf16")):
+        if key in rows[0]:
+            ax.plot(px, [r[key] for r in rows], style, lw=1.2, color=color, label=label)
     be = break_even_pixels(data)
     if be is not None:
         ax.axvline(be, color="grey", ls="--", lw=1)
-        ax.text(be, ax.get_ylim()[1] * 0.7, f" break-even: {be} pixels per span", color="grey", fontsize=9)
+        ax.text(be, ax.get_ylim()[1] * 0.7, f" break-even (solid lines): {be} pixels per span", color="grey", fontsize=9)
     for s in data.get("scenes", []):  # where the scenes sit on the length axis (those inside it)
         if s["mean_span"] <= px[-1]:
             ax.axvline(s["mean_span"], color="tab:green", ls=":", lw=0.8)

@@ -49,6 +49,7 @@
 #include <map>
 #include <numeric>
 #include <string>
+#include <tuple>
 #include <utility>
 #include <vector>
 
@@ -247,9 +248,18 @@ json break_even(int max_len, size_t count, int reps, double min_time) {
     std::vector<Method> ms;
     ms.push_back({"device", [&] { host::setup_batch(batch, f, regs); shader.shade(regs, a.data()); }, np});
     ms.push_back({"phong_sleef", [&] { host::shade_phong(ps, b.data(), SimdPath::automatic); }, np});
+    // At one instruction set (see bench_scene).
+    const bool avx2 = cpu_has_avx2(), avx512 = avx2 && host::cpu_has_avx512();
+    if (avx2)
+      ms.push_back({"device_avx2", [&] { host::setup_batch(batch, f, regs, SimdPath::avx2); shader.shade(regs, a.data(), SimdPath::avx2); }, np});
+    if (avx512) {
+      ms.push_back({"device_avx512", [&] { host::setup_batch(batch, f, regs); shader.shade_avx512(regs, a.data()); }, np});
+      ms.push_back({"phong_sleef_avx512", [&] { host::shade_phong_avx512(ps, b.data()); }, np});
+    }
     time_methods(ms, reps, min_time);
-    rows.push_back({{"l", l}, {"pixels_per_span", l + 1}, {"spans", count}, {"device", ms[0].median()},
-                    {"phong_sleef", ms[1].median()}});
+    json row = {{"l", l}, {"pixels_per_span", l + 1}, {"spans", count}};
+    for (const Method& m : ms) row[m.name] = m.median();
+    rows.push_back(row);
   }
   return rows;
 }
@@ -302,11 +312,22 @@ int main(int argc, char** argv) {
     out["break_even_l"] = nullptr;
     if (!no_break_even) {
       out["break_even"] = break_even(max_len, static_cast<size_t>(be_spans), reps, min_time);
-      for (const json& r : out["break_even"])
-        if (r["device"].get<double>() <= r["phong_sleef"].get<double>()) {
-          out["break_even_l"] = r["l"];
-          break;
-        }
+      // The first l where the device is at or below Phong: as defined (device, phong_sleef)
+      // and at one instruction set.
+      json lens = json::object();
+      for (const auto& [key, dev, phong] : {std::tuple{"default", "device", "phong_sleef"},
+                                            std::tuple{"avx2", "device_avx2", "phong_sleef"},
+                                            std::tuple{"avx512", "device_avx512", "phong_sleef_avx512"}}) {
+        if (!out["break_even"][0].contains(dev)) continue;
+        lens[key] = nullptr;
+        for (const json& r : out["break_even"])
+          if (r[dev].get<double>() <= r[phong].get<double>()) {
+            lens[key] = r["l"];
+            break;
+          }
+      }
+      out["break_even_l_isa"] = lens;
+      out["break_even_l"] = lens["default"];
       std::printf("break-even (synthetic spans, constant H): ");
       if (out["break_even_l"].is_null())
         std::printf("device slower than phong_sleef for every l = 0..%d\n", max_len);
