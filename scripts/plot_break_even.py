@@ -40,18 +40,20 @@ def plot(data, out):
     be = break_even_pixels(data)
     if be is not None:
         ax.axvline(be, color="grey", ls="--", lw=1)
-        ax.text(be, ax.get_ylim()[1] * 0.7, f" break-even (solid lines): {be} pixels per span", color="grey", fontsize=9)
+        ax.text(be, 0.6, f" break-even (solid lines): {be} pixels per span", color="grey", fontsize=9,
+                transform=ax.get_xaxis_transform(), va="top")
     for s in data.get("scenes", []):  # where the scenes sit on the length axis (those inside it)
         if s["mean_span"] <= px[-1]:
             ax.axvline(s["mean_span"], color="tab:green", ls=":", lw=0.8)
-            ax.text(s["mean_span"], ax.get_ylim()[0] * 1.1, " " + s["scene"], rotation=90, fontsize=7, color="tab:green")
+            ax.text(s["mean_span"], 0.02, " " + s["scene"], rotation=90, fontsize=7, color="tab:green",
+                    transform=ax.get_xaxis_transform(), va="bottom")
     ax.set_xscale("log", base=2)
     ax.set_yscale("log")
     ax.set_xlabel("pixels per span (l + 1), log scale; dotted: mean span of the scenes in this range")
     ax.set_ylabel("ns per pixel (this run)")
     ax.set_title("Device method with its setup against per-pixel Phong")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=7.5, loc="upper right")
     fig.tight_layout()
     fig.savefig(out, dpi=110)
     plt.close(fig)
