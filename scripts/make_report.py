@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: Apache-2.0
-"""Speed-against-error report (SPEC section 8): `make report`.
+"""Speed-against-error report (docs/speed_error.md): `make report`.
 
 Runs this build's measurement programs and writes OUT/report.md with PNG plots beside it.
 Every figure in the text is taken from the outputs of this run:
@@ -8,8 +8,8 @@ Every figure in the text is taken from the outputs of this run:
   BUILD/bin/scene_bench       the speed per scene, setup included (docs/system.md): every span of
                               every scenes/*.json by the device method and its competitors, the
                               break-even span length, the host cores it takes to feed the core
-  BUILD/bin/report_data       errors (SPEC section 3), albedo, device error of RTL
-                              configurations (golden model), SPEC section 4 hard cases
+  BUILD/bin/report_data       errors (docs/metrics.md), albedo, device error of RTL
+                              configurations (golden model), the hard cases of docs/scanline_setup.md
   yosys                       ice40 cell counts per RTL build configuration (committed ROMs)
   BUILD/bin/sim_regression    Verilator regression throughput (reduced random count)
   scripts/fpga.sh             out-of-context place and route (nextpnr-ice40, HX8K and UP5K)
@@ -357,7 +357,7 @@ class Report:
             ax.set_ylabel(f"worst over n = 2..1000: {title}")
             ax.set_title(title)
             ax.grid(True, which="both", alpha=0.3)
-        fig.suptitle("Speed against error (SPEC section 8)")
+        fig.suptitle("Speed against error (docs/speed_error.md)")
         fig.tight_layout()
         fig.savefig(os.path.join(self.out, "plane.png"), dpi=110)
         plt.close(fig)
@@ -542,7 +542,7 @@ class Report:
           "loop, as once per material; the LUT rebuild itself costs "
           + ", ".join(f"{speed['lut256_build'][n] * 256 / 1000:.2f} us (n = {n})" for n in BENCH_NS
                       if n in speed.get("lut256_build", {})) + ".\n")
-        w("Errors are the SPEC section 3 metrics, evaluated with `shape_error` (dense sampling plus golden-section "
+        w("Errors are the metrics of docs/metrics.md, evaluated with `shape_error` (dense sampling plus golden-section "
           f"refinement) for every n = 1, {1 + data.get('n_step', 1)}, ..., 1000 (step {data.get('n_step', 1)}); the device rows use the golden model over "
           "2048-pixel scanlines per n (section 4 below). At n = 1 the epicenter reaches pi/2 where cos^n = 0, so the "
           "relative error there is unbounded for every shape that does not vanish at pi/2 (marked 'unbounded').\n")
@@ -584,7 +584,7 @@ class Report:
         else:
             w(f"**Fastest per-pixel evaluator:** no evaluator other than std::pow stays within {100 * TOLERANCE:g} % epicenter "
               "error for all n in this run.\n")
-        # --- issue 9: the device method as a software renderer would call it, against what it would otherwise use
+        # --- the device method as a software renderer would call it, against what it would otherwise use
         ds, ps, pc = speed.get("device_simd", {}), speed.get("phong_sleef", {}), speed.get("pow_cos", {})
         common = [n for n in BENCH_NS if n in ds and n in ps and n in pc]
         if common:
@@ -648,7 +648,7 @@ class Report:
 
         # --- albedo
         w("## 3. Albedo against n\n")
-        w("Hemispherical albedo with the light at the normal, both conventions of SPEC section 3 (phong: angle = theta; "
+        w("Hemispherical albedo with the light at the normal, both conventions of docs/metrics.md (phong: angle = theta; "
           "blinn: angle = theta/2), for Blinn-Phong with (n+8)/(8 pi), lyon-16 with the same factor, f16 = (n+6)/24.55 "
           "lyon-16, and kutlog (k = 2, Q = 0.3 and Q = 0.7, one in each range of the paper's fits) with the exact "
           "(integrated) coef and with the paper's fits, n = k+1..1000. Energy-correct means <= 1 (black line).\n")
@@ -827,7 +827,7 @@ class Report:
             w("No simulation measurement in this run (see the list at the top).\n")
 
         # --- hard cases
-        w("## 6. Numerical hard cases of SPEC section 4\n")
+        w("## 6. Numerical hard cases of the scanline setup (docs/scanline_setup.md)\n")
         w("Each through `scanline_setup`, then the golden model (minimax ROM) on the quantized registers; 'device err' is "
           "the largest |device - C cos^n(psi_i)| over the line.\n")
         w("| case | n | l | status | A | gamma | C | psi0 | dpsi | finite | device peak | device err | note |")

@@ -2,6 +2,7 @@
 // The fast evaluators against independent references: std::pow / cos in long double,
 // closed forms worked by hand, and the documented error bounds of evaluators.hpp.
 #include "device_model.hpp"
+#include "device_error.hpp"
 #include "evaluators.hpp"
 #include "rom_image.hpp"
 
@@ -143,7 +144,7 @@ TEST_CASE("cos^k(a x): odd k, prototype, zero past a x = pi/2", "[evaluators]") 
 }
 
 TEST_CASE("patent float evaluators stay within their measured epicenter tolerance", "[evaluators]") {
-  // Documented tolerances (report, SPEC section 3): maclaurin <= 1.1 % (the patent claims
+  // Documented tolerances (report, docs/metrics.md): maclaurin <= 1.1 % (the patent claims
   // 1 %; n = 3 measures 1.09 %), minimax <= 0.2 %.
   for (int n : {3, 5, 7, 50, 300, 1000}) {
     const CoskEval mac = patent_eval(n, CoefSpec{CoefPolicy::maclaurin});

@@ -47,7 +47,7 @@ TEST_CASE("report_data: hard cases are all present and finite", "[report_data]")
   const nlohmann::json j = nlohmann::json::parse(is);
   std::filesystem::remove(out);
   const auto& cases = j.at("hardcases");
-  // Every hard case of SPEC section 4 / docs/scanline_setup.md, by name (20 entries).
+  // Every hard case of docs/scanline_setup.md, by name (20 entries).
   std::set<std::string> names;
   for (const auto& c : cases) names.insert(c.at("case").get<std::string>());
   CHECK(names.size() == cases.size());

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The span evaluators of model/reference/span_shade.hpp (issue 9) and `specular shade`, against
+// The span evaluators of model/reference/span_shade.hpp and `specular shade`, against
 // independent references: cos^n by std::pow/std::cos in long double, and the geometry of the
 // lerped normal worked out in long double here. No timing assertions.
 #include "span_shade.hpp"
