@@ -294,17 +294,22 @@ int main(int argc, char** argv) {
     std::snprintf(timer, sizeof timer, "CLOCK_THREAD_CPUTIME_ID, median of %d interleaved rounds of >= %g s", reps, min_time);
     out["timer"] = timer;
     out["scenes"] = json::array();
-    std::printf("%-14s %8s %9s %6s | %-29s | %s\n", "scene", "spans", "pixels", "px/sp",
-                "ns/pixel: device sleef scalar pow_cos", "x phong_sleef: device | setup Mspan/s, core Mspan/s, host cores");
     for (const std::string& p : scenes) {
       const json j = bench_scene(p, reps, min_time, fmax);
       const json& t = j["ns_per_pixel"];
-      std::printf("%-14s %8zu %9zu %6.2f | %6.2f %6.2f %6.2f %7.2f | %5.2fx | %6.1f %6.1f %5.2f\n",
-                  j["scene"].get<std::string>().c_str(), j["spans"].get<size_t>(), j["pixels"].get<size_t>(),
-                  j["mean_span"].get<double>(), t["device"].get<double>(), t["phong_sleef"].get<double>(),
-                  t["phong_scalar"].get<double>(), t["pow_cos"].get<double>(),
-                  j["speedup_vs_phong_sleef"]["device"].get<double>(), j["setup_mspans_per_s"].get<double>(),
-                  j["core_mspans_per_s_at_fmax"].get<double>(), j["host_cores_to_feed"].get<double>());
+      const json& r = j["speedup_vs_phong_sleef"];
+      std::printf("%s: %zu spans, %zu pixels, %.2f pixels per span\n", j["scene"].get<std::string>().c_str(),
+                  j["spans"].get<size_t>(), j["pixels"].get<size_t>(), j["mean_span"].get<double>());
+      for (const char* m : {"device", "phong_sleef", "phong_scalar", "pow_cos"})
+        std::printf("  %-13s %8.3f ns/pixel  %6.2f x phong_sleef\n", m, t[m].get<double>(), r[m].get<double>());
+      for (const auto& [isa, m] : j["isa_matched"].items())
+        std::printf("  %-6s throughout: device %.3f, phong_sleef %.3f ns/pixel: %.2f x\n", isa.c_str(),
+                    m["device"].get<double>(), m["phong_sleef"].get<double>(), m["speedup"].get<double>());
+      std::printf("  setup %.2f ns/span (%.1f M spans/s on one core), shading %.3f ns/pixel; the core at %.2f MHz takes "
+                  "%.1f M spans/s: %.2f host cores to feed it\n",
+                  j["device_setup_ns_per_span"].get<double>(), j["setup_mspans_per_s"].get<double>(),
+                  j["device_shade_ns_per_pixel"].get<double>(), fmax, j["core_mspans_per_s_at_fmax"].get<double>(),
+                  j["host_cores_to_feed"].get<double>());
       std::fflush(stdout);
       out["scenes"].push_back(j);
     }
@@ -328,15 +333,20 @@ int main(int argc, char** argv) {
       }
       out["break_even_l_isa"] = lens;
       out["break_even_l"] = lens["default"];
-      std::printf("break-even (synthetic spans, constant H): ");
-      if (out["break_even_l"].is_null())
-        std::printf("device slower than phong_sleef for every l = 0..%d\n", max_len);
-      else
-        std::printf("device at or below phong_sleef from l = %d (%d pixels per span)\n", out["break_even_l"].get<int>(),
-                    out["break_even_l"].get<int>() + 1);
-      for (const json& r : out["break_even"])
-        std::printf("  l = %2d: device %.3f ns/px, phong_sleef %.3f ns/px\n", r["l"].get<int>(),
-                    r["device"].get<double>(), r["phong_sleef"].get<double>());
+      std::printf("break-even (synthetic spans, constant H), the first l where the device is at or below Phong:");
+      for (const auto& [key, v] : out["break_even_l_isa"].items()) {
+        if (v.is_null())
+          std::printf(" %s: none in 0..%d;", key.c_str(), max_len);
+        else
+          std::printf(" %s: l = %d (%d pixels per span);", key.c_str(), v.get<int>(), v.get<int>() + 1);
+      }
+      std::printf("\n");
+      for (const json& r : out["break_even"]) {
+        std::printf("  l = %2d: ns/pixel", r["l"].get<int>());
+        for (const char* m : {"device", "phong_sleef", "device_avx2", "device_avx512", "phong_sleef_avx512"})
+          if (r.contains(m)) std::printf(" %s %.3f", m, r[m].get<double>());
+        std::printf("\n");
+      }
     }
   } catch (const std::exception& e) {
     std::cerr << "scene_bench: error: " << e.what() << "\n";
