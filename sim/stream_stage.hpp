@@ -209,7 +209,7 @@ SceneStreamStats run_scene_stream(StreamHarness<V>& h, const LoadedScene& ls, ui
   uint32_t tag = 0;
   for (const Span& sp : ls.raster.spans) {
     device::Span d;
-    d.reg = span_registers(sp, f, nullptr);
+    d.reg = host::span_registers(sp.setup_in, f);
     d.tag = tag++;
     spans.push_back(d);
   }

@@ -82,6 +82,12 @@ void scalar_one(const SpanBatch& in, size_t i, const device::Format& f, Register
 
 }  // namespace
 
+device::Registers span_registers(const ScanlineInput& in, const device::Format& f, bool* c_saturated) {
+  const device::RegisterLoad load = device::load_registers(scanline_setup(in), in.n, in.l, f);
+  if (c_saturated) *c_saturated = load.c_saturated;
+  return load.reg;
+}
+
 void setup_scalar(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
   check_sizes(in);
   out.resize(in.size());

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Batched scanline setup: many spans at once, straight to the device's register codes.
 //
-// The scalar double `scanline_setup` (model/reference/scanline_setup.hpp) is the reference
+// The scalar double `scanline_setup` (model/setup/scanline_setup.hpp) is the reference
 // and the documentation of the mathematics (docs/scanline_setup.md). This is the same
 // computation reorganized for throughput: structure-of-arrays in, register codes out, no
 // per-span allocation or branch, vectorized over spans (AVX2 when the CPU has it, portable
@@ -62,6 +62,11 @@ struct RegisterBatch {
   device::Registers registers(size_t i) const { return {c[i], dpsi[i], psi0[i], n[i], len[i]}; }
   SetupStatus setup_status(size_t i) const { return static_cast<SetupStatus>(status[i]); }
 };
+
+// One span's registers by the scalar setup, load_registers(scanline_setup(in), in.n, in.l, f):
+// the reference every other path is checked against. `c_saturated` (optional) reports a C
+// that did not fit register 1.
+device::Registers span_registers(const ScanlineInput& in, const device::Format& f, bool* c_saturated = nullptr);
 
 // The reference: scanline_setup + load_registers per span (scalar double).
 void setup_scalar(const SpanBatch& in, const device::Format& f, RegisterBatch& out);

@@ -3,7 +3,7 @@
 // baseline and by setup_batch_avx2.cpp with -mavx2 -mfma. Each includes this file inside its
 // own namespace (SETUP_KERNEL_NS), so the two instantiations never merge at link time.
 //
-// The mathematics is that of scanline_setup (model/reference/scanline_setup.cpp), rearranged
+// The mathematics is that of scanline_setup (model/setup/scanline_setup.cpp), rearranged
 // so that one pass of straight-line double arithmetic serves every ordinary span
 // (docs/scanline_setup.md#batched-setup):
 //   * He is not normalized: the rotated H2 is normalized instead (only its direction counts);

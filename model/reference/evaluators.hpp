@@ -12,7 +12,6 @@
 #pragma once
 
 #include "coefficients.hpp"
-#include "device_model.hpp"
 
 #include <array>
 #include <cstdint>
@@ -84,29 +83,5 @@ CoskEval patent_eval(int n, const CoefSpec& spec = {});
 // The prototype of Abbas, Szirmay-Kalos and Horvath: cos^2(a x), a = sqrt(n/2).
 CoskEval prototype_eval(double n);
 
-// The golden fixed-point model along one scanline: psi_i = i * dpsi (i = 0..l) and the
-// device output I_i / C with C = 1. Used for timing (per-pixel cost of DeviceModel::line)
-// and for the device error sweep.
-struct DeviceLine {
-  device::Registers regs;
-  double dpsi = 0.0;  // exact value of the quantized increment (radians)
-  double c = 1.0;     // exact value of the quantized C
-};
-// The line from psi = 0 to about `end` (radians) with l + 1 pixels, C = 1, exponent n.
-DeviceLine make_device_line(const device::Format& f, int n, double end, int l);
-
-// Device error of one configuration at exponent n, docs/metrics.md metrics measured at the
-// pixels of three scanlines of 2048 pixels (l = 2047): [0, x_e(n)] for the relative
-// epicenter error, [0, min(pi/2, 12/sqrt(n))] and [0, pi/2] for the absolute lobe error.
-// The reference is C cos^n(psi_i) at the exact (quantized) pixel angle, so the figure is
-// the device error alone, not the host's quantization of psi0/dpsi.
-// max_rel_epicenter_lsb is the goal metric of the hardware builds: (|err| - 1 output LSB) /
-// ref over the epicenter, n = 1 over all of [0, pi/2] wherever ref >= 4 output LSBs.
-struct DeviceError {
-  double max_rel_epicenter = 0.0;
-  double max_abs_lobe = 0.0;
-  double max_rel_epicenter_lsb = 0.0;
-};
-DeviceError device_error(const device::DeviceModel& dm, int n);
 
 }  // namespace specular

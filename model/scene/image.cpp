@@ -45,16 +45,9 @@ Evaluator float_model_evaluator() {
   };
 }
 
-device::Registers span_registers(const Span& span, const device::Format& f, bool* c_saturated) {
-  const device::RegisterLoad load =
-      device::load_registers(scanline_setup(span.setup_in), span.setup_in.n, span.length(), f);
-  if (c_saturated) *c_saturated = load.c_saturated;
-  return load.reg;
-}
-
 Evaluator golden_evaluator(const device::DeviceModel& dm) {
   return [&dm](const Span& s, std::span<double> out) {
-    const std::vector<uint32_t> line = dm.line(span_registers(s, dm.format()));
+    const std::vector<uint32_t> line = dm.line(host::span_registers(s.setup_in, dm.format()));
     for (size_t i = 0; i < out.size() && i < line.size(); ++i) out[i] = device::c_value(line[i], dm.format());
   };
 }

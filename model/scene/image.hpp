@@ -11,6 +11,7 @@
 
 #include "device_model.hpp"
 #include "raster.hpp"
+#include "setup_batch.hpp"
 
 #include <array>
 #include <cstdint>
@@ -45,13 +46,7 @@ Evaluator phong_evaluator(const Scene& scene);
 // C cos^n(psi_i), 0 where |psi_i| >= pi/2.
 Evaluator float_model_evaluator();
 
-// Device registers for one span: scanline_setup(span.setup_in) quantized to the device
-// formats (C, psi0, dpsi rounded to nearest; n rounded to the nearest integer, the device
-// takes integers; len = l). `c_saturated` (optional) reports a C that did not fit reg 1.
-// This is exactly what the RTL must be loaded with for the span.
-device::Registers span_registers(const Span& span, const device::Format& f, bool* c_saturated = nullptr);
-
-// Bit-accurate golden model of the device: DeviceModel::line(span_registers(span)),
+// Bit-accurate golden model of the device: DeviceModel::line(host::span_registers(span.setup_in)),
 // converted back to intensities. The RTL evaluator is the same with the Verilator
 // model in place of DeviceModel::line.
 Evaluator golden_evaluator(const device::DeviceModel& dm);

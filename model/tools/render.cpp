@@ -95,7 +95,7 @@ int main(int argc, char** argv) {
     ds = specular::error_stats(dev_err);
     for (const auto& sp : raster.spans) {
       bool sat = false;
-      specular::span_registers(sp, dm->format(), &sat);
+      specular::host::span_registers(sp.setup_in, dm->format(), &sat);
       saturated += sat;
     }
   }

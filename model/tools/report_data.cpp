@@ -16,6 +16,7 @@
 #include "brdf.hpp"
 #include "coefficients.hpp"
 #include "device_model.hpp"
+#include "device_error.hpp"
 #include "evaluators.hpp"
 #include "metrics.hpp"
 #include "rom_image.hpp"

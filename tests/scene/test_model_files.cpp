@@ -435,7 +435,7 @@ void check_raster(const Scene& s) {
     REQUIRE(sp.x_start <= sp.x_end);
     for (int x = sp.x_start; x <= sp.x_end; ++x) ++count[(static_cast<size_t>(sp.light) * s.height + sp.y) * s.width + x];
     bool sat = false;
-    span_registers(sp, f, &sat);
+    host::span_registers(sp.setup_in, f, &sat);
     saturated += sat;
   }
   CHECK(*std::max_element(count.begin(), count.end()) == 1);

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Every repository scene loads and rasterizes into sane spans; scene-specific
 // properties (short spans, long spans, sphere silhouettes) against geometry.
+#include "device_error.hpp"
 #include "evaluators.hpp"
 #include "image.hpp"
 #include "rom_image.hpp"
@@ -195,7 +196,7 @@ TEST_CASE("span registers: the scanline setup rounded to the device formats", "[
     const Span& sp = r.spans[k];
     const ScanlineSetup st = scanline_setup(sp.setup_in);
     if (!(st.C < 1.9)) continue;  // keep clear of saturation here
-    const device::Registers reg = span_registers(sp, f);
+    const device::Registers reg = host::span_registers(sp.setup_in, f);
     // Independent rounding: C has 15 fraction bits, angles 28.
     CHECK(reg.c == static_cast<uint32_t>(std::llround(st.C * 32768.0)));
     CHECK(reg.psi0 == std::llround(st.psi0 * 268435456.0));
@@ -244,7 +245,7 @@ TEST_CASE("no repository scene saturates C", "[scene][repo][device]") {
   double c_max = 0.0;
   for (const Span& sp : r.spans) {
     bool sat = false;
-    span_registers(sp, f, &sat);
+    host::span_registers(sp.setup_in, f, &sat);
     saturated += sat;
     const ScanlineSetup st = scanline_setup(sp.setup_in);
     if (std::isfinite(st.C)) c_max = std::max(c_max, st.C);
