@@ -151,11 +151,19 @@ module specular_cos_k_rom #(
     logic unused_dt_lsbs;
     assign unused_dt_lsbs = ^dt_rnd[CosFracBits-1:0];
 `ifndef SYNTHESIS
-    // Every word read has v <= 1.0 and d <= v, so v - d t cannot wrap below 0.
+    // Every word read has v <= 1.0 and d <= v, so v - d t cannot wrap below 0. No reset
+    // here: checked from the first read on (before it word_q holds its power-up value),
+    // on known words (a bubble's address may be X).
+    logic primed_q = 1'b0;
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        primed_q <= 1'b1;
+      end
+    end
     logic word_known;
     assign word_known = `SPEC_KNOWN(word_q);
-    `SPEC_ASSERT_IF(WordInRange_A, en_i && word_known, v <= (CosDataBits + 1)'(1 << CosDataBits), clk_i, 1'b1)
-    `SPEC_ASSERT_IF(StepBelowValue_A, en_i && word_known, (CosDataBits + 1)'(d) <= v, clk_i, 1'b1)
+    `SPEC_ASSERT_IF(WordInRange_A, en_i && word_known, v <= (CosDataBits + 1)'(1 << CosDataBits), clk_i, primed_q)
+    `SPEC_ASSERT_IF(StepBelowValue_A, en_i && word_known, (CosDataBits + 1)'(d) <= v, clk_i, primed_q)
 `endif
   end else begin : gen_direct
     logic [CosDataBits-1:0] w_m;

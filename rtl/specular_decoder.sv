@@ -80,15 +80,28 @@ module specular_decoder #(
 
   assign n_valid_o = |bank_o;
 
-  // Assertions (rtl/specular_assert.svh; no reset here, so checked once the comparisons
-  // hold a known n): le is a thermometer code (BankMaxN increases strictly), so at most one
-  // bank is selected, and exactly one for every n in 1 .. BankMaxN[NumBanks-1].
+  // Assertions (rtl/specular_assert.svh): le is a thermometer code (BankMaxN increases
+  // strictly), so at most one bank is selected, and exactly one for every n in
+  // 1 .. BankMaxN[NumBanks-1]; the outputs are known. There is no reset here: registered,
+  // the checks start after the first enabled edge (before it the comparison registers hold
+  // their power-up values, random under Verilator's +verilator+rand+reset+2).
 `ifndef SYNTHESIS
-  logic le_known;
-  assign le_known = `SPEC_KNOWN({le, nz});
-  `SPEC_ASSERT_IF(LeThermometer_A, le_known, ((le << 1) & ~le) == '0, clk_i, 1'b1)
-  `SPEC_ASSERT_IF(BankOneHot0_A, le_known, $onehot0(bank_o), clk_i, 1'b1)
-  `SPEC_ASSERT_IF(ValidNOneBank_A, le_known && nz && le[NumBanks-1], $onehot(bank_o), clk_i, 1'b1)
+  logic primed;
+  if (Registered) begin : gen_primed_reg
+    logic primed_q = 1'b0;
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        primed_q <= 1'b1;
+      end
+    end
+    assign primed = primed_q;
+  end else begin : gen_primed_comb
+    assign primed = 1'b1;
+  end
+  `SPEC_ASSERT(LeThermometer_A, ((le << 1) & ~le) == '0, clk_i, primed)
+  `SPEC_ASSERT(BankOneHot0_A, $onehot0(bank_o), clk_i, primed)
+  `SPEC_ASSERT_IF(ValidNOneBank_A, nz && le[NumBanks-1], $onehot(bank_o), clk_i, primed)
+  `SPEC_ASSERT_KNOWN(OutKnown_A, {bank_o, n_valid_o}, clk_i, primed)
 `endif
 
 endmodule

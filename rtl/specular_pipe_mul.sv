@@ -103,13 +103,21 @@ module specular_pipe_mul #(
 
   assign p_o = rows[Levels][0];
 
-  // Assertions (rtl/specular_assert.svh; no reset here, so checked on known operands): the
-  // caller's 3a matches a (it computes it a clock earlier, beside a).
+  // Assertions (rtl/specular_assert.svh): the caller's 3a matches a (it registers both,
+  // from the same a, on the same enable). No reset here: checked from the first enabled edge
+  // on (before it the caller's registers hold power-up values) and on known operands (a
+  // bubble's may be X).
   if (Radix4) begin : gen_a3_check
 `ifndef SYNTHESIS
+    logic primed_q = 1'b0;
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        primed_q <= 1'b1;
+      end
+    end
     logic a_known;
     assign a_known = `SPEC_KNOWN({a_i, a3_i});
-    `SPEC_ASSERT_IF(A3IsThreeA_A, en_i && a_known, a3_i == (ABits + 2)'(a_i) * (ABits + 2)'(3), clk_i, 1'b1)
+    `SPEC_ASSERT_IF(A3IsThreeA_A, en_i && a_known, a3_i == (ABits + 2)'(a_i) * (ABits + 2)'(3), clk_i, primed_q)
 `endif
   end
 
