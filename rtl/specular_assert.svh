@@ -26,7 +26,10 @@
 // is (^sig) !== 1'bx, because Icarus 11's $isunknown returns 1 for known values after some
 // $display calls (seen in tests/iverilog). An X antecedent in SPEC_ASSERT_IF is vacuous in
 // both forms.
-// rst_n is an active-low expression; a block without a reset passes 1'b1.
+// rst_n is an active-low expression. A block without a reset passes 1'b1 when its
+// property holds from power-up, or a simulation-only flag with an initial value, set at its
+// first enabled edge, when its registers must be loaded first (power-up contents are random
+// under Verilator's +verilator+rand+reset+2).
 //
 //   `SPEC_ASSERT(name, prop, clk, rst_n)           prop holds at every clk edge out of reset
 //   `SPEC_ASSERT_IF(name, ante, cons, clk, rst_n)  ante |-> cons (same cycle)
