@@ -106,7 +106,7 @@ bool cpu_has_avx512() {
 }
 
 size_t setup_batch_baseline(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
-  return run_blocks(in, f, out, baseline_kernels::setup_block);
+  return run_blocks(in, f, out, baseline_kernels::setup_block, baseline_kernels::flat_block);
 }
 
 }  // namespace detail

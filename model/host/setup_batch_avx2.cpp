@@ -10,7 +10,7 @@
 namespace specular::host::detail {
 
 size_t setup_batch_avx2(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
-  return run_blocks(in, f, out, avx2_kernels::setup_block);
+  return run_blocks(in, f, out, avx2_kernels::setup_block, avx2_kernels::flat_block);
 }
 
 }  // namespace specular::host::detail

@@ -10,7 +10,7 @@
 namespace specular::host::detail {
 
 size_t setup_batch_avx512(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
-  return run_blocks(in, f, out, avx512_kernels::setup_block);
+  return run_blocks(in, f, out, avx512_kernels::setup_block, avx512_kernels::flat_block);
 }
 
 }  // namespace specular::host::detail

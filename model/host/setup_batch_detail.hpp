@@ -53,52 +53,116 @@ inline constexpr int kBlock = 256;
 
 namespace {
 
-// Runs `kernel` over the batch in blocks of kBlock spans (block-local arrays stay in L1).
-// Returns how many spans it left to the scalar setup (status kSpecialStatus).
-template <class Kernel>
-size_t run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& out, Kernel kernel) {
-  const KernelFormat kf = kernel_format(f);
-  alignas(64) double c[kBlock], psi0[kBlock], dpsi[kBlock], n[kBlock], flags[kBlock], special[kBlock];
-  const BlockOut o{c, psi0, dpsi, n, flags, special};
-  const bool narrow = f.angle_bits <= 32;  // codes fit int32: a vector conversion
-  size_t specials = 0;
-  for (size_t b = 0; b < in.size(); b += kBlock) {
-    const int count = static_cast<int>(std::min<size_t>(kBlock, in.size() - b));
-    kernel(&in.n1x[b], &in.n1y[b], &in.n1z[b], &in.n2x[b], &in.n2y[b], &in.n2z[b], &in.h1x[b], &in.h1y[b],
-           &in.h1z[b], &in.hex[b], &in.hey[b], &in.hez[b], &in.n[b], &in.scale[b], &in.l[b], count, kf, o);
-    uint32_t* __restrict oc = &out.c[b];
-    int64_t* __restrict op = &out.psi0[b];
-    int64_t* __restrict od = &out.dpsi[b];
-    uint32_t* __restrict on = &out.n[b];
-    uint32_t* __restrict ol = &out.len[b];
-    uint8_t* __restrict os = &out.status[b];
-    uint8_t* __restrict of = &out.flags[b];
-    const int32_t* __restrict il = &in.l[b];
+// Writes `count` block results to the register batch: entry j goes to span base + idx[j], or
+// to base + j when idx is null (then the loops vectorize). Returns how many are special.
+inline int store_block(const SpanBatch& in, RegisterBatch& out, size_t base, const int* idx, int count,
+                       const BlockOut& o, bool narrow) {
+  int specials = 0;
+  if (!idx) {
+    uint32_t* __restrict oc = &out.c[base];
+    int64_t* __restrict op = &out.psi0[base];
+    int64_t* __restrict od = &out.dpsi[base];
+    uint32_t* __restrict on = &out.n[base];
+    uint32_t* __restrict ol = &out.len[base];
+    uint8_t* __restrict os = &out.status[base];
+    uint8_t* __restrict of = &out.flags[base];
+    const int32_t* __restrict il = &in.l[base];
     // The output arrays are distinct vectors (GCC ignores __restrict on locals).
     if (narrow) {
 #pragma GCC ivdep
       for (int i = 0; i < count; ++i) {
-        op[i] = static_cast<int32_t>(psi0[i]);
-        od[i] = static_cast<int32_t>(dpsi[i]);
+        op[i] = static_cast<int32_t>(o.psi0[i]);
+        od[i] = static_cast<int32_t>(o.dpsi[i]);
       }
     } else {
 #pragma GCC ivdep
       for (int i = 0; i < count; ++i) {
-        op[i] = static_cast<int64_t>(psi0[i]);
-        od[i] = static_cast<int64_t>(dpsi[i]);
+        op[i] = static_cast<int64_t>(o.psi0[i]);
+        od[i] = static_cast<int64_t>(o.dpsi[i]);
       }
     }
 #pragma GCC ivdep
     for (int i = 0; i < count; ++i) {
-      oc[i] = static_cast<uint32_t>(static_cast<int32_t>(c[i]));
-      on[i] = static_cast<uint32_t>(static_cast<int32_t>(n[i]));
+      oc[i] = static_cast<uint32_t>(static_cast<int32_t>(o.c[i]));
+      on[i] = static_cast<uint32_t>(static_cast<int32_t>(o.n[i]));
       ol[i] = static_cast<uint32_t>(il[i]);
-      of[i] = static_cast<uint8_t>(static_cast<int32_t>(flags[i]));
-      os[i] = special[i] != 0.0 ? kSpecialStatus : static_cast<uint8_t>(SetupStatus::ok);
+      of[i] = static_cast<uint8_t>(static_cast<int32_t>(o.flags[i]));
+      os[i] = o.special[i] != 0.0 ? kSpecialStatus : static_cast<uint8_t>(SetupStatus::ok);
     }
-    int block_specials = 0;
-    for (int i = 0; i < count; ++i) block_specials += special[i] != 0.0 ? 1 : 0;
-    specials += static_cast<size_t>(block_specials);
+    for (int i = 0; i < count; ++i) specials += o.special[i] != 0.0 ? 1 : 0;
+    return specials;
+  }
+  for (int j = 0; j < count; ++j) {
+    const size_t i = base + static_cast<size_t>(idx[j]);
+    out.psi0[i] = static_cast<int64_t>(o.psi0[j]);
+    out.dpsi[i] = static_cast<int64_t>(o.dpsi[j]);
+    out.c[i] = static_cast<uint32_t>(static_cast<int32_t>(o.c[j]));
+    out.n[i] = static_cast<uint32_t>(static_cast<int32_t>(o.n[j]));
+    out.len[i] = static_cast<uint32_t>(in.l[i]);
+    out.flags[i] = static_cast<uint8_t>(static_cast<int32_t>(o.flags[j]));
+    out.status[i] = o.special[j] != 0.0 ? kSpecialStatus : static_cast<uint8_t>(SetupStatus::ok);
+    specials += o.special[j] != 0.0 ? 1 : 0;
+  }
+  return specials;
+}
+
+// Runs the kernels over the batch in blocks of kBlock spans (block-local arrays stay in L1).
+// A block where at least one span in kFlatShare is flat (N1 = N2 and H1 = He exactly) is
+// split: its flat spans go to `flat`, the rest, gathered, to `kernel`; otherwise `kernel`
+// takes the whole block in place. Returns how many spans were left to the scalar setup
+// (status kSpecialStatus).
+template <class Kernel, class Flat>
+size_t run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& out, Kernel kernel, Flat flat) {
+  constexpr int kFlatShare = 8;  // below 1/8 the gathering costs more than the flat path saves
+  const KernelFormat kf = kernel_format(f);
+  alignas(64) double c[kBlock], psi0[kBlock], dpsi[kBlock], n[kBlock], flags[kBlock], special[kBlock];
+  const BlockOut o{c, psi0, dpsi, n, flags, special};
+  // Gathered inputs of a split block.
+  alignas(64) double g[14][kBlock];
+  alignas(64) int32_t gl[kBlock];
+  alignas(64) int is_flat[kBlock], idx_flat[kBlock], idx_other[kBlock];
+  const bool narrow = f.angle_bits <= 32;  // codes fit int32: a vector conversion
+  size_t specials = 0;
+  for (size_t b = 0; b < in.size(); b += kBlock) {
+    const int count = static_cast<int>(std::min<size_t>(kBlock, in.size() - b));
+    const double *n1x = &in.n1x[b], *n1y = &in.n1y[b], *n1z = &in.n1z[b], *n2x = &in.n2x[b], *n2y = &in.n2y[b],
+                 *n2z = &in.n2z[b], *h1x = &in.h1x[b], *h1y = &in.h1y[b], *h1z = &in.h1z[b], *hex = &in.hex[b],
+                 *hey = &in.hey[b], *hez = &in.hez[b], *nexp = &in.n[b], *scale = &in.scale[b];
+    const int32_t* len = &in.l[b];
+    int flats = 0;
+    for (int i = 0; i < count; ++i) {
+      is_flat[i] = (n1x[i] == n2x[i]) & (n1y[i] == n2y[i]) & (n1z[i] == n2z[i]) & (h1x[i] == hex[i]) &
+                   (h1y[i] == hey[i]) & (h1z[i] == hez[i]);
+      flats += is_flat[i];
+    }
+    if (flats * kFlatShare < count) {
+      kernel(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, count, kf, o);
+      specials += static_cast<size_t>(store_block(in, out, b, nullptr, count, o, narrow));
+      continue;
+    }
+    int nf = 0, ng = 0;  // branch-free partition of the block's indices
+    for (int i = 0; i < count; ++i) {
+      idx_flat[nf] = i;
+      idx_other[ng] = i;
+      nf += is_flat[i];
+      ng += 1 - is_flat[i];
+    }
+    for (int j = 0; j < nf; ++j) {
+      const int i = idx_flat[j];
+      g[0][j] = n1x[i], g[1][j] = n1y[i], g[2][j] = n1z[i], g[3][j] = h1x[i], g[4][j] = h1y[i], g[5][j] = h1z[i];
+      g[6][j] = nexp[i], g[7][j] = scale[i], gl[j] = len[i];
+    }
+    flat(g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7], gl, nf, kf, o);
+    specials += static_cast<size_t>(store_block(in, out, b, idx_flat, nf, o, narrow));
+    if (ng == 0) continue;
+    for (int j = 0; j < ng; ++j) {
+      const int i = idx_other[j];
+      g[0][j] = n1x[i], g[1][j] = n1y[i], g[2][j] = n1z[i], g[3][j] = n2x[i], g[4][j] = n2y[i], g[5][j] = n2z[i];
+      g[6][j] = h1x[i], g[7][j] = h1y[i], g[8][j] = h1z[i], g[9][j] = hex[i], g[10][j] = hey[i], g[11][j] = hez[i];
+      g[12][j] = nexp[i], g[13][j] = scale[i], gl[j] = len[i];
+    }
+    kernel(g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7], g[8], g[9], g[10], g[11], g[12], g[13], gl, ng, kf, o);
+    specials += static_cast<size_t>(store_block(in, out, b, idx_other, ng, o, narrow));
   }
   return specials;
 }

@@ -36,6 +36,10 @@ constexpr double kRoundMagic = 6755399441055744.0;
 // of degree I .. I+M-1 are (low half) + u^(M/2) (high half), recursively. The dependency
 // chain is log2(N) multiply-adds deep instead of N (Horner), and chain length is what bounds
 // this kernel: its loop body is one long chain.
+// Vectors within this of unit squared length are normalized by 1/|v| = 1 - e/2 + 3e^2/8
+// (e = |v|^2 - 1; the next term, 5e^3/16, is below 3e-19).
+constexpr double kNearUnitBound = 0x1p-20;
+
 template <int N, int I, int M>
 inline double estrin_part(const double (&q)[N], const double* pw) {
   if constexpr (I >= N) {
@@ -152,7 +156,6 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
   // |e| <= 2^-20) replaces three square roots and a division. kNearUnit = true assumes that
   // and returns true when some span of the block is farther from unit length; the block is
   // then done again with kNearUnit = false.
-  constexpr double kNearUnitBound = 0x1p-20;
   auto stage1 = [&]<bool kNearUnit>() -> bool {
   int64_t far = 0;
   // Every array is distinct (the caller's block buffers, the batch's inputs, the locals).
@@ -284,6 +287,60 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
     od[i] = take ? dq : 0.0;
     on[i] = take ? round_away(nn) : 0.0;
     ofl[i] = take ? c_flag + a_flag : 0.0;
+    osp[i] = 1.0 - ordinary;
+  }
+}
+
+// Flat spans: N1 = N2 and H1 = He exactly (every one-pixel span of a rasterizer, and flat
+// shading under a light and a viewer at infinity). The scalar setup's rotation is then the
+// identity and its chord below the noise floor, so gamma = 0, N1.u = 0, A = |cos t1| and
+// lambda = atan2(0, cos t1): C = scale |cos t1|^n, psi0 = 0 (or -pi where cos t1 < 0),
+// dpsi = 0, found here from one dot product. Vectors farther than kNearUnitBound from unit
+// length, and everything setup_block would leave to the scalar setup, are special here too.
+inline void flat_block(const double* __restrict n1x, const double* __restrict n1y, const double* __restrict n1z,
+                       const double* __restrict h1x, const double* __restrict h1y, const double* __restrict h1z,
+                       const double* __restrict nexp, const double* __restrict scale, const int32_t* __restrict len,
+                       int count, const KernelFormat& kf, const BlockOut& o) {
+  constexpr double kPi = 3.14159265358979323846;
+  const double c_scale = kf.c_scale, c_top = kf.c_top, max_len = kf.max_len;
+  // psi0 = -pi where cos t1 < 0, clamped like every angle code (a narrow format saturates).
+  const double pi_code = round_away(-kPi * kf.angle_scale);
+  const double psi_neg = pi_code < kf.angle_lo ? kf.angle_lo : pi_code;
+  const double psi_neg_flag = pi_code < kf.angle_lo ? 2.0 : 0.0;
+  double* __restrict oc = o.c;
+  double* __restrict op = o.psi0;
+  double* __restrict od = o.dpsi;
+  double* __restrict on = o.n;
+  double* __restrict ofl = o.flags;
+  double* __restrict osp = o.special;
+#pragma GCC ivdep
+  for (int i = 0; i < count; ++i) {
+    const double nn = nexp[i], sc = scale[i], l = static_cast<double>(len[i]);
+    const double d_n1 = n1x[i] * n1x[i] + n1y[i] * n1y[i] + n1z[i] * n1z[i];
+    const double d_h1 = h1x[i] * h1x[i] + h1y[i] * h1y[i] + h1z[i] * h1z[i];
+    const double e1 = d_n1 - 1.0, e3 = d_h1 - 1.0;
+    double ordinary = std::fabs(e1) <= kNearUnitBound ? 1.0 : 0.0;  // NaN: not ordinary
+    ordinary = std::fabs(e3) <= kNearUnitBound ? ordinary : 0.0;
+    ordinary = nn >= 1.0 ? ordinary : 0.0;
+    ordinary = nn <= 1000.0 ? ordinary : 0.0;
+    ordinary = l >= 0.0 ? ordinary : 0.0;
+    ordinary = l <= max_len ? ordinary : 0.0;
+    ordinary = sc >= 0.0 ? ordinary : 0.0;
+    ordinary = sc - sc == 0.0 ? ordinary : 0.0;  // finite
+    const double r1 = 1.0 + e1 * (-0.5 + 0.375 * e1), rh = 1.0 + e3 * (-0.5 + 0.375 * e3);
+    const double cos_t1 = (n1x[i] * h1x[i] + n1y[i] * h1y[i] + n1z[i] * h1z[i]) * (r1 * rh);
+    const double a2 = cos_t1 * cos_t1;
+    const double x = 0.5 * nn * log2_poly(a2 > 0x1p-1000 ? a2 : 0x1p-1000);
+    double cq = round_away(sc * exp2_poly(x > -1000.0 ? x : -1000.0) * c_scale);
+    const double c_flag = cq <= c_top ? 0.0 : 1.0;
+    cq = cq <= c_top ? cq : c_top;
+    const bool take = ordinary > 0.0;
+    oc[i] = take ? cq : 0.0;
+    const bool negative = take & (cos_t1 < 0.0);
+    op[i] = negative ? psi_neg : 0.0;
+    od[i] = 0.0;
+    on[i] = take ? round_away(nn) : 0.0;
+    ofl[i] = take ? c_flag + (negative ? psi_neg_flag : 0.0) : 0.0;
     osp[i] = 1.0 - ordinary;
   }
 }

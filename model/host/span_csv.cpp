@@ -2,7 +2,10 @@
 // Span and register CSV (model/host/span_csv.hpp).
 #include "span_csv.hpp"
 
+#include <fmt/format.h>
+
 #include <charconv>
+#include <iterator>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -89,14 +92,11 @@ SpanBatch parse_span_csv(std::string_view text, const std::string& source) {
 
 std::string register_csv(const RegisterBatch& r, const device::Format& f) {
   std::string out = "status,c_code,psi0_code,dpsi_code,n,l,C,psi0,dpsi\n";
-  for (size_t i = 0; i < r.size(); ++i) {
-    out += to_string(r.setup_status(i));
-    for (const int64_t code : {static_cast<int64_t>(r.c[i]), r.psi0[i], r.dpsi[i], static_cast<int64_t>(r.n[i]),
-                               static_cast<int64_t>(r.len[i])})
-      out += "," + std::to_string(code);
-    out += "," + shortest(device::c_value(r.c[i], f)) + "," + shortest(device::angle_value(r.psi0[i], f)) + "," +
-           shortest(device::angle_value(r.dpsi[i], f)) + "\n";
-  }
+  auto it = std::back_inserter(out);
+  for (size_t i = 0; i < r.size(); ++i)
+    fmt::format_to(it, "{},{},{},{},{},{},{},{},{}\n", to_string(r.setup_status(i)), r.c[i], r.psi0[i], r.dpsi[i], r.n[i],
+                   r.len[i], shortest(device::c_value(r.c[i], f)), shortest(device::angle_value(r.psi0[i], f)),
+                   shortest(device::angle_value(r.dpsi[i], f)));
   return out;
 }
 
