@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 #
-# RTL coverage (issue 10 item 4): builds sim_regression with every model verilated with
+# RTL coverage (sim/README.md): builds sim_regression with every model verilated with
 # --coverage (line/branch, toggle, user) in its own build directory, runs a reduced but
 # complete regression (every configuration: the deterministic sweep, random lines, the
 # scenes; the stream: random spans and the scenes), merges the per-model .dat files and writes

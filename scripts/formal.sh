@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 #
-# Formal proof of specular_stream's handshakes (issue 7; properties and reduced widths in
+# Formal proof of specular_stream's handshakes (properties and reduced widths in
 # rtl/formal/specular_stream_fv.sv, overview in rtl/formal/README.md). Run by ctest as
 # rtl_formal_stream and rtl_formal_stream_mutant.
 #

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 #
-# Out-of-context place and route of the core on iCE40 FPGAs (issue 8 item 7): Yosys
+# Out-of-context place and route of the core on iCE40 FPGAs (rtl/fpga/README.md): Yosys
 # synth_ice40, then nextpnr-ice40, of the harnesses in rtl/fpga/ (registered IO around
 # specular_unit, specular_stream and specular_axil), and a summary of LUTs, FFs, block RAMs, DSPs, Fmax
 # and pixels per second per harness and device. `make fpga` runs it; so does `make report`.

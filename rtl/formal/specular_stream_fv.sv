@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
-// specular_stream_fv: formal property harness of specular_stream's handshakes (issue 7,
-// item 5). Run by scripts/formal.sh (ctest rtl_formal_stream): Yosys read_verilog -formal,
-// Yosys sat -tempinduct: base case from reset plus induction (an unbounded proof).
+// specular_stream_fv: formal property harness of specular_stream's handshakes. Run by
+// scripts/formal.sh (ctest rtl_formal_stream): Yosys read_verilog -formal, Yosys sat
+// -tempinduct: base case from reset plus induction (an unbounded proof).
 // Everything below the instance is under `ifdef FORMAL; this file lives in rtl/formal/ and
 // is not in the filelist rtl/specular.f, so the Verilator and synthesis builds do not read it.
 //
