@@ -335,12 +335,12 @@ inline void flat_block(const double* __restrict n1x, const double* __restrict n1
     const double c_flag = cq <= c_top ? 0.0 : 1.0;
     cq = cq <= c_top ? cq : c_top;
     const bool take = ordinary > 0.0;
+    const double pq = cos_t1 < 0.0 ? psi_neg : 0.0, pflag = cos_t1 < 0.0 ? psi_neg_flag : 0.0;
     oc[i] = take ? cq : 0.0;
-    const bool negative = take & (cos_t1 < 0.0);
-    op[i] = negative ? psi_neg : 0.0;
+    op[i] = take ? pq : 0.0;
     od[i] = 0.0;
     on[i] = take ? round_away(nn) : 0.0;
-    ofl[i] = take ? c_flag + (negative ? psi_neg_flag : 0.0) : 0.0;
+    ofl[i] = take ? c_flag + pflag : 0.0;
     osp[i] = 1.0 - ordinary;
   }
 }
