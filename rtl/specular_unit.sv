@@ -8,7 +8,7 @@
 // with k and a(n) chosen per exponent n so that cos^k(a x) approximates cos^n(x).
 // Bit-exact datapath contract: model/device/device_model.hpp (the golden model follows it too).
 //
-// Interface (SPEC section 6; default widths):
+// Interface (docs/interfaces.md#register-interface-specular_unit; default widths):
 //   clk_i                 clock; everything is synchronous to its rising edge
 //   rst_ni                asynchronous reset, active low (patent input 25): all registers
 //                         0, idle

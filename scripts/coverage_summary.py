@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
-"""Per-file summary of Verilator coverage (make coverage, issue 10 item 4).
+"""Per-file summary of Verilator coverage (make coverage, rtl/README.md).
 
 Reads a Verilator coverage file (SystemC::Coverage-3, e.g. the merge of every model's .dat
 that `verilator_coverage --write` produces) and prints, per rtl/ file, line, branch and

@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// evaluator_bench: the speed axis of SPEC section 8. Every evaluator of model/reference/evaluators.hpp
+// evaluator_bench: the speed axis of docs/speed_error.md. Every evaluator of model/reference/evaluators.hpp
 // and the golden fixed-point device model shade the same scanline of 2048 pixels (l = 2047,
 // the counter maximum) across the highlight lobe, side by side in one run.
 //

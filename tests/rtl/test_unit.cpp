@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Top level specular_unit: the protocol of SPEC section 6 as fixed for the RTL
-// (latency L = specular_unit's Latency, 20 with the default parameters; one pixel per
+// Top level specular_unit: the protocol of docs/interfaces.md as fixed for the RTL
+// (latency L = specular_unit's Latency parameter; one pixel per
 // clock, busy through the last pixel, l + L + 1 clocks per line), zero conditions, writes
 // and starts while busy, asynchronous reset, the RTL parameter defaults against
 // specular::device::Format, the pixels against C cos^k(a psi) in long double within the
@@ -306,7 +306,7 @@ TEST_CASE("specular_unit pixels follow C cos^k(a psi) in pixel order", "[rtl][un
   //   - the table rounding (1/2 LSB of 2^-18) and the weight rounding (1/2 LSB): 2^-18;
   //   - C times all of that, then the output rounding, 1/2 LSB of 2^-15.
   // For k = 16 this is about 3 output LSB; the old direct table's bound was a full step of
-  // pi/2 / 4096 times the slope, and half a ROM 12 step (issue 10) would be S_k h / 2, more
+  // pi/2 / 4096 times the slope, and half a ROM 12 step would be S_k h / 2, more
   // than fifty times this.
   const specular::device::Format f;
   specular::CoefSpec spec;
