@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "checks.hpp"
 
 #include "metrics.hpp"
@@ -17,13 +18,29 @@ void note(PolicyStats& st, const std::string& what) {
   if (st.failures.size() < 12) st.failures.push_back(what);
 }
 
-void keep_max(Extreme& e, double v, const Scanline& sl, int i, double psi, double c) {
-  if (v > e.value) e = {v, sl.reg.n, psi, c, sl.reg.len, i, sl.kind};
+void keep_max(Extreme& e, double v, const device::Registers& r, const std::string& kind, int i, double psi, double c) {
+  if (v > e.value) e = {v, r.n, psi, c, r.len, i, kind};
 }
 
 nlohmann::json ext_json(const Extreme& e) {
   return {{"value", e.value}, {"n", e.n}, {"psi", e.psi}, {"C", e.c}, {"l", e.len}, {"pixel", e.pixel},
           {"kind", e.kind}};
+}
+
+// x^n by squaring: n is an integer (n <= 1000, k <= 16), so a few multiplications replace
+// std::pow; the result differs from pow's by a few ulp at most, far below one output LSB.
+double ipow(double x, uint32_t n) {
+  double r = 1.0;
+  for (; n; n >>= 1, x *= x)
+    if (n & 1) r *= x;
+  return r;
+}
+
+int64_t sign_extend(int64_t v, int bits) {
+  const uint64_t mask = (1ULL << bits) - 1;
+  uint64_t u = static_cast<uint64_t>(v) & mask;
+  if ((u >> (bits - 1)) & 1U) u |= ~mask;
+  return static_cast<int64_t>(u);
 }
 
 }  // namespace
@@ -95,31 +112,31 @@ Checker::Checker(const device::DeviceModel& model, std::vector<double> a_exact, 
     }
     d2k_.push_back(m2);
   }
-}
-
-void Checker::check_line(const Scanline& sl, const LineRun& run, bool random, PolicyStats& st) const {
-  const auto& f = model_.format();
-  const device::Registers r = model_.latch(sl.reg);
-  const double lsb = std::ldexp(1.0, -f.c_frac);
-  const double c = device::c_value(r.c, f);
-  const int bank = model_.bank_of(r.n);
-  const bool n_ok = bank >= 0;
-  const int k = n_ok ? f.banks[bank] : 0;
-  const double a = n_ok ? a_[r.n] : 0.0;
-  const double xe = n_ok ? epicenter_end(static_cast<double>(r.n)) : 0.0;
+  // The format's constants of references() and compare(), once (ldexp per span is not free).
   // (b) first-order budget of the formats: the ROM 12 position error (direct: half an
   // address step; interpolated: the truncation of the step weight), the rounding of a(n)
   // to coef_frac bits times |psi|, the truncation of |psi| to psi_mul_frac bits times a
   // (and the one-code one's complement), all through the steepest slope of cos^k; the
   // interpolation error h^2/8 max|(cos^k)''| (interpolated only); one ROM 12 LSB (direct:
   // the saturation of cos^0; interpolated: the rounding of v and of d t); half an output LSB.
+  const auto& f = model_.format();
   const double h = kHalfPi * std::ldexp(1.0, -f.cos_addr_bits);
-  const double half_step = f.cos_interp ? h * std::ldexp(1.0, -f.cos_frac_bits) : h / 2;
-  const double interp = f.cos_interp ? h * h / 8.0 : 0.0;
-  const double coef_err = kHalfPi * std::ldexp(1.0, -(f.coef_frac + 1));
-  const double trunc = std::ldexp(1.0, -f.psi_mul_frac) + std::ldexp(1.0, -f.angle_frac);
-  const double n1_floor = budget_.n1_min_ref_lsb * lsb;  // n = 1 checked where ref >= this (0: not)
+  k_.lsb = std::ldexp(1.0, -f.c_frac);
+  k_.angle_lsb = std::ldexp(1.0, -f.angle_frac);
+  k_.half_step = f.cos_interp ? h * std::ldexp(1.0, -f.cos_frac_bits) : h / 2;
+  k_.interp = f.cos_interp ? h * h / 8.0 : 0.0;
+  k_.coef_err = kHalfPi * std::ldexp(1.0, -(f.coef_frac + 1));
+  k_.trunc = std::ldexp(1.0, -f.psi_mul_frac) + std::ldexp(1.0, -f.angle_frac);
+  k_.rom_lsb = std::ldexp(1.0, -f.cos_data_bits);
+  for (uint32_t n = 0; n < static_cast<uint32_t>(f.coef_rom_depth()); ++n) {
+    bank_.push_back(model_.bank_of(n));
+    xe_.push_back(bank_.back() >= 0 ? epicenter_end(static_cast<double>(n)) : 0.0);
+  }
+}
 
+void Checker::check_line(const Scanline& sl, const LineRun& run, bool random, PolicyStats& st) const {
+  const auto& f = model_.format();
+  const device::Registers r = model_.latch(sl.reg);
   ++st.lines;
   (random ? st.rnd_lines : st.det_lines) += 1;
   if (sl.c_saturated) ++st.c_saturated_lines;
@@ -136,38 +153,66 @@ void Checker::check_line(const Scanline& sl, const LineRun& run, bool random, Po
   }
 
   const size_t npix = std::min<size_t>(run.pixels.size(), static_cast<size_t>(r.len) + 1);
-  st.pixels += npix;
   (random ? st.rnd_pixels : st.det_pixels) += npix;
 
   // Pass 1, the golden model alone (timed separately from the references).
   using Clock = std::chrono::steady_clock;
   const auto t_gold = Clock::now();
   golden_.resize(npix);
-  for (size_t i = 0; i < npix; ++i) golden_[i] = model_.trace(r, static_cast<int>(i));
+  for (size_t i = 0; i < npix; ++i) golden_[i] = model_.trace(r, static_cast<int>(i)).intensity;
   const auto t_ref = Clock::now();
   st.golden_seconds += std::chrono::duration<double>(t_ref - t_gold).count();
   // Pass 2, the double references: (b) C cos^k(a psi) and (c) C cos^n(psi).
   psi_.resize(npix);
   ref_b_.resize(npix);
   ref_c_.resize(npix);
-  for (size_t i = 0; i < npix; ++i) {
-    const double psi = device::angle_value(golden_[i].psi, f);
-    const double apsi = std::fabs(psi);
-    psi_[i] = psi;
-    ref_b_[i] = n_ok && a * apsi < kHalfPi && apsi < kHalfPi ? c * std::pow(std::cos(a * apsi), k) : 0.0;
-    ref_c_[i] = n_ok && apsi < kHalfPi ? c * std::pow(std::cos(psi), static_cast<double>(r.n)) : 0.0;
-  }
+  references(r, npix, psi_.data(), ref_b_.data(), ref_c_.data());
   st.reference_seconds += std::chrono::duration<double>(Clock::now() - t_ref).count();
-
   // Pass 3, the comparisons.
+  compare(r, sl.kind, npix, run.pixels.data(), golden_.data(), psi_.data(), ref_b_.data(), ref_c_.data(), st);
+}
+
+void Checker::references(const device::Registers& r, size_t npix, double* psi_out, double* ref_b,
+                         double* ref_c) const {
+  const auto& f = model_.format();
+  const double c = r.c * k_.lsb;  // exact, as device::c_value
+  const double angle_lsb = k_.angle_lsb;
+  const int bank = bank_[r.n];
+  const bool n_ok = bank >= 0;
+  const uint32_t k = n_ok ? static_cast<uint32_t>(f.banks[bank]) : 0;
+  const double a = n_ok ? a_[r.n] : 0.0;
   for (size_t i = 0; i < npix; ++i) {
-    const device::PixelTrace& t = golden_[i];
-    const uint32_t got = run.pixels[i];
+    // Register 8 as the device (and DeviceModel::trace) holds it: psi0 + i dpsi at acc_bits.
+    const int64_t code = sign_extend(r.psi0 + static_cast<int64_t>(i) * r.dpsi, f.acc_bits);
+    const double psi = static_cast<double>(code) * angle_lsb;  // exact: a power-of-two scale
+    const double apsi = std::fabs(psi);
+    psi_out[i] = psi;
+    ref_b[i] = n_ok && a * apsi < kHalfPi && apsi < kHalfPi ? c * ipow(std::cos(a * apsi), k) : 0.0;
+    ref_c[i] = n_ok && apsi < kHalfPi ? c * ipow(std::cos(psi), r.n) : 0.0;
+  }
+}
+
+void Checker::compare(const device::Registers& r, const std::string& kind, size_t npix, const uint32_t* got_px,
+                      const uint32_t* golden, const double* psi_in, const double* ref_b_in, const double* ref_c_in,
+                      PolicyStats& st) const {
+  const double lsb = k_.lsb;
+  const double c = r.c * lsb;  // exact, as device::c_value
+  const int bank = bank_[r.n];
+  const bool n_ok = bank >= 0;
+  const double a = n_ok ? a_[r.n] : 0.0;
+  const double xe = xe_[r.n];
+  const double half_step = k_.half_step, interp = k_.interp, coef_err = k_.coef_err, trunc = k_.trunc;
+  const double n1_floor = budget_.n1_min_ref_lsb * lsb;  // n = 1 checked where ref >= this (0: not)
+  st.pixels += npix;
+
+  for (size_t i = 0; i < npix; ++i) {
+    const uint32_t got = got_px[i];
     // (a)
-    if (got != t.intensity) {
+    if (got != golden[i]) {
       if (st.mismatches < 12) {
+        const device::PixelTrace t = model_.trace(r, static_cast<int>(i));
         std::ostringstream m;
-        m << st.policy << " mismatch [" << sl.kind << "] n=" << r.n << " l=" << r.len << " C=0x" << std::hex << r.c
+        m << st.policy << " mismatch [" << kind << "] n=" << r.n << " l=" << r.len << " C=0x" << std::hex << r.c
           << " psi0=0x" << r.psi0 << " dpsi=0x" << r.dpsi << std::dec << " pixel " << i << ": rtl " << got
           << " golden " << t.intensity << " (psi=" << t.psi << " addr=" << t.addr << " bank=" << t.bank
           << " cosk=" << t.cosk << ")";
@@ -175,17 +220,18 @@ void Checker::check_line(const Scanline& sl, const LineRun& run, bool random, Po
       }
       ++st.mismatches;
     }
-    const double psi = psi_[i];
+    const double psi = psi_in[i];
     const double apsi = std::fabs(psi);
     const double out = got * lsb;
+    const int px = static_cast<int>(i);
     // (b)
-    const double ref_b = ref_b_[i];
+    const double ref_b = ref_b_in[i];
     const double err_b = std::fabs(out - ref_b);
-    keep_max(st.quant_lsb, err_b / lsb, sl, static_cast<int>(i), psi, c);
+    keep_max(st.quant_lsb, err_b / lsb, r, kind, px, psi, c);
     if (n_ok) {
       const double ex = half_step + coef_err * std::min(apsi, kHalfPi) + a * trunc;
-      const double bound = c * (dk_[bank] * ex + d2k_[bank] * interp + std::ldexp(1.0, -f.cos_data_bits)) + 0.5 * lsb;
-      keep_max(st.quant_excess, err_b / bound, sl, static_cast<int>(i), psi, c);
+      const double bound = c * (dk_[bank] * ex + d2k_[bank] * interp + k_.rom_lsb) + 0.5 * lsb;
+      keep_max(st.quant_excess, err_b / bound, r, kind, px, psi, c);
       if (err_b > bound) {
         if (st.quant_violations < 4)
           note(st, st.policy + " quantization error " + std::to_string(err_b / lsb) + " LSB > bound " +
@@ -197,22 +243,22 @@ void Checker::check_line(const Scanline& sl, const LineRun& run, bool random, Po
       note(st, st.policy + " invalid n=" + std::to_string(r.n) + " gave a nonzero pixel");
     }
     // (c)
-    const double ref_c = ref_c_[i];
+    const double ref_c = ref_c_in[i];
     const double err_c = std::fabs(out - ref_c);
     const double err_allow = std::max(0.0, err_c - lsb);
     if (n_ok && apsi <= xe && ref_c > 0.0) {
       ++st.epicenter_pixels;
-      keep_max(st.rel_raw, err_c / ref_c, sl, static_cast<int>(i), psi, c);
-      if (ref_c >= 0.5) keep_max(st.rel_raw_big, err_c / ref_c, sl, static_cast<int>(i), psi, c);
+      keep_max(st.rel_raw, err_c / ref_c, r, kind, px, psi, c);
+      if (ref_c >= 0.5) keep_max(st.rel_raw_big, err_c / ref_c, r, kind, px, psi, c);
       const bool over = err_c > budget_.rel_epicenter * ref_c + lsb;
       if (r.n == 1) {
-        if (ref_c >= n1_floor) keep_max(st.rel_allow_n1, err_allow / ref_c, sl, static_cast<int>(i), psi, c);
+        if (ref_c >= n1_floor) keep_max(st.rel_allow_n1, err_allow / ref_c, r, kind, px, psi, c);
         if (over) {
           ++st.n1_rel_over_budget;
           st.n1_budget_holds_below = std::min(st.n1_budget_holds_below, apsi);
         }
       } else {
-        keep_max(st.rel_allow, err_allow / ref_c, sl, static_cast<int>(i), psi, c);
+        keep_max(st.rel_allow, err_allow / ref_c, r, kind, px, psi, c);
       }
       const bool checked = r.n != 1 || (n1_floor > 0.0 && ref_c >= n1_floor);
       if (over && checked) {
@@ -226,10 +272,10 @@ void Checker::check_line(const Scanline& sl, const LineRun& run, bool random, Po
     if (c > 0.0) {
       if (apsi <= kHalfPi) {
         ++st.lobe_pixels;
-        keep_max(st.abs_raw, err_c / c, sl, static_cast<int>(i), psi, c);
-        keep_max(st.abs_allow, err_allow / c, sl, static_cast<int>(i), psi, c);
+        keep_max(st.abs_raw, err_c / c, r, kind, px, psi, c);
+        keep_max(st.abs_allow, err_allow / c, r, kind, px, psi, c);
       } else {
-        keep_max(st.abs_outside, err_allow / c, sl, static_cast<int>(i), psi, c);
+        keep_max(st.abs_outside, err_allow / c, r, kind, px, psi, c);
       }
     }
     // The absolute budget also holds past the lobe (reference 0 there).

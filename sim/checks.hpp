@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Per-pixel checks of the regression:
 //   (a) bit-exact against the golden model,
 //   (b) against C cos^k(a psi) in double with the policy's exact a (the quantization error,
@@ -5,7 +6,10 @@
 //   (c) against C cos^n(psi) in double (the device error): relative in the epicenter
 //       |psi| <= x_e(n), absolute over the lobe |psi| <= pi/2; budget + 1 output LSB,
 //   (d) the protocol (the harness reports violations in LineRun::protocol_error).
-// psi and C are the exact values of the quantized registers.
+// psi and C are the exact values of the quantized registers. The line stages call
+// check_line; the scene stage (scene_stage.hpp) calls references() and compare() per span,
+// the first ahead of the RTL run (it needs only the registers), the second on the pixels the
+// stream delivered.
 #pragma once
 
 #include "device_model.hpp"
@@ -93,14 +97,29 @@ class Checker {
   // pi/2 and for invalid n), from the latched registers.
   const std::vector<double>& last_reference() const { return ref_c_; }
 
+  // The double references of npix pixels of the (latched) registers r: psi_i, (b)
+  // C cos^k(a |psi_i|) and (c) C cos^n(psi_i). Const and allocation-free, so it may run on
+  // another thread than the RTL.
+  void references(const device::Registers& r, size_t npix, double* psi, double* ref_b, double* ref_c) const;
+  // (a)-(c) for npix pixels of the latched registers r: `got` from the RTL, `golden` from the
+  // golden model, the references from references(). Counts pixels, not lines.
+  void compare(const device::Registers& r, const std::string& kind, size_t npix, const uint32_t* got,
+               const uint32_t* golden, const double* psi, const double* ref_b, const double* ref_c,
+               PolicyStats& st) const;
+
  private:
   const device::DeviceModel& model_;
   std::vector<double> a_;
   Budget budget_;
   std::vector<double> dk_;   // max |d/dx cos^k x| per bank
   std::vector<double> d2k_;  // max |d^2/dx^2 cos^k x| per bank
+  std::vector<int> bank_;    // decoder 10 per n code (-1: invalid), so no search per span
+  std::vector<double> xe_;   // epicenter end x_e(n) per n code (docs/metrics.md)
+  struct {
+    double lsb, angle_lsb, half_step, interp, coef_err, trunc, rom_lsb;
+  } k_{};  // the format's constants (checks.cpp)
   // Per-line scratch of check_line (reused to avoid allocations per line).
-  mutable std::vector<device::PixelTrace> golden_;
+  mutable std::vector<uint32_t> golden_;
   mutable std::vector<double> psi_, ref_b_, ref_c_;
 };
 

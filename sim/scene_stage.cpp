@@ -1,10 +1,15 @@
+// SPDX-License-Identifier: Apache-2.0
 #include "scene_stage.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
+#include <ctime>
+#include <exception>
 #include <filesystem>
 #include <stdexcept>
 #include <system_error>
+#include <thread>
 
 namespace specular::sim {
 namespace {
@@ -13,6 +18,14 @@ using Clock = std::chrono::steady_clock;
 namespace fs = std::filesystem;
 
 double since(Clock::time_point t0) { return std::chrono::duration<double>(Clock::now() - t0).count(); }
+
+// CPU time of the whole process (every thread): the stage's cost independent of what else
+// runs on the machine.
+double cpu_now() {
+  timespec t{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
+}
 
 nlohmann::json ext_json(const Extreme& e) {
   return {{"value", e.value}, {"n", e.n}, {"psi", e.psi}, {"C", e.c}, {"l", e.len}, {"pixel", e.pixel}};
@@ -43,55 +56,255 @@ std::vector<LoadedScene> load_scenes(const std::string& dir) {
   return out;
 }
 
-void finish_scene(SceneStats& s, const LoadedScene& ls, const Image& rtl, const Image& reference,
-                  const std::string& images_dir) {
-  const auto t0 = Clock::now();
-  const auto& st = ls.raster.stats;
-  s.width = ls.raster.width;
-  s.height = ls.raster.height;
-  s.triangles = st.triangles;
-  s.spans = ls.raster.spans.size();
-  s.covered_pixels = st.covered_pixels;
-  s.max_l = static_cast<size_t>(st.max_l);
+void run_beside(int threads, const std::function<void()>& side, const std::function<void()>& main) {
+  if (threads <= 1) {
+    side();
+    main();
+    return;
+  }
+  std::exception_ptr error;
+  {
+    std::jthread t([&]() {
+      try {
+        side();
+      } catch (...) {
+        error = std::current_exception();
+      }
+    });
+    main();  // should it throw, the jthread joins before the exception leaves
+  }
+  if (error) std::rethrow_exception(error);
+}
 
-  // The per-pixel Phong truth and the float model are references too.
-  const auto t_ref = Clock::now();
-  const Image phong = render(ls.raster, phong_evaluator(ls.scene));
-  const Image flt = render(ls.raster, float_model_evaluator());
-  s.checks.reference_seconds += since(t_ref);
+SceneRun::SceneRun(const device::DeviceModel& model, const Checker& checker, const std::string& policy,
+                   LoadedScene& ls, const SceneOptions& opt, uint64_t tag_mask)
+    : model_(model), checker_(checker), ls_(ls), opt_(opt), kind_("scene:" + ls.scene.name), tag_mask_(tag_mask) {
+  t0_ = Clock::now();
+  cpu0_ = cpu_now();
+  s_.name = ls.scene.name;
+  s_.policy = policy;
+  s_.checks.policy = policy + " scene " + s_.name;
+  s_.raster_seconds = ls.raster_seconds;
+  s_.threads = opt.threads > 1 ? 2 : 1;
+}
 
-  const Image dev_err = difference(rtl, reference);
-  const Image interp_err = difference(flt, phong);
-  s.device_image = error_stats(dev_err);
-  s.interp_image = error_stats(interp_err);
-  s.register_image = error_stats(difference(flt, reference));
-  for (double v : phong.value) s.peak_phong = std::max(s.peak_phong, v);
+void SceneRun::setup() {
+  // prepare() waits for this; it must not wait forever should the setup throw.
+  struct Done {
+    std::latch& l;
+    ~Done() { l.count_down(); }
+  } done{registers_ready_};
+  const auto t = Clock::now();
+  const auto& f = model_.format();
+  const auto& spans = ls_.raster.spans;
+  // Registers of every span from the batched setup, in one call.
+  auto& batch = ls_.shared.batch;
+  if (batch.size() != spans.size()) {
+    batch.clear();
+    batch.reserve(spans.size());
+    for (const Span& sp : spans) batch.push_back(sp.setup_in);
+  }
+  host::setup_batch(batch, f, regs_);
+  spans_.resize(spans.size());
+  offset_.resize(spans.size());
+  for (size_t j = 0; j < spans.size(); ++j) {
+    spans_[j] = {model_.latch(regs_.registers(j)), static_cast<uint32_t>(j & tag_mask_)};
+    offset_[j] = pixels_;
+    pixels_ += spans_[j].reg.len + 1;
+    if (regs_.flags[j] & host::kCSaturated) ++s_.c_saturated_spans;
+  }
+  if (opt_.corrupt_span >= 0 && static_cast<size_t>(opt_.corrupt_span) < spans_.size()) {
+    corrupt_ = spans_;
+    corrupt_[static_cast<size_t>(opt_.corrupt_span)].reg.dpsi ^= 1;
+  }
+  s_.setup_seconds = since(t);
+  setup_done_ = true;
+}
 
-  if (!images_dir.empty()) {
+void SceneRun::prepare_shared() {
+  auto& sh = ls_.shared;
+  if (sh.ready) return;
+  // Once per scene: the scalar setup (the setup error's reference and the float model)
+  // and the Phong truth. Needs no register: runs while setup() does.
+  const auto& spans = ls_.raster.spans;
+  const size_t n = spans.size();
+  auto t = Clock::now();
+  sh.setups.resize(n);
+  for (size_t j = 0; j < n; ++j) sh.setups[j] = scanline_setup(spans[j].setup_in);
+  s_.setup_check_seconds += since(t);
+  t = Clock::now();
+  sh.flt = Image(ls_.raster.width, ls_.raster.height);
+  for (size_t j = 0; j < n; ++j) {
+    const Span& sp = spans[j];
+    const size_t row = static_cast<size_t>(sp.y) * sh.flt.width;
+    for (int i = 0; i < sp.pixels(); ++i) {
+      sh.flt.value[row + sp.x_start + i] += pixel_blinn(sh.setups[j], sp.setup_in.n, i);
+      sh.flt.covered[row + sp.x_start + i] = 1;
+    }
+  }
+  sh.phong = render(ls_.raster, phong_evaluator(ls_.scene));
+  sh.interp_image = error_stats(difference(sh.flt, sh.phong));
+  for (double v : sh.phong.value) sh.peak_phong = std::max(sh.peak_phong, v);
+  s_.checks.reference_seconds += since(t);
+  sh.ready = true;
+}
+
+void SceneRun::prepare() {
+  registers_ready_.wait();
+  if (!setup_done_) return;  // setup() threw; the exception reaches the caller
+  const auto& f = model_.format();
+  const auto& spans = ls_.raster.spans;
+  const size_t n = spans.size();
+  const auto& sh = ls_.shared;
+  // The golden model's stream view of every span (intensity, last, tag).
+  auto t = Clock::now();
+  golden_.clear();
+  golden_.reserve(pixels_);
+  for (const device::Span& sp : spans_) model_.stream_span(sp, golden_);
+  golden_intensity_.resize(golden_.size());
+  for (size_t k = 0; k < golden_.size(); ++k) golden_intensity_[k] = golden_[k].intensity;
+  s_.checks.golden_seconds += since(t);
+  // The double references (b) and (c), and the image of (c).
+  t = Clock::now();
+  psi_.resize(pixels_);
+  ref_b_.resize(pixels_);
+  ref_c_.resize(pixels_);
+  reference_ = Image(ls_.raster.width, ls_.raster.height);
+  for (size_t j = 0; j < n; ++j) {
+    const size_t o = offset_[j], npix = spans_[j].reg.len + 1;
+    checker_.references(spans_[j].reg, npix, &psi_[o], &ref_b_[o], &ref_c_[o]);
+    const size_t row = static_cast<size_t>(spans[j].y) * reference_.width + spans[j].x_start;
+    for (size_t i = 0; i < npix; ++i) {
+      reference_.value[row + i] += ref_c_[o + i];
+      reference_.covered[row + i] = 1;
+    }
+  }
+  s_.register_image = error_stats(difference(sh.flt, reference_));
+  s_.checks.reference_seconds += since(t);
+  // The setup error: batch registers against the scalar setup's (host::span_registers).
+  t = Clock::now();
+  auto& se = s_.setup;
+  for (size_t j = 0; j < n; ++j) {
+    const ScanlineSetup& st = sh.setups[j];
+    const device::Registers ref = device::load_registers(st, spans[j].setup_in.n, spans[j].length(), f).reg;
+    const device::Registers got = regs_.registers(j);
+    if (regs_.status[j] != static_cast<uint8_t>(st.status)) {
+      if (se.first.size() < 6)
+        se.first.push_back(s_.checks.policy + " setup status of span " + std::to_string(j) + ": batch " +
+                           to_string(regs_.setup_status(j)) + ", scalar " + to_string(st.status));
+      ++se.status_mismatches;
+    }
+    if (got.c == ref.c && got.psi0 == ref.psi0 && got.dpsi == ref.dpsi && got.n == ref.n && got.len == ref.len)
+      continue;  // equal codes: equal pixels
+    ++se.spans_differ;
+    const host::PixelAgreement pa = host::compare_pixels(got, ref, f);
+    se.rel_epicenter = std::max(se.rel_epicenter, pa.max_rel_epicenter);
+    se.abs_lsb = std::max(se.abs_lsb, pa.max_abs_lsb);
+    se.worst = std::max(se.worst, pa.worst);
+    if (!pa.ok()) {
+      if (se.first.size() < 6)
+        se.first.push_back(s_.checks.policy + " setup error of span " + std::to_string(j) + ": " +
+                           std::to_string(pa.worst) + " x the tolerance at pixel " + std::to_string(pa.worst_pixel) +
+                           " (n=" + std::to_string(ref.n) + " l=" + std::to_string(ref.len) + ")");
+      ++se.violations;
+    }
+  }
+  s_.setup_check_seconds += since(t);
+}
+
+SceneStats SceneRun::finish(const StreamRun& run, double rtl_seconds, uint64_t protocol_errors,
+                            const std::vector<std::string>& protocol_messages) {
+  const auto& f = model_.format();
+  const auto& spans = ls_.raster.spans;
+  auto& st = s_.checks;
+  auto note = [&](const std::string& what) {
+    if (st.failures.size() < 12) st.failures.push_back(what);
+  };
+  st.sim_seconds = rtl_seconds;
+  st.protocol_errors += protocol_errors;
+  for (const auto& m : protocol_messages) note(st.policy + " stream: " + m);
+  st.c_saturated_lines = s_.c_saturated_spans;
+  const size_t got = run.intensity.size();
+  if (got != pixels_) {
+    ++st.protocol_errors;
+    note(st.policy + " stream: " + std::to_string(got) + " pixels delivered, the spans hold " + std::to_string(pixels_));
+  }
+  Image rtl(ls_.raster.width, ls_.raster.height);
+  const double lsb = std::ldexp(1.0, -f.c_frac);
+  for (size_t j = 0; j < spans_.size(); ++j) {
+    const Span& sp = spans[j];
+    const device::Registers& r = spans_[j].reg;
+    const size_t o = offset_[j];
+    ++st.lines;
+    if (o >= got) continue;  // missing pixels: counted above
+    const size_t npix = std::min<size_t>(r.len + 1, got - o);
+    // The stream view: tag and last of every pixel as the golden model has them.
+    for (size_t k = o; k < o + npix; ++k)
+      if (run.tag[k] != golden_[k].tag || (run.last[k] != 0) != golden_[k].last) {
+        if (st.protocol_errors < 12)
+          note(st.policy + " stream: span " + std::to_string(j) + " pixel " + std::to_string(k - o) + ": tag/last " +
+               std::to_string(run.tag[k]) + "/" + std::to_string(run.last[k]) + ", golden " +
+               std::to_string(golden_[k].tag) + "/" + std::to_string(golden_[k].last));
+        ++st.protocol_errors;
+      }
+    // Latency: the span's pixel 0 after its accept.
+    if (j < run.accept_cycle.size()) ++st.latency[static_cast<int>(run.pixel_cycle[o] - run.accept_cycle[j])];
+    checker_.compare(r, kind_, npix, &run.intensity[o], &golden_intensity_[o], &psi_[o], &ref_b_[o], &ref_c_[o], st);
+    const size_t row = static_cast<size_t>(sp.y) * rtl.width + sp.x_start;
+    for (size_t i = 0; i < npix; ++i) {
+      const double out = run.intensity[o + i] * lsb, ref = ref_c_[o + i];
+      rtl.value[row + i] += out;
+      rtl.covered[row + i] = 1;
+      const double e = std::fabs(out - ref);
+      if (e > s_.dev_abs.value)
+        s_.dev_abs = {e, r.n, psi_[o + i], device::c_value(r.c, f), r.len, static_cast<int>(i), kind_};
+    }
+  }
+  st.cycles = s_.stream_cycles = run.cycles();
+
+  const auto& sh = ls_.shared;
+  const auto& rs = ls_.raster.stats;
+  s_.width = ls_.raster.width;
+  s_.height = ls_.raster.height;
+  s_.triangles = rs.triangles;
+  s_.spans = spans.size();
+  s_.covered_pixels = rs.covered_pixels;
+  s_.max_l = static_cast<size_t>(rs.max_l);
+  const Image dev_err = difference(rtl, reference_);
+  s_.device_image = error_stats(dev_err);
+  s_.interp_image = sh.interp_image;
+  s_.peak_phong = sh.peak_phong;
+  s_.stage_seconds = since(t0_);
+  s_.cpu_seconds = cpu_now() - cpu0_;
+
+  if (!opt_.images_dir.empty()) {
     const auto t_img = Clock::now();
     // One exposure for the three grey images so that they compare directly.
-    const double scale = s.peak_phong > 0 ? std::min(1.0 / s.peak_phong, 1000.0) : 1.0;
+    const double scale = s_.peak_phong > 0 ? std::min(1.0 / s_.peak_phong, 1000.0) : 1.0;
+    const std::string& dir = opt_.images_dir;
     std::error_code ec;
-    fs::create_directories(images_dir, ec);
-    if (ec) throw std::runtime_error("--images-dir " + images_dir + ": cannot create the directory: " + ec.message());
-    const std::string base = (fs::path(images_dir) / s.name).string();
+    fs::create_directories(dir, ec);
+    if (ec) throw std::runtime_error("--images-dir " + dir + ": cannot create the directory: " + ec.message());
+    const std::string base = (fs::path(dir) / s_.name).string();
     const std::vector<std::string> names = {base + "_phong.png", base + "_float.png", base + "_rtl.png",
                                             base + "_device_error.png", base + "_interp_error.png"};
     try {
-      write_png(names[0] + ".tmp", phong, scale);
-      write_png(names[1] + ".tmp", flt, scale);
+      write_png(names[0] + ".tmp", sh.phong, scale);
+      write_png(names[1] + ".tmp", sh.flt, scale);
       write_png(names[2] + ".tmp", rtl, scale);
-      write_heatmap_png(names[3] + ".tmp", dev_err, "RTL - C COSN(PSI) " + s.policy);
-      write_heatmap_png(names[4] + ".tmp", interp_err, "FLOAT - PHONG");
-      for (const auto& n : names) fs::rename(n + ".tmp", n);
+      write_heatmap_png(names[3] + ".tmp", dev_err, "RTL - C COSN(PSI) " + s_.policy);
+      write_heatmap_png(names[4] + ".tmp", difference(sh.flt, sh.phong), "FLOAT - PHONG");
+      for (const auto& nm : names) fs::rename(nm + ".tmp", nm);
     } catch (...) {
-      for (const auto& n : names) fs::remove(n + ".tmp", ec);
+      for (const auto& nm : names) fs::remove(nm + ".tmp", ec);
       throw;
     }
-    s.images = names;
-    s.image_seconds = since(t_img);
+    s_.images = names;
+    s_.image_seconds = since(t_img);
   }
-  s.checks.seconds += since(t0);
+  st.seconds = since(t0_);
+  for (const auto& m : s_.setup.first) note(m);
+  return std::move(s_);
 }
 
 nlohmann::json SceneStats::to_json() const {
@@ -127,13 +340,28 @@ nlohmann::json SceneStats::to_json() const {
           {"interp_error_image", image_json(interp_image)},
           {"max_float_vs_registers_abs", register_image.max_abs},
           {"peak_phong", peak_phong},
+          {"setup_rel_epicenter", setup.rel_epicenter},
+          {"setup_abs_lsb", setup.abs_lsb},
+          {"setup_worst_over_tolerance", setup.worst},
+          {"setup_violations", setup.violations},
+          {"setup_status_mismatches", setup.status_mismatches},
+          {"setup_spans_differ", setup.spans_differ},
           {"latency", c.latency.empty() ? -1 : c.latency.begin()->first},
+          {"expected_latency", c.expected_latency},
           {"cycles", c.cycles},
+          {"stream_clocks_per_pixel", c.pixels ? double(stream_cycles) / c.pixels : 0.0},
+          {"threads", threads},
           {"seconds", c.seconds},
+          {"stage_seconds", stage_seconds},
+          {"cpu_seconds", cpu_seconds},
+          {"checked_mpix_per_s", checked_mpix_per_s()},
+          {"checked_mpix_per_cpu_s", cpu_seconds > 0 ? c.pixels / cpu_seconds / 1e6 : 0.0},
           {"rtl_seconds", rtl_s},
           {"sim_seconds", rtl_s},
           {"golden_seconds", c.golden_seconds},
           {"reference_seconds", c.reference_seconds},
+          {"setup_seconds", setup_seconds},
+          {"setup_check_seconds", setup_check_seconds},
           {"raster_seconds", raster_seconds},
           {"image_seconds", image_seconds},
           {"simulated_pixels_per_second", rtl_s > 0 ? c.pixels / rtl_s : 0.0},
@@ -144,7 +372,8 @@ nlohmann::json SceneStats::to_json() const {
 void print_scene_table(const std::vector<SceneStats>& all) {
   const char* head[] = {"scene", "policy", "size", "spans", "pixels", "C sat. spans", "mismatches",
                         "max |dev err|", "max rel epi +1LSB", "max abs/C +1LSB", "max |interp err|",
-                        "sim px/s", "RTL/golden/ref s", "result"};
+                        "setup err rel epi / LSB", "stream clk/px", "checked Mpx/s (CPU)", "RTL/golden/ref s",
+                        "result"};
   std::vector<std::vector<std::string>> rows;
   auto fmt = [](const char* f, double v) {
     char b[64];
@@ -157,7 +386,11 @@ void print_scene_table(const std::vector<SceneStats>& all) {
                     std::to_string(s.spans), std::to_string(c.pixels), std::to_string(s.c_saturated_spans),
                     std::to_string(c.mismatches), fmt("%.3e", s.dev_abs.value), fmt("%.4f%%", 100 * c.rel_allow.value),
                     fmt("%.5f", c.abs_allow.value), fmt("%.3e", s.interp_image.max_abs),
-                    fmt("%.3e", c.sim_seconds > 0 ? c.pixels / c.sim_seconds : 0.0),
+                    fmt("%.5f%%", 100 * s.setup.rel_epicenter) + " / " + fmt("%.2f", s.setup.abs_lsb) +
+                        (s.setup.ok() ? "" : " (" + std::to_string(s.setup.violations) + " over)"),
+                    fmt("%.4f", c.pixels ? double(s.stream_cycles) / c.pixels : 0.0),
+                    fmt("%.2f", s.checked_mpix_per_s()) + " (" +
+                        fmt("%.2f", s.cpu_seconds > 0 ? c.pixels / s.cpu_seconds / 1e6 : 0.0) + ")",
                     fmt("%.3f", c.sim_seconds) + "/" + fmt("%.3f", c.golden_seconds) + "/" +
                         fmt("%.3f", c.reference_seconds),
                     s.ok() ? "PASS" : "FAIL"});

@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // sim_regression: rtl/specular_unit (Verilator) against the golden model and the double
 // references, for every hardware configuration of build_configs() (rom_image.hpp), each
 // verilated with its parameters; then rtl/specular_stream. Run from the repository root
@@ -6,8 +7,10 @@
 //   sim_regression                          full regression, every configuration, summary table
 //   sim_regression --seed S --random N --config default|patent|banks4-interp|interp128|all --json FILE
 //   sim_regression --vcd-dir DIR --vcd-only DIR/line_l3.vcd (l = 3) and DIR/line_long.vcd
-//   sim_regression --scenes-dir DIR --images-dir DIR   every DIR/*.json through the RTL, PNGs
+//   sim_regression --scenes-dir DIR --images-dir DIR   every DIR/*.json through specular_stream, PNGs
 //   sim_regression --no-scenes                         regression lines only
+//   sim_regression --scene-threads 1                   scene stage on one thread (default 2)
+//   sim_regression --corrupt-span SCENE:SPAN           test only: a wrong register must fail the scene stage
 //   sim_regression --stream-spans N                    random spans through specular_stream (0: skip)
 //   sim_regression --digest FILE +verilator+rand+reset+2 +verilator+seed+N
 //                                                      X-propagation: digest of every output, every cycle
@@ -18,6 +21,14 @@
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 #pragma GCC diagnostic ignored "-Wpedantic"  // anonymous structs in Verilator's public-parameter headers
+#include "Vspecular_scene_banks4_interp.h"
+#include "Vspecular_scene_banks4_interp_specular_stream.h"
+#include "Vspecular_scene_default.h"
+#include "Vspecular_scene_default_specular_stream.h"
+#include "Vspecular_scene_interp128.h"
+#include "Vspecular_scene_interp128_specular_stream.h"
+#include "Vspecular_scene_patent.h"
+#include "Vspecular_scene_patent_specular_stream.h"
 #include "Vspecular_stream_default.h"
 #include "Vspecular_stream_default_specular_stream.h"
 #include "Vspecular_unit_banks4_interp.h"
@@ -39,7 +50,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -170,12 +183,21 @@ int write_stream_vcd(const specular::BuildConfig& bc, const std::string& dir) {
   return 0;
 }
 
-// The regression lines, then (same device instance, same checker and budgets) every scene;
-// the scene images are written when images_dir is not empty.
-template <class V, class Root>
+// The scene stage's options and which scene gets the test-only corrupted span.
+struct SceneRunOptions {
+  int threads = 2;
+  std::string corrupt_scene;
+  long corrupt_span = -1;
+};
+
+// The regression lines on specular_unit (V), then every scene through specular_stream (SV) of
+// the same configuration, with the same checker and budgets; the scene images are written
+// when images_dir is not empty.
+template <class V, class Root, class SV, class SRoot>
 PolicyStats run_config(const specular::BuildConfig& bc, Budget budget, const std::vector<Scanline>& det,
-                       const std::vector<Scanline>& rnd, uint64_t seed, const std::vector<LoadedScene>& scenes,
-                       const std::string& images_dir, std::vector<SceneStats>& scene_stats) {
+                       const std::vector<Scanline>& rnd, uint64_t seed, std::vector<LoadedScene>& scenes,
+                       const std::string& images_dir, const SceneRunOptions& sro,
+                       std::vector<SceneStats>& scene_stats) {
   const Format& f = bc.f;
   const std::string& policy = bc.name;
   std::string why;
@@ -187,43 +209,58 @@ PolicyStats run_config(const specular::BuildConfig& bc, Budget budget, const std
   st.budget = budget;
   st.expected_latency = Root::Latency;
   const auto t0 = std::chrono::steady_clock::now();
-  Harness<V> h("specular_unit", specular::load_device_model(f, bc.coef_hex(), bc.cos_hex()));
+  const specular::device::DeviceModel model = specular::load_device_model(f, bc.coef_hex(), bc.cos_hex());
   const specular::CoefSpec spec = specular::parse_coef_spec(bc.policy);
   std::vector<double> a(f.coef_rom_depth(), 0.0);
-  for (int n = 1; n <= f.max_n(); ++n) a[n] = specular::coefficient(n, f.banks[h.model().bank_of(n)], spec);
-  const Checker checker(h.model(), a, budget);
+  for (int n = 1; n <= f.max_n(); ++n) a[n] = specular::coefficient(n, f.banks[model.bank_of(n)], spec);
+  const Checker checker(model, a, budget);
   std::mt19937_64 rng(seed ^ 0x5eed);
-  double sim_s = 0.0;
-  auto run = [&](const Scanline& sl, WriteMode mode, double poke, int gap, bool random) {
-    const auto s0 = std::chrono::steady_clock::now();
-    const LineRun r = h.run_line(sl.reg, mode, poke, gap, rng);
-    sim_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
-    checker.check_line(sl, r, random, st);
-  };
-  size_t idx = 0;
-  for (const auto* set : {&det, &rnd}) {
-    const bool random = set == &rnd;
-    for (const Scanline& sl : *set) {
-      ++idx;
-      const WriteMode mode = idx % 2 ? WriteMode::before_start : WriteMode::with_start;
-      const int gap = idx % 5 == 0 ? 2 : 0;  // mostly back to back: a start in the first idle cycle
-      if (idx % 16 == 0) {
-        // Garbage writes and starts while busy, then the same line again without writing:
-        // both must equal the golden line for the registers written before.
-        run(sl, mode, 0.3, gap, random);
-        run(sl, WriteMode::none, 0.0, gap, random);
-      } else {
-        run(sl, mode, 0.0, gap, random);
+  {
+    // The unit's harness ends before the stream's begins: Verilator 5.006 destroys a model
+    // through the thread's current (last constructed) context (stream_harness.hpp).
+    Harness<V> h("specular_unit", model);
+    double sim_s = 0.0;
+    auto run = [&](const Scanline& sl, WriteMode mode, double poke, int gap, bool random) {
+      const auto s0 = std::chrono::steady_clock::now();
+      const LineRun r = h.run_line(sl.reg, mode, poke, gap, rng);
+      sim_s += std::chrono::duration<double>(std::chrono::steady_clock::now() - s0).count();
+      checker.check_line(sl, r, random, st);
+    };
+    size_t idx = 0;
+    for (const auto* set : {&det, &rnd}) {
+      const bool random = set == &rnd;
+      for (const Scanline& sl : *set) {
+        ++idx;
+        const WriteMode mode = idx % 2 ? WriteMode::before_start : WriteMode::with_start;
+        const int gap = idx % 5 == 0 ? 2 : 0;  // mostly back to back: a start in the first idle cycle
+        if (idx % 16 == 0) {
+          // Garbage writes and starts while busy, then the same line again without writing:
+          // both must equal the golden line for the registers written before.
+          run(sl, mode, 0.3, gap, random);
+          run(sl, WriteMode::none, 0.0, gap, random);
+        } else {
+          run(sl, mode, 0.0, gap, random);
+        }
       }
     }
+    st.sim_seconds = sim_s;
   }
-  st.sim_seconds = sim_s;
   st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  for (const auto& ls : scenes) {
-    SceneStats ss = run_scene(h, checker, policy, ls, images_dir, rng);
-    ss.checks.budget = budget;
-    ss.checks.expected_latency = st.expected_latency;
-    scene_stats.push_back(std::move(ss));
+  if (!scenes.empty()) {
+    if (!format_matches_rtl<SRoot>(f, why))
+      throw std::runtime_error("configuration " + bc.name + ": specular_stream's verilated parameters differ from its "
+                               "device::Format: " + why);
+    StreamHarness<SV> sh("specular_stream", specular::load_device_model(f, bc.coef_hex(), bc.cos_hex()), 16);
+    for (auto& ls : scenes) {
+      SceneOptions opt;
+      opt.images_dir = images_dir;
+      opt.threads = sro.threads;
+      if (ls.scene.name == sro.corrupt_scene) opt.corrupt_span = sro.corrupt_span;
+      SceneStats ss = run_scene(sh, checker, policy, ls, opt);
+      ss.checks.budget = budget;
+      ss.checks.expected_latency = SRoot::Latency;
+      scene_stats.push_back(std::move(ss));
+    }
   }
   return st;
 }
@@ -351,10 +388,26 @@ int main(int argc, char** argv) {
   app.add_option("--vcd-dir", vcd_dir, "write line_l3.vcd, line_long.vcd and stream.vcd (default build) into DIR");
   app.add_flag("--vcd-only", vcd_only, "only write the VCD files, no regression")->needs("--vcd-dir");
   app.add_option("--json", json_path, "also write the summary as JSON to FILE");
-  app.add_option("--scenes-dir", scenes_dir, "run every DIR/*.json scene through the RTL")->capture_default_str();
+  app.add_option("--scenes-dir", scenes_dir, "run every DIR/*.json scene through specular_stream")->capture_default_str();
   app.add_option("--images-dir", images_dir, "write the scene PNGs into DIR (created if missing)")
       ->capture_default_str();
   app.add_flag("--no-scenes", no_scenes, "skip the scene stage");
+  SceneRunOptions sro;
+  app.add_option("--scene-threads", sro.threads,
+                 "scene stage: 2 runs the golden model and the references beside the RTL, 1 after it")
+      ->check(CLI::Range(1, 2))
+      ->capture_default_str();
+  std::string corrupt;
+  app.add_option("--corrupt-span", corrupt,
+                 "test only: flip bit 0 of dpsi of span SPAN of scene SCENE on its way to the RTL (SCENE:SPAN); "
+                 "the scene stage must then fail")
+      ->check([](const std::string& v) {
+        const auto colon = v.rfind(':');
+        if (colon == std::string::npos || colon == 0 || colon + 1 == v.size() ||
+            v.find_first_not_of("0123456789", colon + 1) != std::string::npos)
+          return std::string("expected SCENE:SPAN (SPAN a span index)");
+        return std::string();
+      });
   app.add_option("--stream-spans", stream_spans, "random spans through specular_stream (0: skip the stream stage)")
       ->check(CLI::Range(uint64_t{0}, uint64_t{100000000}))
       ->capture_default_str();
@@ -392,6 +445,11 @@ int main(int argc, char** argv) {
     std::cerr << "sim_regression: the RTL parameter defaults differ from device::Format: " << why << "\n";
     return 1;
   }
+  if (!corrupt.empty()) {
+    const auto colon = corrupt.rfind(':');
+    sro.corrupt_scene = corrupt.substr(0, colon);
+    sro.corrupt_span = std::stol(corrupt.substr(colon + 1));
+  }
   if (scenes_dir.empty() || images_dir.empty()) {
     std::cerr << "sim_regression: --scenes-dir and --images-dir must not be empty\n";
     return 2;
@@ -415,6 +473,18 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
+  if (!sro.corrupt_scene.empty()) {
+    const auto it = std::find_if(scenes.begin(), scenes.end(),
+                                 [&](const LoadedScene& ls) { return ls.scene.name == sro.corrupt_scene; });
+    if (it == scenes.end() || static_cast<size_t>(sro.corrupt_span) >= it->raster.spans.size()) {
+      std::cerr << "sim_regression: --corrupt-span " << corrupt << ": "
+                << (it == scenes.end() ? "no such scene" : "the scene has " + std::to_string(it->raster.spans.size()) + " spans")
+                << "\n";
+      return 2;
+    }
+    std::cout << "test only: dpsi of span " << sro.corrupt_span << " of scene " << sro.corrupt_scene
+              << " goes to the RTL with bit 0 flipped; the scene stage must fail\n";
+  }
   try {
     if (!vcd_dir.empty()) {
       int rc = write_vcds<Vspecular_unit_default>(specular::build_config("default"), vcd_dir);
@@ -435,7 +505,7 @@ int main(int argc, char** argv) {
     // Images come from the first configuration simulated; scenes run on default and patent.
     const bool every = config == "all";
     auto want = [&](const char* name) { return every || config == name; };
-    const std::vector<LoadedScene> none;
+    std::vector<LoadedScene> none;
     std::string images = images_dir;
     auto take_images = [&]() {
       std::string d = images;
@@ -443,23 +513,31 @@ int main(int argc, char** argv) {
       return d;
     };
     if (want("default"))
-      all.push_back(run_config<Vspecular_unit_default, Vspecular_unit_default_specular_unit>(
-          specular::build_config("default"), {0.0010, 0.01, 4.0}, det, rnd, seed, scenes, take_images(), scene_stats));
+      all.push_back(run_config<Vspecular_unit_default, Vspecular_unit_default_specular_unit, Vspecular_scene_default,
+                               Vspecular_scene_default_specular_stream>(
+          specular::build_config("default"), {0.0010, 0.01, 4.0}, det, rnd, seed, scenes, take_images(), sro,
+          scene_stats));
     if (want("patent"))
-      all.push_back(run_config<Vspecular_unit_patent, Vspecular_unit_patent_specular_unit>(
-          specular::build_config("patent"), {0.012, 0.025, 0.0}, det, rnd, seed, scenes, take_images(), scene_stats));
+      all.push_back(run_config<Vspecular_unit_patent, Vspecular_unit_patent_specular_unit, Vspecular_scene_patent,
+                               Vspecular_scene_patent_specular_stream>(
+          specular::build_config("patent"), {0.012, 0.025, 0.0}, det, rnd, seed, scenes, take_images(), sro,
+          scene_stats));
     if (want("banks4-interp"))
-      all.push_back(run_config<Vspecular_unit_banks4_interp, Vspecular_unit_banks4_interp_specular_unit>(
+      all.push_back(run_config<Vspecular_unit_banks4_interp, Vspecular_unit_banks4_interp_specular_unit,
+                               Vspecular_scene_banks4_interp, Vspecular_scene_banks4_interp_specular_stream>(
           specular::build_config("banks4-interp"), {0.0020, 0.02, 4.0}, det, rnd, seed, every ? none : scenes,
-          take_images(), scene_stats));
+          take_images(), sro, scene_stats));
     if (want("interp128"))
-      all.push_back(run_config<Vspecular_unit_interp128, Vspecular_unit_interp128_specular_unit>(
+      all.push_back(run_config<Vspecular_unit_interp128, Vspecular_unit_interp128_specular_unit,
+                               Vspecular_scene_interp128, Vspecular_scene_interp128_specular_stream>(
           specular::build_config("interp128"), {0.0010, 0.01, 4.0}, det, rnd, seed, every ? none : scenes,
-          take_images(), scene_stats));
+          take_images(), sro, scene_stats));
     print_table(all);
     if (!scene_stats.empty()) {
-      std::cout << "\nScenes (every span through the RTL; device error = RTL - C cos^n(psi_i) from the loaded registers,\n"
-                   "interpolation error = float model - per-pixel Phong; intensities, C < 2):\n";
+      std::cout << "\nScenes (every span through specular_stream, back to back, registers from the batched setup;\n"
+                   "device error = RTL - C cos^n(psi_i) from the loaded registers, interpolation error = float model -\n"
+                   "per-pixel Phong, intensities, C < 2; setup error = C cos^n(psi_i) from the batch registers against\n"
+                   "those from the scalar setup's, max relative in the epicenter and absolute in LSB of C):\n";
       print_scene_table(scene_stats);
       for (const auto& s : scene_stats)
         if (!s.images.empty()) {
@@ -467,25 +545,35 @@ int main(int argc, char** argv) {
           break;
         }
     }
-    // Stream stage: random spans, then every scene back to back (default build).
+    // Stream stage: random spans (default build). The scenes went through the stream in the
+    // scene stage; their rows (first configuration) set the stream's clocks per pixel against
+    // the register interface's l + L + 1 per line, L + 1 measured per line in the line stage.
     StreamStats stream;
     std::vector<SceneStreamStats> scene_streams;
-    const bool run_stream = stream_spans > 0 || !scenes.empty();
-    if (run_stream) {
+    for (const auto& ss : scene_stats) {
+      if (ss.policy != scene_stats.front().policy) break;
+      double per_line = 0.0;
+      for (const auto& p : all)
+        if (p.policy == ss.policy && p.lines > 0) per_line = double(p.cycles - p.pixels) / double(p.lines);
+      SceneStreamStats x;
+      x.name = ss.name;
+      x.spans = ss.spans;
+      x.pixels = ss.checks.pixels;
+      x.stream_cycles = ss.stream_cycles;
+      x.register_cycles = ss.checks.pixels + static_cast<uint64_t>(std::llround(per_line * double(ss.spans)));
+      x.mismatches = ss.checks.mismatches;
+      x.protocol_errors = ss.checks.protocol_errors;
+      scene_streams.push_back(x);
+    }
+    if (stream_spans > 0) {
       const auto& bc = specular::build_config("default");
       if (std::string why_stream; !format_matches_rtl<Vspecular_stream_default_specular_stream>(bc.f, why_stream))
         throw std::runtime_error("specular_stream's parameter defaults differ from device::Format: " + why_stream);
       StreamHarness<Vspecular_stream_default> sh("specular_stream",
                                                  specular::load_device_model(bc.f, bc.coef_hex(), bc.cos_hex()), 16);
-      if (stream_spans > 0) stream = run_stream_stage(sh, seed, stream_spans);
-      for (const auto& ls : scenes) {
-        uint64_t reg_cycles = 0;
-        for (const auto& ss : scene_stats)
-          if (ss.name == ls.scene.name && reg_cycles == 0) reg_cycles = ss.checks.cycles;
-        scene_streams.push_back(run_scene_stream(sh, ls, reg_cycles));
-      }
-      print_stream_summary(stream, scene_streams);
+      stream = run_stream_stage(sh, seed, stream_spans);
     }
+    if (stream_spans > 0 || !scene_streams.empty()) print_stream_summary(stream, scene_streams);
     const double run_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_run).count();
     double rtl_total = 0, golden_total = 0, ref_total = 0;
     for (const auto& s : all) {
@@ -494,6 +582,12 @@ int main(int argc, char** argv) {
       ref_total += s.reference_seconds;
     }
     for (const auto& s : scene_stats) {
+      std::printf("scene %s on %s: %.2f M checked pixels/s (%llu pixels in %.3f s wall, %.3f s CPU; RTL %.3f s, "
+                  "golden %.3f s, references %.3f s, setup %.3f s + check %.3f s, %d thread%s)\n",
+                  s.name.c_str(), s.policy.c_str(), s.checked_mpix_per_s(), (unsigned long long)s.checks.pixels,
+                  s.stage_seconds, s.cpu_seconds, s.checks.sim_seconds, s.checks.golden_seconds,
+                  s.checks.reference_seconds, s.setup_seconds, s.setup_check_seconds, s.threads,
+                  s.threads > 1 ? "s" : "");
       rtl_total += s.checks.sim_seconds;
       golden_total += s.checks.golden_seconds;
       ref_total += s.checks.reference_seconds;
@@ -514,6 +608,9 @@ int main(int argc, char** argv) {
     for (const auto& s : scene_stats) {
       ok = ok && s.ok();
       for (const auto& msg : s.checks.failures) std::cout << "FAIL " << msg << "\n";
+      if (!s.setup.ok())
+        std::cout << "FAIL " << s.checks.policy << ": setup error over the tolerance (0.01 % + 1 LSB) in "
+                  << s.setup.violations << " spans, setup status differs in " << s.setup.status_mismatches << "\n";
       if (s.checks.latency.size() > 1 || (s.checks.latency.size() == 1 &&
                                           s.checks.latency.begin()->first != s.checks.expected_latency))
         std::cout << "FAIL " << s.checks.policy << ": latency not the documented " << s.checks.expected_latency

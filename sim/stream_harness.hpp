@@ -1,3 +1,4 @@
+// SPDX-License-Identifier: Apache-2.0
 // Harness around one verilated specular_stream: owns the VerilatedContext, the golden model
 // of the same configuration, an on-demand VCD writer and a scoreboard.
 //
@@ -9,6 +10,10 @@
 // The scoreboard: every accepted span appends its golden pixels (DeviceModel::stream_span)
 // to a queue; every pixel transfer pops the front and must equal it in intensity, last
 // and tag. An asynchronous reset clears the queue: everything in flight is dropped.
+//
+// run_back_to_back is the scene stage's fast path: spans back to back, px_ready_i always
+// high, every transfer recorded (StreamRun) and compared with the golden model by the
+// caller afterwards, so that a clock costs the two evaluations and little else.
 #pragma once
 
 #include "device_model.hpp"
@@ -39,6 +44,16 @@ struct StreamCounters {
   std::vector<std::string> first_errors;  // at most 10 messages
 };
 
+// What run_back_to_back saw: every pixel transfer in order, every span's accept cycle.
+struct StreamRun {
+  std::vector<uint32_t> intensity, tag;
+  std::vector<uint8_t> last;
+  std::vector<uint64_t> pixel_cycle;   // cycle of each transfer
+  std::vector<uint64_t> accept_cycle;  // cycle in which each span was accepted
+  uint64_t first_accept = 0, last_transfer = 0;
+  uint64_t cycles() const { return intensity.empty() ? 0 : last_transfer - first_accept + 1; }
+};
+
 template <class V>
 class StreamHarness {
  public:
@@ -64,6 +79,10 @@ class StreamHarness {
     reset(2);
   }
   ~StreamHarness() {
+    // Verilator 5.006 erases the model's scopes from the thread's current context, which is
+    // the last one constructed: make it ours. A harness of another model must not outlive
+    // this one on the same thread (its destructor would meet a deleted context).
+    Verilated::threadContextp(ctx_.get());
     close_vcd();
     top_->final();
     write_coverage(*ctx_, top_->modelName());
@@ -149,6 +168,74 @@ class StreamHarness {
     if (transferred) *transferred = px_fire;
     return span_fire;
   }
+
+  // Spans back to back (span_valid_i high whenever one is pending, each span held until
+  // accepted) with px_ready_i always high, then 8 idle clocks in which nothing may come out.
+  // `pixels` is what the spans hold (sum of l + 1): the run ends when that many transfers
+  // happened. Every transfer is recorded in `run` (cleared first), not checked: the caller
+  // compares it with the golden model (tag, last, count, order, intensity). The handshake
+  // rules that apply here are checked (nothing but zeros while px_valid_o is low, no pixel
+  // after the last span's); violations count as protocol errors (counters()).
+  void run_back_to_back(const std::vector<device::Span>& spans, uint64_t pixels, StreamRun& run) {
+    for (auto* v : {&run.intensity, &run.tag}) v->clear(), v->reserve(pixels);
+    run.last.clear(), run.last.reserve(pixels);
+    run.pixel_cycle.clear(), run.pixel_cycle.reserve(pixels);
+    run.accept_cycle.clear(), run.accept_cycle.reserve(spans.size());
+    if (!expect_.empty()) error("run_back_to_back with " + std::to_string(expect_.size()) + " scoreboard pixels owed");
+    const size_t n = spans.size();
+    size_t next = 0;
+    uint64_t got = 0;
+    top_->px_ready_i = 1;
+    top_->span_valid_i = n > 0;
+    if (n > 0) drive_span(spans[0]);
+    const uint64_t limit = cycle_ + pixels + 4 * n + 1024;  // far above any sane run
+    auto sample = [&]() {
+      top_->clk_i = 0;
+      top_->eval();
+      const bool pv = top_->px_valid_o;
+      const uint32_t intensity = top_->px_intensity_o, tag = top_->px_tag_o;
+      const bool last = top_->px_last_o;
+      digest_add(digest_slot_, uint64_t{intensity} | uint64_t{tag} << 16 | uint64_t{last} << 48 | uint64_t{pv} << 49 |
+                                   uint64_t{top_->span_ready_o} << 50);
+      if (pv) {
+        run.intensity.push_back(intensity);
+        run.tag.push_back(static_cast<uint32_t>(tag & tag_mask_));
+        run.last.push_back(last);
+        run.pixel_cycle.push_back(cycle_);
+        ++got;
+      } else if (intensity != 0 || last) {
+        error("px_intensity_o/px_last_o not 0 while px_valid_o is low");
+      }
+      return pv;
+    };
+    while ((next < n || got < pixels) && cycle_ < limit) {
+      sample();
+      const bool fire = next < n && top_->span_ready_o;
+      dump(10 * (cycle_ - vcd_base_));
+      edge();
+      if (fire) {
+        run.accept_cycle.push_back(cycle_ - 1);
+        if (++next < n) drive_span(spans[next]);
+        else top_->span_valid_i = 0;
+      }
+    }
+    if (next < n || got < pixels)
+      error("back-to-back run did not finish: " + std::to_string(next) + " of " + std::to_string(n) + " spans, " +
+            std::to_string(got) + " of " + std::to_string(pixels) + " pixels");
+    top_->span_valid_i = 0;
+    for (int i = 0; i < 8; ++i) {
+      if (sample()) error("pixel after the last span's last pixel");
+      dump(10 * (cycle_ - vcd_base_));
+      edge();
+    }
+    cnt_.spans_accepted += next;
+    cnt_.pixels += got;
+    if (!run.intensity.empty()) {
+      run.first_accept = run.accept_cycle.empty() ? 0 : run.accept_cycle.front();
+      run.last_transfer = run.pixel_cycle.back();
+    }
+  }
+  uint64_t tag_mask() const { return tag_mask_; }
 
   // Sampled in the current cycle (after the last cycle()): for idle checks.
   bool px_valid() {
