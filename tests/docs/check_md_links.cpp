@@ -10,6 +10,11 @@
 //                                broken link, 0 when all resolve
 //   check_md_links --self-test   the checker on a generated tree with known good and
 //                                broken links; exit 0 only if it finds exactly the broken ones
+//
+// Source files (C++, SystemVerilog, Python, shell, CMake, Makefile) are checked too: every
+// path to a Markdown file they mention (`docs/device.md#fixed-point-contract`, taken from the
+// repository root or from the file's own folder) must exist with that heading, and a citation
+// of a document a clone does not have ("SPEC section 4", "issue 9 item 2") is an error.
 #include <algorithm>
 #include <cctype>
 #include <unistd.h>
@@ -128,6 +133,73 @@ std::vector<std::string> check_file(const fs::path& md, const fs::path& root) {
   return bad;
 }
 
+// One message per broken reference in the source file `src`.
+std::vector<std::string> check_source(const fs::path& src, const fs::path& root) {
+  std::vector<std::string> bad;
+  static const std::regex md_ref(R"(((?:\.\./|[A-Za-z0-9_-]+/)*[A-Za-z0-9_.-]+\.md)(#[A-Za-z0-9_-]+)?)");
+  static const std::regex outside(R"(SPEC section|SPEC §|\b[Ii]ssue [0-9]+ item [0-9]+|\([Ii]ssue [0-9]+\))");
+  const auto lines = read_lines(src);
+  for (size_t ln = 0; ln < lines.size(); ++ln) {
+    const std::string where = fs::relative(src, root).string() + ":" + std::to_string(ln + 1) + ": ";
+    std::smatch m;
+    if (std::regex_search(lines[ln], m, outside))
+      bad.push_back(where + "'" + m[0].str() + "': cites a document outside the repository; cite docs/ instead");
+    for (std::sregex_iterator it(lines[ln].begin(), lines[ln].end(), md_ref), end; it != end; ++it) {
+      const std::string path = (*it)[1].str(), frag = (*it)[2].matched ? (*it)[2].str().substr(1) : "";
+      // A reference is a path whose first folder exists (docs/x.md, ../README.md); bare names
+      // and placeholders (report.md, OUT/summary.md) are files a tool writes, not references.
+      const auto slash = path.find('/');
+      if (slash == std::string::npos) continue;
+      const std::string first = path.substr(0, slash);
+      if (first != ".." && !fs::is_directory(root / first) && !fs::is_directory(src.parent_path() / first)) continue;
+      fs::path resolved = root / path;
+      if (!fs::exists(resolved)) resolved = src.parent_path() / path;
+      if (!fs::exists(resolved)) {
+        bad.push_back(where + "'" + (*it)[0].str() + "': no such file");
+        continue;
+      }
+      if (!frag.empty() && !anchors(resolved).count(frag))
+        bad.push_back(where + "'" + (*it)[0].str() + "': no heading with anchor #" + frag);
+    }
+  }
+  return bad;
+}
+
+// Tracked (or untracked, not ignored) files matching the git pathspecs, or nothing outside git.
+std::vector<fs::path> git_files(const fs::path& root, const std::string& pathspecs) {
+  std::vector<fs::path> out;
+  const std::string cmd = "git -C '" + root.string() + "' ls-files --cached --others --exclude-standard -- " + pathspecs;
+  if (FILE* p = popen(cmd.c_str(), "r")) {
+    char buf[4096];
+    std::string all;
+    while (size_t n = fread(buf, 1, sizeof buf, p)) all.append(buf, n);
+    if (pclose(p) == 0) {
+      std::istringstream in(all);
+      std::string line;
+      while (std::getline(in, line))
+        if (!line.empty() && fs::exists(root / line)) out.push_back(root / line);
+    }
+  }
+  return out;
+}
+
+std::vector<fs::path> source_files(const fs::path& root) {
+  const std::string specs =
+      "'*.cpp' '*.hpp' '*.inl' '*.sv' '*.svh' '*.py' '*.sh' '*.cmake' '*CMakeLists.txt' 'Makefile' '*.f'";
+  if (fs::exists(root / ".git")) return git_files(root, specs);
+  std::vector<fs::path> out;
+  static const std::regex name(R"(.*\.(cpp|hpp|inl|sv|svh|py|sh|cmake|f)$|CMakeLists\.txt|Makefile)");
+  for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator(); ++it) {
+    const std::string n = it->path().filename().string();
+    if (it->is_directory() && (n == ".git" || n.rfind("build", 0) == 0)) {
+      it.disable_recursion_pending();
+      continue;
+    }
+    if (it->is_regular_file() && std::regex_match(n, name)) out.push_back(it->path());
+  }
+  return out;
+}
+
 std::vector<fs::path> markdown_files(const fs::path& root) {
   std::vector<fs::path> out;
   if (fs::exists(root / ".git")) {
@@ -167,7 +239,20 @@ int check_tree(const fs::path& root, std::vector<std::string>* found) {
       ++count;
     }
   }
-  if (!found) std::cout << files.size() << " Markdown files, " << count << " broken links\n";
+  auto sources = source_files(root);
+  std::sort(sources.begin(), sources.end());
+  for (const auto& f : sources) {
+    // This checker's own source names broken references on purpose (its self-test).
+    if (f.filename() == "check_md_links.cpp") continue;
+    for (const auto& b : check_source(f, root)) {
+      if (found) found->push_back(b);
+      else std::cout << b << "\n";
+      ++count;
+    }
+  }
+  if (!found)
+    std::cout << files.size() << " Markdown files, " << sources.size() << " source files, " << count
+              << " broken links or references\n";
   return count;
 }
 
@@ -183,17 +268,21 @@ int self_test() {
                                            "[ok up](../README.md#top) [ok self](#repeat-1) [BROKEN2](#repeat-2)\n"
                                            "[ok code heading](#code-make-x)\n"
                                            "[BROKEN3](../README.md#nowhere) [BROKEN4](../code.txt.bak)\n";
+  std::ofstream(root / "docs" / "tool.cpp") << "// see docs/a.md#second-part-x and ../README.md#top (ok), writes OUT/x.md\n"
+                                               "// BROKEN5 docs/gone.md, BROKEN6 docs/a.md#nope\n"
+                                               "// BROKEN7: as SPEC section 4 says\n";
   std::vector<std::string> found;
   check_tree(root, &found);
   fs::remove_all(root);
   int bad = 0;
-  const std::vector<std::string> expected{"docs/missing.md", "#repeat-2", "../README.md#nowhere", "../code.txt.bak"};
+  const std::vector<std::string> expected{"docs/missing.md", "#repeat-2",   "../README.md#nowhere", "../code.txt.bak",
+                                         "docs/gone.md",    "docs/a.md#nope", "SPEC section"};
   if (found.size() != expected.size()) ++bad;
   for (const auto& e : expected)
     if (std::none_of(found.begin(), found.end(), [&](const std::string& f) { return f.find("'" + e + "'") != std::string::npos; }))
       ++bad;
   for (const auto& f : found) std::cout << "found: " << f << "\n";
-  std::cout << (bad ? "self-test FAILED\n" : "self-test passed: exactly the 4 broken links found\n");
+  std::cout << (bad ? "self-test FAILED\n" : "self-test passed: exactly the 7 broken links and references found\n");
   return bad ? 1 : 0;
 }
 
