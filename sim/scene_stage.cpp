@@ -27,6 +27,26 @@ double cpu_now() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
+// error_stats(difference(a, b)) without making the difference image (image.hpp): covered
+// where either is, the same order and ties.
+ImageErrorStats diff_stats(const Image& a, const Image& b) {
+  ImageErrorStats st;
+  double sum2 = 0;
+  for (size_t k = 0; k < a.value.size(); ++k) {
+    if (!(a.covered[k] | b.covered[k])) continue;
+    const double e = a.value[k] - b.value[k];
+    ++st.pixels;
+    sum2 += e * e;
+    if (std::abs(e) > st.max_abs || st.argmax_x < 0) {
+      st.max_abs = std::max(st.max_abs, std::abs(e));
+      st.argmax_x = static_cast<int>(k % static_cast<size_t>(a.width));
+      st.argmax_y = static_cast<int>(k / static_cast<size_t>(a.width));
+    }
+  }
+  st.rms = st.pixels ? std::sqrt(sum2 / st.pixels) : 0.0;
+  return st;
+}
+
 nlohmann::json ext_json(const Extreme& e) {
   return {{"value", e.value}, {"n", e.n}, {"psi", e.psi}, {"C", e.c}, {"l", e.len}, {"pixel", e.pixel}};
 }
@@ -54,6 +74,12 @@ std::vector<LoadedScene> load_scenes(const std::string& dir) {
     out.push_back(std::move(ls));
   }
   return out;
+}
+
+double thread_cpu_now() {
+  timespec t{};
+  clock_gettime(CLOCK_THREAD_CPUTIME_ID, &t);
+  return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
 void run_beside(int threads, const std::function<void()>& side, const std::function<void()>& main) {
@@ -86,6 +112,11 @@ SceneRun::SceneRun(const device::DeviceModel& model, const Checker& checker, con
   s_.checks.policy = policy + " scene " + s_.name;
   s_.raster_seconds = ls.raster_seconds;
   s_.threads = opt.threads > 1 ? 2 : 1;
+  lsb_ = std::ldexp(1.0, -model.format().c_frac);
+}
+
+void SceneRun::note(const std::string& what) {
+  if (s_.checks.failures.size() < 12) s_.checks.failures.push_back(what);
 }
 
 void SceneRun::setup() {
@@ -123,39 +154,57 @@ void SceneRun::setup() {
 
 void SceneRun::prepare_shared() {
   auto& sh = ls_.shared;
-  if (sh.ready) return;
-  // Once per scene: the scalar setup (the setup error's reference and the float model)
-  // and the Phong truth. Needs no register: runs while setup() does.
-  const auto& spans = ls_.raster.spans;
-  const size_t n = spans.size();
-  auto t = Clock::now();
-  sh.setups.resize(n);
-  for (size_t j = 0; j < n; ++j) sh.setups[j] = scanline_setup(spans[j].setup_in);
-  s_.setup_check_seconds += since(t);
-  t = Clock::now();
-  sh.flt = Image(ls_.raster.width, ls_.raster.height);
-  for (size_t j = 0; j < n; ++j) {
-    const Span& sp = spans[j];
-    const size_t row = static_cast<size_t>(sp.y) * sh.flt.width;
-    for (int i = 0; i < sp.pixels(); ++i) {
-      sh.flt.value[row + sp.x_start + i] += pixel_blinn(sh.setups[j], sp.setup_in.n, i);
-      sh.flt.covered[row + sp.x_start + i] = 1;
-    }
+  if (!sh.ready) {
+    // Once per scene: the scalar setup of every span, the setup error's reference and the
+    // float model's input. Needs no register: runs while setup() does.
+    const auto t = Clock::now();
+    const auto& spans = ls_.raster.spans;
+    sh.setups.resize(spans.size());
+    for (size_t j = 0; j < spans.size(); ++j) sh.setups[j] = scanline_setup(spans[j].setup_in);
+    s_.setup_check_seconds += since(t);
   }
-  sh.phong = render(ls_.raster, phong_evaluator(ls_.scene));
-  sh.interp_image = error_stats(difference(sh.flt, sh.phong));
-  for (double v : sh.phong.value) sh.peak_phong = std::max(sh.peak_phong, v);
-  s_.checks.reference_seconds += since(t);
-  sh.ready = true;
+  setups_ready_.store(true, std::memory_order_release);
+}
+
+bool SceneRun::task() {
+  auto& sh = ls_.shared;
+  // The setup check needs the registers: the RTL's thread calls task() after setup(), the
+  // other after prepare(), which waits for it.
+  if (setups_ready_.load(std::memory_order_acquire) && !check_claimed_.exchange(true)) {
+    if (setup_done_) setup_check();
+    return true;
+  }
+  if (sh.ready) return false;
+  if (!phong_claimed_.exchange(true)) {
+    const auto t = Clock::now();
+    sh.phong = render(ls_.raster, phong_evaluator(ls_.scene));
+    shared_seconds_[1] = since(t);
+    return true;
+  }
+  if (setups_ready_.load(std::memory_order_acquire) && !float_claimed_.exchange(true)) {
+    // The float model from the same scalar setup (float_model_evaluator's arithmetic).
+    const auto t = Clock::now();
+    const auto& spans = ls_.raster.spans;
+    sh.flt = Image(ls_.raster.width, ls_.raster.height);
+    for (size_t j = 0; j < spans.size(); ++j) {
+      const Span& sp = spans[j];
+      const size_t row = static_cast<size_t>(sp.y) * sh.flt.width + sp.x_start;
+      for (int i = 0; i < sp.pixels(); ++i) {
+        sh.flt.value[row + i] += pixel_blinn(sh.setups[j], sp.setup_in.n, i);
+        sh.flt.covered[row + i] = 1;
+      }
+    }
+    shared_seconds_[0] = since(t);
+    return true;
+  }
+  return false;
 }
 
 void SceneRun::prepare() {
   registers_ready_.wait();
   if (!setup_done_) return;  // setup() threw; the exception reaches the caller
-  const auto& f = model_.format();
   const auto& spans = ls_.raster.spans;
   const size_t n = spans.size();
-  const auto& sh = ls_.shared;
   // The golden model's stream view of every span (intensity, last, tag).
   auto t = Clock::now();
   golden_.clear();
@@ -179,10 +228,17 @@ void SceneRun::prepare() {
       reference_.covered[row + i] = 1;
     }
   }
-  s_.register_image = error_stats(difference(sh.flt, reference_));
   s_.checks.reference_seconds += since(t);
+  rtl_ = Image(ls_.raster.width, ls_.raster.height);
+}
+
+void SceneRun::setup_check() {
   // The setup error: batch registers against the scalar setup's (host::span_registers).
-  t = Clock::now();
+  const auto& f = model_.format();
+  const auto& spans = ls_.raster.spans;
+  const size_t n = spans.size();
+  const auto& sh = ls_.shared;
+  const auto t = Clock::now();
   auto& se = s_.setup;
   for (size_t j = 0; j < n; ++j) {
     const ScanlineSetup& st = sh.setups[j];
@@ -212,70 +268,93 @@ void SceneRun::prepare() {
   s_.setup_check_seconds += since(t);
 }
 
-SceneStats SceneRun::finish(const StreamRun& run, double rtl_seconds, uint64_t protocol_errors,
-                            const std::vector<std::string>& protocol_messages) {
-  const auto& f = model_.format();
-  const auto& spans = ls_.raster.spans;
+bool SceneRun::compare(const StreamRun& run, bool wait) {
+  if (!setup_done_) return true;
+  auto t = Clock::now();  // the comparisons' time, not the waits'
+  uint64_t p = run.progress.load(std::memory_order_acquire);
+  while (next_span_ < spans_.size()) {
+    const uint64_t need = offset_[next_span_] + spans_[next_span_].reg.len + 1;
+    if ((p & ~StreamRun::kDone) < need && !(p & StreamRun::kDone)) {
+      s_.compare_seconds += since(t);
+      if (!wait) return false;
+      run.wait_for(need);
+      p = run.progress.load(std::memory_order_acquire);
+      t = Clock::now();
+      continue;
+    }
+    compare_span(next_span_++, run, p & ~StreamRun::kDone);
+  }
+  s_.compare_seconds += since(t);
+  return true;
+}
+
+void SceneRun::compare_span(size_t j, const StreamRun& run, uint64_t recorded) {
   auto& st = s_.checks;
-  auto note = [&](const std::string& what) {
-    if (st.failures.size() < 12) st.failures.push_back(what);
-  };
+  const Span& sp = ls_.raster.spans[j];
+  const device::Registers& r = spans_[j].reg;
+  const size_t o = offset_[j];
+  ++st.lines;
+  if (o >= recorded) return;  // the run ended short: finish() counts the missing pixels
+  const size_t npix = std::min<size_t>(r.len + 1, recorded - o);
+  // The stream view: tag and last of every pixel as the golden model has them.
+  for (size_t k = o; k < o + npix; ++k)
+    if (run.tag[k] != golden_[k].tag || (run.last[k] != 0) != golden_[k].last) {
+      if (stream_errors_ < 6)
+        note(st.policy + " stream: span " + std::to_string(j) + " pixel " + std::to_string(k - o) + ": tag/last " +
+             std::to_string(run.tag[k]) + "/" + std::to_string(run.last[k]) + ", golden " +
+             std::to_string(golden_[k].tag) + "/" + std::to_string(golden_[k].last));
+      ++stream_errors_;
+    }
+  // Latency: the span's pixel 0 after its accept.
+  ++st.latency[static_cast<int>(run.pixel_cycle[o] - run.accept_cycle[j])];
+  checker_.compare(r, kind_, npix, &run.intensity[o], &golden_intensity_[o], &psi_[o], &ref_b_[o], &ref_c_[o], st);
+  const double lsb = lsb_;
+  const size_t row = static_cast<size_t>(sp.y) * rtl_.width + sp.x_start;
+  for (size_t i = 0; i < npix; ++i) {
+    const double out = run.intensity[o + i] * lsb, ref = ref_c_[o + i];
+    rtl_.value[row + i] += out;
+    rtl_.covered[row + i] = 1;
+    const double e = std::fabs(out - ref);
+    if (e > s_.dev_abs.value) s_.dev_abs = {e, r.n, psi_[o + i], r.c * lsb, r.len, static_cast<int>(i), kind_};
+  }
+}
+
+SceneStats SceneRun::finish(const StreamRun& run, double rtl_seconds, uint64_t protocol_errors,
+                            const std::vector<std::string>& protocol_messages, double rtl_thread_cpu0,
+                            double side_cpu) {
+  auto& st = s_.checks;
+  auto& sh = ls_.shared;
   st.sim_seconds = rtl_seconds;
-  st.protocol_errors += protocol_errors;
+  st.protocol_errors += protocol_errors + stream_errors_;
   for (const auto& m : protocol_messages) note(st.policy + " stream: " + m);
   st.c_saturated_lines = s_.c_saturated_spans;
-  const size_t got = run.intensity.size();
-  if (got != pixels_) {
+  if (run.pixels != pixels_) {
     ++st.protocol_errors;
-    note(st.policy + " stream: " + std::to_string(got) + " pixels delivered, the spans hold " + std::to_string(pixels_));
-  }
-  Image rtl(ls_.raster.width, ls_.raster.height);
-  const double lsb = std::ldexp(1.0, -f.c_frac);
-  for (size_t j = 0; j < spans_.size(); ++j) {
-    const Span& sp = spans[j];
-    const device::Registers& r = spans_[j].reg;
-    const size_t o = offset_[j];
-    ++st.lines;
-    if (o >= got) continue;  // missing pixels: counted above
-    const size_t npix = std::min<size_t>(r.len + 1, got - o);
-    // The stream view: tag and last of every pixel as the golden model has them.
-    for (size_t k = o; k < o + npix; ++k)
-      if (run.tag[k] != golden_[k].tag || (run.last[k] != 0) != golden_[k].last) {
-        if (st.protocol_errors < 12)
-          note(st.policy + " stream: span " + std::to_string(j) + " pixel " + std::to_string(k - o) + ": tag/last " +
-               std::to_string(run.tag[k]) + "/" + std::to_string(run.last[k]) + ", golden " +
-               std::to_string(golden_[k].tag) + "/" + std::to_string(golden_[k].last));
-        ++st.protocol_errors;
-      }
-    // Latency: the span's pixel 0 after its accept.
-    if (j < run.accept_cycle.size()) ++st.latency[static_cast<int>(run.pixel_cycle[o] - run.accept_cycle[j])];
-    checker_.compare(r, kind_, npix, &run.intensity[o], &golden_intensity_[o], &psi_[o], &ref_b_[o], &ref_c_[o], st);
-    const size_t row = static_cast<size_t>(sp.y) * rtl.width + sp.x_start;
-    for (size_t i = 0; i < npix; ++i) {
-      const double out = run.intensity[o + i] * lsb, ref = ref_c_[o + i];
-      rtl.value[row + i] += out;
-      rtl.covered[row + i] = 1;
-      const double e = std::fabs(out - ref);
-      if (e > s_.dev_abs.value)
-        s_.dev_abs = {e, r.n, psi_[o + i], device::c_value(r.c, f), r.len, static_cast<int>(i), kind_};
-    }
+    note(st.policy + " stream: " + std::to_string(run.pixels) + " pixels recorded, the spans hold " +
+         std::to_string(pixels_));
   }
   st.cycles = s_.stream_cycles = run.cycles();
-
-  const auto& sh = ls_.shared;
+  if (!sh.ready) {
+    sh.interp_image = diff_stats(sh.flt, sh.phong);
+    for (double v : sh.phong.value) sh.peak_phong = std::max(sh.peak_phong, v);
+    st.reference_seconds += shared_seconds_[0] + shared_seconds_[1];
+    sh.ready = true;
+  }
   const auto& rs = ls_.raster.stats;
   s_.width = ls_.raster.width;
   s_.height = ls_.raster.height;
   s_.triangles = rs.triangles;
-  s_.spans = spans.size();
+  s_.spans = ls_.raster.spans.size();
   s_.covered_pixels = rs.covered_pixels;
   s_.max_l = static_cast<size_t>(rs.max_l);
-  const Image dev_err = difference(rtl, reference_);
-  s_.device_image = error_stats(dev_err);
+  s_.device_image = diff_stats(rtl_, reference_);
+  s_.register_image = diff_stats(sh.flt, reference_);
   s_.interp_image = sh.interp_image;
   s_.peak_phong = sh.peak_phong;
   s_.stage_seconds = since(t0_);
   s_.cpu_seconds = cpu_now() - cpu0_;
+  s_.rtl_thread_cpu_seconds = thread_cpu_now() - rtl_thread_cpu0;
+  s_.side_thread_cpu_seconds = side_cpu;
 
   if (!opt_.images_dir.empty()) {
     const auto t_img = Clock::now();
@@ -291,8 +370,8 @@ SceneStats SceneRun::finish(const StreamRun& run, double rtl_seconds, uint64_t p
     try {
       write_png(names[0] + ".tmp", sh.phong, scale);
       write_png(names[1] + ".tmp", sh.flt, scale);
-      write_png(names[2] + ".tmp", rtl, scale);
-      write_heatmap_png(names[3] + ".tmp", dev_err, "RTL - C COSN(PSI) " + s_.policy);
+      write_png(names[2] + ".tmp", rtl_, scale);
+      write_heatmap_png(names[3] + ".tmp", difference(rtl_, reference_), "RTL - C COSN(PSI) " + s_.policy);
       write_heatmap_png(names[4] + ".tmp", difference(sh.flt, sh.phong), "FLOAT - PHONG");
       for (const auto& nm : names) fs::rename(nm + ".tmp", nm);
     } catch (...) {
@@ -354,6 +433,8 @@ nlohmann::json SceneStats::to_json() const {
           {"seconds", c.seconds},
           {"stage_seconds", stage_seconds},
           {"cpu_seconds", cpu_seconds},
+          {"rtl_thread_cpu_seconds", rtl_thread_cpu_seconds},
+          {"side_thread_cpu_seconds", side_thread_cpu_seconds},
           {"checked_mpix_per_s", checked_mpix_per_s()},
           {"checked_mpix_per_cpu_s", cpu_seconds > 0 ? c.pixels / cpu_seconds / 1e6 : 0.0},
           {"rtl_seconds", rtl_s},
@@ -362,6 +443,7 @@ nlohmann::json SceneStats::to_json() const {
           {"reference_seconds", c.reference_seconds},
           {"setup_seconds", setup_seconds},
           {"setup_check_seconds", setup_check_seconds},
+          {"compare_seconds", compare_seconds},
           {"raster_seconds", raster_seconds},
           {"image_seconds", image_seconds},
           {"simulated_pixels_per_second", rtl_s > 0 ? c.pixels / rtl_s : 0.0},

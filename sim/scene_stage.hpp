@@ -29,6 +29,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include <atomic>
 #include <chrono>
 #include <cstdint>
 #include <functional>
@@ -99,8 +100,13 @@ struct SceneStats {
   double raster_seconds = 0.0, image_seconds = 0.0;  // rasterization; PNG encoding and writing
   double setup_seconds = 0.0;        // the batched setup (and the span batch, first configuration)
   double setup_check_seconds = 0.0;  // scalar setup and the comparison of the two
+  double compare_seconds = 0.0;      // the RTL's pixels against the golden model and the references
   double stage_seconds = 0.0;        // wall time of the scene on this configuration, PNG writing excluded
   double cpu_seconds = 0.0;          // process CPU time of the same (every thread)
+  // CPU time of each thread's share (thread clocks): the RTL's thread (setup, RTL, tasks,
+  // finish without the PNGs) and the other. On an idle machine the wall time is about the
+  // larger of the two; on a busy one it says how far the wall time is from that.
+  double rtl_thread_cpu_seconds = 0.0, side_thread_cpu_seconds = 0.0;
   std::vector<std::string> images;   // files written (empty when this policy wrote none)
 
   double checked_mpix_per_s() const { return stage_seconds > 0 ? checks.pixels / stage_seconds / 1e6 : 0.0; }
@@ -114,24 +120,38 @@ struct SceneStats {
 
 // One scene on one configuration, everything but the RTL run (scene_stage.cpp):
 //   setup()           the batched setup: the registers the RTL gets (the RTL's thread)
-//   prepare_shared()  what every configuration shares (LoadedScene::shared), when not made yet
-//   prepare()         waits for setup(), then the golden model, the references, the reference
-//                     image and the setup error: nothing that needs the RTL's output
-//   finish()          compares the recorded stream with prepare()'s results, writes the images
-// prepare_shared() and prepare() may run on a second thread from the start.
+//   prepare_shared()  the scalar setup of every span, when no configuration made it yet
+//   prepare()         waits for setup(), then the golden model, the references and the
+//                     reference image: what compare() needs
+//   task()            claims and does one of the parts that need neither the RTL's output nor
+//                     each other, if one is left (the setup error; the float model and the
+//                     Phong truth, when no configuration made them yet): either thread
+//   compare()         the recorded stream against prepare()'s results, as far as the run got
+//   finish()          what is left after both threads: the statistics, the images
+// With two threads the second runs prepare_shared, prepare, then compare as far as the RTL
+// got and a task whenever it waits, while this one runs setup and the RTL, then tasks.
 class SceneRun {
  public:
   SceneRun(const device::DeviceModel& model, const Checker& checker, const std::string& policy, LoadedScene& ls,
            const SceneOptions& opt, uint64_t tag_mask);
   void setup();
   void prepare_shared();
+  bool task();
   void prepare();
+  // Compares every span whose pixels the run has published; with `wait`, waits for the rest.
+  // Returns true when every span is compared.
+  bool compare(const StreamRun& run, bool wait);
   const std::vector<device::Span>& rtl_spans() const { return corrupt_.empty() ? spans_ : corrupt_; }
   uint64_t pixels() const { return pixels_; }
+  // rtl_thread_cpu0: this thread's CPU clock when the scene began; side_cpu: the other's CPU time.
   SceneStats finish(const StreamRun& run, double rtl_seconds, uint64_t protocol_errors,
-                    const std::vector<std::string>& protocol_messages);
+                    const std::vector<std::string>& protocol_messages, double rtl_thread_cpu0, double side_cpu);
 
  private:
+  void setup_check();
+  void compare_span(size_t j, const StreamRun& run, uint64_t recorded);
+  void note(const std::string& what);
+
   const device::DeviceModel& model_;
   const Checker& checker_;
   LoadedScene& ls_;
@@ -139,10 +159,14 @@ class SceneRun {
   SceneStats s_;
   std::string kind_;  // "scene:<name>", once per scene
   uint64_t tag_mask_;
+  double lsb_ = 0.0;  // of C and the output
   std::chrono::steady_clock::time_point t0_;
   double cpu0_ = 0.0;
-  std::latch registers_ready_{1};  // setup() ended: prepare() may read the registers
-  bool setup_done_ = false;        // ... and it did not throw
+  std::latch registers_ready_{1};          // setup() ended: prepare() may read the registers
+  bool setup_done_ = false;                // ... and it did not throw
+  std::atomic<bool> setups_ready_{false};  // prepare_shared() ended: the float model may start
+  std::atomic<bool> check_claimed_{false}, phong_claimed_{false}, float_claimed_{false};
+  double shared_seconds_[2] = {0.0, 0.0};  // float model, Phong truth (whoever made them)
   host::RegisterBatch regs_;
   std::vector<device::Span> spans_, corrupt_;  // latched registers + tag; the RTL's copy when corrupted
   std::vector<uint64_t> offset_;               // first pixel of each span in the stream
@@ -152,19 +176,28 @@ class SceneRun {
   std::vector<uint32_t> golden_intensity_;
   std::vector<double> psi_, ref_b_, ref_c_;
   Image reference_;  // C cos^n(psi_i) of the loaded registers, lights summed
+  // compare()'s state and results
+  size_t next_span_ = 0;
+  uint64_t stream_errors_ = 0;  // tag/last against the golden stream view
+  Image rtl_;
 };
+
+// CPU time of the calling thread, seconds.
+double thread_cpu_now();
 
 // Runs `side` on a second thread while `main` runs on this one (threads > 1), or both here
 // (side first); rethrows the side's exception after both ended.
 void run_beside(int threads, const std::function<void()>& side, const std::function<void()>& main);
 
-// The scene through the stream: the setup and the RTL on this thread, SceneRun's preparations
-// on another (opt.threads > 1) or before and after them.
+// The scene through the stream: the setup and the RTL on this thread, the rest on another
+// (opt.threads > 1) or before and after them.
 template <class V>
 SceneStats run_scene(StreamHarness<V>& h, const Checker& checker, const std::string& policy, LoadedScene& ls,
                      const SceneOptions& opt) {
+  const double cpu0 = thread_cpu_now();
   SceneRun sr(h.model(), checker, policy, ls, opt, h.tag_mask());
   StreamRun run;
+  double side_cpu = 0.0;
   const uint64_t errors0 = h.counters().protocol_errors;
   const size_t messages0 = h.counters().first_errors.size();
   double rtl_seconds = 0.0;
@@ -176,20 +209,34 @@ SceneStats run_scene(StreamHarness<V>& h, const Checker& checker, const std::str
   };
   if (opt.threads > 1) {
     run_beside(
-        opt.threads,
+        2,
         [&]() {
+          const double c0 = thread_cpu_now();
           sr.prepare_shared();
           sr.prepare();
+          // Compare what the RTL delivered so far; while it is ahead, make a shared part.
+          while (!sr.compare(run, false))
+            if (!sr.task()) sr.compare(run, true);
+          while (sr.task()) {
+          }
+          side_cpu = thread_cpu_now() - c0;
         },
-        rtl);
+        [&]() {
+          rtl();
+          while (sr.task()) {
+          }
+        });
   } else {
     sr.prepare_shared();
     rtl();
     sr.prepare();
+    sr.compare(run, true);
+    while (sr.task()) {
+    }
   }
   const auto& c = h.counters();
   const std::vector<std::string> messages(c.first_errors.begin() + static_cast<long>(messages0), c.first_errors.end());
-  return sr.finish(run, rtl_seconds, c.protocol_errors - errors0, messages);
+  return sr.finish(run, rtl_seconds, c.protocol_errors - errors0, messages, cpu0, side_cpu);
 }
 
 // Scene rows of the summary (one per scene and policy).

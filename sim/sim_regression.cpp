@@ -582,12 +582,13 @@ int main(int argc, char** argv) {
       ref_total += s.reference_seconds;
     }
     for (const auto& s : scene_stats) {
-      std::printf("scene %s on %s: %.2f M checked pixels/s (%llu pixels in %.3f s wall, %.3f s CPU; RTL %.3f s, "
-                  "golden %.3f s, references %.3f s, setup %.3f s + check %.3f s, %d thread%s)\n",
+      std::printf("scene %s on %s: %.2f M checked pixels/s (%llu pixels in %.1f ms wall; CPU %.1f ms: RTL's thread "
+                  "%.1f, other %.1f; RTL %.1f ms, golden %.1f, references %.1f, compare %.1f, setup %.1f + check %.1f)\n",
                   s.name.c_str(), s.policy.c_str(), s.checked_mpix_per_s(), (unsigned long long)s.checks.pixels,
-                  s.stage_seconds, s.cpu_seconds, s.checks.sim_seconds, s.checks.golden_seconds,
-                  s.checks.reference_seconds, s.setup_seconds, s.setup_check_seconds, s.threads,
-                  s.threads > 1 ? "s" : "");
+                  1e3 * s.stage_seconds, 1e3 * s.cpu_seconds, 1e3 * s.rtl_thread_cpu_seconds,
+                  1e3 * s.side_thread_cpu_seconds, 1e3 * s.checks.sim_seconds, 1e3 * s.checks.golden_seconds,
+                  1e3 * s.checks.reference_seconds, 1e3 * s.compare_seconds, 1e3 * s.setup_seconds,
+                  1e3 * s.setup_check_seconds);
       rtl_total += s.checks.sim_seconds;
       golden_total += s.checks.golden_seconds;
       ref_total += s.checks.reference_seconds;

@@ -13,7 +13,8 @@
 //
 // run_back_to_back is the scene stage's fast path: spans back to back, px_ready_i always
 // high, every transfer recorded (StreamRun) and compared with the golden model by the
-// caller afterwards, so that a clock costs the two evaluations and little else.
+// caller, on another thread while the run goes on or afterwards, so that a clock costs the
+// two evaluations and little else.
 #pragma once
 
 #include "device_model.hpp"
@@ -25,6 +26,8 @@
 #pragma GCC diagnostic pop
 #include "verilator_runtime.hpp"
 
+#include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <deque>
 #include <memory>
@@ -44,14 +47,29 @@ struct StreamCounters {
   std::vector<std::string> first_errors;  // at most 10 messages
 };
 
-// What run_back_to_back saw: every pixel transfer in order, every span's accept cycle.
+// What run_back_to_back saw: every pixel transfer in order, every span's accept cycle. The
+// arrays are sized before the run and never reallocated, and the run publishes how far it
+// got (progress: pixels recorded, with kDone set at the end), so that another thread may
+// read the entries below the published count while the run goes on.
 struct StreamRun {
+  static constexpr uint64_t kDone = 1ULL << 63;
   std::vector<uint32_t> intensity, tag;
   std::vector<uint8_t> last;
   std::vector<uint64_t> pixel_cycle;   // cycle of each transfer
   std::vector<uint64_t> accept_cycle;  // cycle in which each span was accepted
+  std::atomic<uint64_t> progress{0};   // pixels recorded (release), | kDone when the run ended
+  uint64_t pixels = 0, spans = 0;      // recorded, final (transfers beyond the arrays are errors)
   uint64_t first_accept = 0, last_transfer = 0;
-  uint64_t cycles() const { return intensity.empty() ? 0 : last_transfer - first_accept + 1; }
+  uint64_t cycles() const { return pixels ? last_transfer - first_accept + 1 : 0; }
+  // Blocks until at least `count` pixels are recorded or the run ended; returns how many are.
+  uint64_t wait_for(uint64_t count) const {
+    uint64_t p = progress.load(std::memory_order_acquire);
+    while ((p & ~kDone) < count && !(p & kDone)) {
+      progress.wait(p, std::memory_order_acquire);
+      p = progress.load(std::memory_order_acquire);
+    }
+    return p & ~kDone;
+  }
 };
 
 template <class V>
@@ -172,19 +190,28 @@ class StreamHarness {
   // Spans back to back (span_valid_i high whenever one is pending, each span held until
   // accepted) with px_ready_i always high, then 8 idle clocks in which nothing may come out.
   // `pixels` is what the spans hold (sum of l + 1): the run ends when that many transfers
-  // happened. Every transfer is recorded in `run` (cleared first), not checked: the caller
-  // compares it with the golden model (tag, last, count, order, intensity). The handshake
-  // rules that apply here are checked (nothing but zeros while px_valid_o is low, no pixel
-  // after the last span's); violations count as protocol errors (counters()).
+  // happened. Every transfer is recorded in `run` (a fresh one), not checked: the caller
+  // compares it with the golden model (tag, last, count, order, intensity), possibly on
+  // another thread as the progress comes in. The handshake rules that apply here are checked
+  // (nothing but zeros while px_valid_o is low, no pixel after the last span's); violations
+  // count as protocol errors (counters()).
   void run_back_to_back(const std::vector<device::Span>& spans, uint64_t pixels, StreamRun& run) {
-    for (auto* v : {&run.intensity, &run.tag}) v->clear(), v->reserve(pixels);
-    run.last.clear(), run.last.reserve(pixels);
-    run.pixel_cycle.clear(), run.pixel_cycle.reserve(pixels);
-    run.accept_cycle.clear(), run.accept_cycle.reserve(spans.size());
-    if (!expect_.empty()) error("run_back_to_back with " + std::to_string(expect_.size()) + " scoreboard pixels owed");
-    const size_t n = spans.size();
-    size_t next = 0;
+    // The progress ends with kDone whatever happens, or a reader would wait forever.
+    struct Publish {
+      StreamRun& r;
+      uint64_t& got;
+      ~Publish() {
+        r.progress.store(std::min<uint64_t>(got, r.intensity.size()) | StreamRun::kDone, std::memory_order_release);
+        r.progress.notify_all();
+      }
+    };
     uint64_t got = 0;
+    Publish publish{run, got};
+    const size_t n = spans.size();
+    run.intensity.assign(pixels, 0), run.tag.assign(pixels, 0), run.last.assign(pixels, 0);
+    run.pixel_cycle.assign(pixels, 0), run.accept_cycle.assign(n, 0);
+    if (!expect_.empty()) error("run_back_to_back with " + std::to_string(expect_.size()) + " scoreboard pixels owed");
+    size_t next = 0;
     top_->px_ready_i = 1;
     top_->span_valid_i = n > 0;
     if (n > 0) drive_span(spans[0]);
@@ -198,10 +225,13 @@ class StreamHarness {
       digest_add(digest_slot_, uint64_t{intensity} | uint64_t{tag} << 16 | uint64_t{last} << 48 | uint64_t{pv} << 49 |
                                    uint64_t{top_->span_ready_o} << 50);
       if (pv) {
-        run.intensity.push_back(intensity);
-        run.tag.push_back(static_cast<uint32_t>(tag & tag_mask_));
-        run.last.push_back(last);
-        run.pixel_cycle.push_back(cycle_);
+        if (got < pixels) {
+          run.intensity[got] = intensity;
+          run.tag[got] = static_cast<uint32_t>(tag & tag_mask_);
+          run.last[got] = last;
+          run.pixel_cycle[got] = cycle_;
+          run.last_transfer = cycle_;
+        }
         ++got;
       } else if (intensity != 0 || last) {
         error("px_intensity_o/px_last_o not 0 while px_valid_o is low");
@@ -214,9 +244,14 @@ class StreamHarness {
       dump(10 * (cycle_ - vcd_base_));
       edge();
       if (fire) {
-        run.accept_cycle.push_back(cycle_ - 1);
+        run.accept_cycle[next] = cycle_ - 1;
         if (++next < n) drive_span(spans[next]);
         else top_->span_valid_i = 0;
+      }
+      // Publish every 1024 clocks: a reader wakes a few hundred times per million pixels.
+      if ((cycle_ & 1023) == 0) {
+        run.progress.store(std::min(got, pixels), std::memory_order_release);
+        run.progress.notify_all();
       }
     }
     if (next < n || got < pixels)
@@ -228,12 +263,12 @@ class StreamHarness {
       dump(10 * (cycle_ - vcd_base_));
       edge();
     }
+    if (got > pixels) error(std::to_string(got - pixels) + " pixels more than the spans hold");
     cnt_.spans_accepted += next;
     cnt_.pixels += got;
-    if (!run.intensity.empty()) {
-      run.first_accept = run.accept_cycle.empty() ? 0 : run.accept_cycle.front();
-      run.last_transfer = run.pixel_cycle.back();
-    }
+    run.pixels = std::min(got, pixels);
+    run.spans = next;
+    run.first_accept = n > 0 ? run.accept_cycle.front() : 0;
   }
   uint64_t tag_mask() const { return tag_mask_; }
 
