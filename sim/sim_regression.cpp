@@ -194,7 +194,7 @@ struct SceneRunOptions {
 // the same configuration, with the same checker and budgets; the scene images are written
 // when images_dir is not empty.
 template <class V, class Root, class SV, class SRoot>
-PolicyStats run_config(const specular::BuildConfig& bc, Budget budget, const std::vector<Scanline>& det,
+PolicyStats run_config(const specular::BuildConfig& bc, const std::vector<Scanline>& det,
                        const std::vector<Scanline>& rnd, uint64_t seed, std::vector<LoadedScene>& scenes,
                        const std::string& images_dir, const SceneRunOptions& sro,
                        std::vector<SceneStats>& scene_stats) {
@@ -204,6 +204,8 @@ PolicyStats run_config(const specular::BuildConfig& bc, Budget budget, const std
   if (!format_matches_rtl<Root>(f, why))
     throw std::runtime_error("configuration " + bc.name + ": the verilated parameters differ from its device::Format: " +
                              why);
+  // The budget is the configuration's (model/device/rom_image.hpp build_configs).
+  const Budget budget{bc.budget.rel_epicenter, bc.budget.abs_lobe, bc.budget.n1_min_ref_lsb};
   PolicyStats st;
   st.policy = policy;
   st.budget = budget;
@@ -515,22 +517,22 @@ int main(int argc, char** argv) {
     if (want("default"))
       all.push_back(run_config<Vspecular_unit_default, Vspecular_unit_default_specular_unit, Vspecular_scene_default,
                                Vspecular_scene_default_specular_stream>(
-          specular::build_config("default"), {0.0010, 0.01, 4.0}, det, rnd, seed, scenes, take_images(), sro,
+          specular::build_config("default"), det, rnd, seed, scenes, take_images(), sro,
           scene_stats));
     if (want("patent"))
       all.push_back(run_config<Vspecular_unit_patent, Vspecular_unit_patent_specular_unit, Vspecular_scene_patent,
                                Vspecular_scene_patent_specular_stream>(
-          specular::build_config("patent"), {0.012, 0.025, 0.0}, det, rnd, seed, scenes, take_images(), sro,
+          specular::build_config("patent"), det, rnd, seed, scenes, take_images(), sro,
           scene_stats));
     if (want("banks4-interp"))
       all.push_back(run_config<Vspecular_unit_banks4_interp, Vspecular_unit_banks4_interp_specular_unit,
                                Vspecular_scene_banks4_interp, Vspecular_scene_banks4_interp_specular_stream>(
-          specular::build_config("banks4-interp"), {0.0020, 0.02, 4.0}, det, rnd, seed, every ? none : scenes,
+          specular::build_config("banks4-interp"), det, rnd, seed, every ? none : scenes,
           take_images(), sro, scene_stats));
     if (want("interp128"))
       all.push_back(run_config<Vspecular_unit_interp128, Vspecular_unit_interp128_specular_unit,
                                Vspecular_scene_interp128, Vspecular_scene_interp128_specular_stream>(
-          specular::build_config("interp128"), {0.0010, 0.01, 4.0}, det, rnd, seed, every ? none : scenes,
+          specular::build_config("interp128"), det, rnd, seed, every ? none : scenes,
           take_images(), sro, scene_stats));
     print_table(all);
     if (!scene_stats.empty()) {

@@ -37,18 +37,18 @@ std::string BuildConfig::cos_hex() const { return dir + "/" + cos_rom_file_name(
 const std::vector<BuildConfig>& build_configs() {
   static const std::vector<BuildConfig> configs = [] {
     std::vector<BuildConfig> v;
-    v.push_back({"default", device::Format{}, "minimax", "roms"});
-    v.push_back({"patent", device::Format::patent(), "maclaurin", "roms/patent"});
+    v.push_back({"default", device::Format{}, "minimax", "roms", {0.0010, 0.01, 4.0}});
+    v.push_back({"patent", device::Format::patent(), "maclaurin", "roms/patent", {0.012, 0.025, 0.0}});
     // The default datapath with the patent's bank set: what the bank set buys.
     device::Format b4;
     b4.banks = {1, 2, 4, 16};
     b4.bank_max_n = derive_bank_max_n(b4.banks, parse_coef_spec("minimax"));
-    v.push_back({"banks4-interp", b4, "minimax", "roms/variants/banks4-interp"});
+    v.push_back({"banks4-interp", b4, "minimax", "roms/variants/banks4-interp", {0.0020, 0.02, 4.0}});
     // Half the ROM 12 entries: what the table size buys.
     device::Format i128;
     i128.cos_addr_bits = 7;
     i128.cos_delta_bits = 13;
-    v.push_back({"interp128", i128, "minimax", "roms/variants/interp128"});
+    v.push_back({"interp128", i128, "minimax", "roms/variants/interp128", {0.0010, 0.01, 4.0}});
     return v;
   }();
   return configs;

@@ -37,11 +37,22 @@ inline constexpr const char* kPatentCosHex = "roms/patent/cos_k_1_2_4_16.hex";
 // each with its parameters) and reports: name, formats, ROM 9 policy, and where romgen
 // writes their ROM files (`romgen --all`). The first is the RTL default, the second the
 // patent's own configuration.
+// The device error a configuration must meet (the regression's check (c), sim/README.md):
+// |err| <= rel_epicenter * ref + 1 LSB in the epicenter, |err| <= abs_lobe * C + 1 LSB over
+// the lobe; n = 1 is held to the relative budget where ref >= n1_min_ref_lsb output LSBs
+// (0: n = 1 is only reported, as for a direct table).
+struct ErrorBudget {
+  double rel_epicenter = 0.0;
+  double abs_lobe = 0.0;
+  double n1_min_ref_lsb = 0.0;
+};
+
 struct BuildConfig {
   std::string name;
   device::Format f;
   std::string policy;  // ROM 9 coefficient policy (parse_coef_spec)
   std::string dir;     // relative to the repository root
+  ErrorBudget budget;
   std::string coef_hex() const;
   std::string cos_hex() const;
 };
