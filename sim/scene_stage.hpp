@@ -12,12 +12,13 @@
 //   <scene>_device_error.png  heatmap RTL - C cos^n(psi_i) from the loaded registers (check (c))
 //   <scene>_interp_error.png  heatmap float model - Phong truth
 //
-// Speed: the stage models only what a scene needs. The RTL runs one pixel per clock; the
-// golden model (DeviceModel::stream_span per span), the double references and the setup
-// comparison need only the registers, so they run on a second thread beside the RTL
-// (SceneOptions::threads) and the pixels are compared afterwards. What does not depend on
-// the configuration (the span batch, the scalar setup, the Phong and float images) is made
-// by the first configuration that runs the scene and kept in LoadedScene::shared.
+// Speed: the stage models only what a scene needs. The RTL runs one pixel per clock and only
+// records its output; the golden model (DeviceModel::stream_span per span), the double
+// references and the setup comparison need only the registers, so they run on a second
+// thread beside the RTL (SceneOptions::threads), which then compares the pixels as the RTL
+// publishes them. What does not depend on the configuration (the span batch, the scalar
+// setup, the Phong and float images) is made by the first configuration that runs the scene
+// and kept in LoadedScene::shared.
 #pragma once
 
 #include "checks.hpp"
@@ -62,7 +63,7 @@ std::vector<LoadedScene> load_scenes(const std::string& dir);
 
 struct SceneOptions {
   std::string images_dir;  // write the PNGs here; empty: none
-  int threads = 2;         // 2: golden model, references and setup check beside the RTL; 1: after it
+  int threads = 2;         // 2: golden model, references, checks beside the RTL (SceneRun); 1: around it
   // Test only: flip bit 0 of dpsi of this span on its way to the RTL (the golden model keeps
   // the true registers), so the stage must fail; -1: none.
   long corrupt_span = -1;
