@@ -468,7 +468,7 @@ void print_scene_table(const std::vector<SceneStats>& all) {
                     std::to_string(s.spans), std::to_string(c.pixels), std::to_string(s.c_saturated_spans),
                     std::to_string(c.mismatches), fmt("%.3e", s.dev_abs.value), fmt("%.4f%%", 100 * c.rel_allow.value),
                     fmt("%.5f", c.abs_allow.value), fmt("%.3e", s.interp_image.max_abs),
-                    fmt("%.5f%%", 100 * s.setup.rel_epicenter) + " / " + fmt("%.2f", s.setup.abs_lsb) +
+                    fmt("%.2e%%", 100 * s.setup.rel_epicenter) + " / " + fmt("%.2e", s.setup.abs_lsb) +
                         (s.setup.ok() ? "" : " (" + std::to_string(s.setup.violations) + " over)"),
                     fmt("%.4f", c.pixels ? double(s.stream_cycles) / c.pixels : 0.0),
                     fmt("%.2f", s.checked_mpix_per_s()) + " (" +
