@@ -82,12 +82,7 @@ double thread_cpu_now() {
   return static_cast<double>(t.tv_sec) + 1e-9 * static_cast<double>(t.tv_nsec);
 }
 
-void run_beside(int threads, const std::function<void()>& side, const std::function<void()>& main) {
-  if (threads <= 1) {
-    side();
-    main();
-    return;
-  }
+void run_beside(const std::function<void()>& side, const std::function<void()>& main) {
   std::exception_ptr error;
   {
     std::jthread t([&]() {

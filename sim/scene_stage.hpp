@@ -186,9 +186,9 @@ class SceneRun {
 // CPU time of the calling thread, seconds.
 double thread_cpu_now();
 
-// Runs `side` on a second thread while `main` runs on this one (threads > 1), or both here
-// (side first); rethrows the side's exception after both ended.
-void run_beside(int threads, const std::function<void()>& side, const std::function<void()>& main);
+// Runs `side` on a second thread while `main` runs on this one; rethrows the side's exception
+// after both ended.
+void run_beside(const std::function<void()>& side, const std::function<void()>& main);
 
 // The scene through the stream: the setup and the RTL on this thread, the rest on another
 // (opt.threads > 1) or before and after them.
@@ -210,12 +210,11 @@ SceneStats run_scene(StreamHarness<V>& h, const Checker& checker, const std::str
   };
   if (opt.threads > 1) {
     run_beside(
-        2,
         [&]() {
           const double c0 = thread_cpu_now();
           sr.prepare_shared();
           sr.prepare();
-          // Compare what the RTL delivered so far; while it is ahead, make a shared part.
+          // Compare what the RTL delivered so far; while it is ahead, do a task.
           while (!sr.compare(run, false))
             if (!sr.task()) sr.compare(run, true);
           while (sr.task()) {
