@@ -14,7 +14,8 @@
 // Source files (C++, SystemVerilog, Python, shell, CMake, Makefile) are checked too: every
 // path to a Markdown file they mention (`docs/device.md#fixed-point-contract`, taken from the
 // repository root or from the file's own folder) must exist with that heading, and a citation
-// of a document a clone does not have ("SPEC section 4", "issue 9 item 2") is an error.
+// of a document a clone does not have (the domain specification's section numbers, or an
+// issue tracker's "issue N item M") is an error.
 #include <algorithm>
 #include <cctype>
 #include <unistd.h>
@@ -137,7 +138,9 @@ std::vector<std::string> check_file(const fs::path& md, const fs::path& root) {
 std::vector<std::string> check_source(const fs::path& src, const fs::path& root) {
   std::vector<std::string> bad;
   static const std::regex md_ref(R"(((?:\.\./|[A-Za-z0-9_-]+/)*[A-Za-z0-9_.-]+\.md)(#[A-Za-z0-9_-]+)?)");
-  static const std::regex outside(R"(SPEC section|SPEC §|\b[Ii]ssue [0-9]+ item [0-9]+|\([Ii]ssue [0-9]+\))");
+  // Assembled from pieces so that this file does not cite what it forbids.
+  static const std::string spec = std::string("SP") + "EC";
+  static const std::regex outside(spec + " section|" + spec + " §|\\b[Ii]ssue [0-9]+ it" + "em [0-9]+|\\([Ii]ssue [0-9]+\\)");
   const auto lines = read_lines(src);
   for (size_t ln = 0; ln < lines.size(); ++ln) {
     const std::string where = fs::relative(src, root).string() + ":" + std::to_string(ln + 1) + ": ";
@@ -270,13 +273,13 @@ int self_test() {
                                            "[BROKEN3](../README.md#nowhere) [BROKEN4](../code.txt.bak)\n";
   std::ofstream(root / "docs" / "tool.cpp") << "// see docs/a.md#second-part-x and ../README.md#top (ok), writes OUT/x.md\n"
                                                "// BROKEN5 docs/gone.md, BROKEN6 docs/a.md#nope\n"
-                                               "// BROKEN7: as SPEC section 4 says\n";
+                                               "// BROKEN7: as SP" "EC sec" "tion 4 says\n";
   std::vector<std::string> found;
   check_tree(root, &found);
   fs::remove_all(root);
   int bad = 0;
   const std::vector<std::string> expected{"docs/missing.md", "#repeat-2",   "../README.md#nowhere", "../code.txt.bak",
-                                         "docs/gone.md",    "docs/a.md#nope", "SPEC section"};
+                                         "docs/gone.md",    "docs/a.md#nope", "SP" "EC sec" "tion"};
   if (found.size() != expected.size()) ++bad;
   for (const auto& e : expected)
     if (std::none_of(found.begin(), found.end(), [&](const std::string& f) { return f.find("'" + e + "'") != std::string::npos; }))
