@@ -8,6 +8,7 @@
 #include <cmath>
 #include <numbers>
 #include <sstream>
+#include <stdexcept>
 
 namespace specular::sim {
 namespace {
@@ -36,11 +37,25 @@ double ipow(double x, uint32_t n) {
   return r;
 }
 
-int64_t sign_extend(int64_t v, int bits) {
-  const uint64_t mask = (1ULL << bits) - 1;
-  uint64_t u = static_cast<uint64_t>(v) & mask;
-  if ((u >> (bits - 1)) & 1U) u |= ~mask;
-  return static_cast<int64_t>(u);
+// A code as a port of `bits` bits carries it: the low `bits` bits, read unsigned or as
+// two's complement (docs/interfaces.md#register-interface-specular_unit: widths and formats).
+uint64_t port_unsigned(uint64_t v, int bits) { return v % (uint64_t{1} << bits); }
+int64_t port_signed(int64_t v, int bits) {
+  const int64_t low = static_cast<int64_t>(port_unsigned(static_cast<uint64_t>(v), bits));
+  return low >= (int64_t{1} << (bits - 1)) ? low - (int64_t{1} << bits) : low;
+}
+
+// The registers the device holds after the host wrote `w`: each field as its port carries
+// it. Written here from the port formats rather than taken from DeviceModel::latch, so the
+// references below share no code with the golden model but the format constants.
+device::Registers as_loaded(const device::Registers& w, const device::Format& f) {
+  device::Registers r;
+  r.c = static_cast<uint32_t>(port_unsigned(w.c, f.c_bits));
+  r.dpsi = port_signed(w.dpsi, f.angle_bits);
+  r.psi0 = port_signed(w.psi0, f.angle_bits);
+  r.n = static_cast<uint32_t>(port_unsigned(w.n, f.n_bits));
+  r.len = static_cast<uint32_t>(port_unsigned(w.len, f.len_bits));
+  return r;
 }
 
 }  // namespace
@@ -122,21 +137,34 @@ Checker::Checker(const device::DeviceModel& model, std::vector<double> a_exact, 
   const auto& f = model_.format();
   const double h = kHalfPi * std::ldexp(1.0, -f.cos_addr_bits);
   k_.lsb = std::ldexp(1.0, -f.c_frac);
-  k_.angle_lsb = std::ldexp(1.0, -f.angle_frac);
   k_.half_step = f.cos_interp ? h * std::ldexp(1.0, -f.cos_frac_bits) : h / 2;
   k_.interp = f.cos_interp ? h * h / 8.0 : 0.0;
   k_.coef_err = kHalfPi * std::ldexp(1.0, -(f.coef_frac + 1));
   k_.trunc = std::ldexp(1.0, -f.psi_mul_frac) + std::ldexp(1.0, -f.angle_frac);
   k_.rom_lsb = std::ldexp(1.0, -f.cos_data_bits);
+  // Decoder 10 from the format's table, not from the golden model (DeviceModel::bank_of):
+  // n = 0 and n > 1000 select no bank, bank j serves bank_max_n[j-1] < n <= bank_max_n[j]
+  // (docs/device.md#the-blocks, block 10, and docs/device.md#fixed-point-contract, step 6).
   for (uint32_t n = 0; n < static_cast<uint32_t>(f.coef_rom_depth()); ++n) {
-    bank_.push_back(model_.bank_of(n));
-    xe_.push_back(bank_.back() >= 0 ? epicenter_end(static_cast<double>(n)) : 0.0);
+    int bank = -1;
+    if (n >= 1 && n <= static_cast<uint32_t>(f.max_n()))
+      for (size_t j = f.bank_max_n.size(); j-- > 0;)
+        if (n <= static_cast<uint32_t>(f.bank_max_n[j])) bank = static_cast<int>(j);
+    bank_.push_back(bank);
+    xe_.push_back(bank >= 0 ? epicenter_end(static_cast<double>(n)) : 0.0);
   }
+  // The reference angle psi_i = psi0 + i dpsi is the exact sum (references()): register 8
+  // holds it without wrapping (docs/device.md#fixed-point-contract: psi0 then psi + dpsi,
+  // exact integer arithmetic; register 8 cannot overflow over a line) and a double holds it
+  // exactly. Both are properties of the format; refuse one that breaks them.
+  const int sum_bits = f.angle_bits - 1 + f.len_bits;  // |psi0 + l dpsi| <= 2^(angle_bits-1) * 2^len_bits
+  if (sum_bits > f.acc_bits - 1 || sum_bits > 53)
+    throw std::invalid_argument("Checker: register 8 (acc_bits) or a double cannot hold psi0 + l dpsi exactly");
 }
 
 void Checker::check_line(const Scanline& sl, const LineRun& run, bool random, PolicyStats& st) const {
   const auto& f = model_.format();
-  const device::Registers r = model_.latch(sl.reg);
+  const device::Registers r = as_loaded(sl.reg, f);
   ++st.lines;
   (random ? st.rnd_lines : st.det_lines) += 1;
   if (sl.c_saturated) ++st.c_saturated_lines;
@@ -172,19 +200,23 @@ void Checker::check_line(const Scanline& sl, const LineRun& run, bool random, Po
   compare(r, sl.kind, npix, run.pixels.data(), golden_.data(), psi_.data(), ref_b_.data(), ref_c_.data(), st);
 }
 
-void Checker::references(const device::Registers& r, size_t npix, double* psi_out, double* ref_b,
+void Checker::references(const device::Registers& written, size_t npix, double* psi_out, double* ref_b,
                          double* ref_c) const {
   const auto& f = model_.format();
+  const device::Registers r = as_loaded(written, f);
   const double c = r.c * k_.lsb;  // exact, as device::c_value
-  const double angle_lsb = k_.angle_lsb;
   const int bank = bank_[r.n];
   const bool n_ok = bank >= 0;
   const uint32_t k = n_ok ? static_cast<uint32_t>(f.banks[bank]) : 0;
   const double a = n_ok ? a_[r.n] : 0.0;
   for (size_t i = 0; i < npix; ++i) {
-    // Register 8 as the device (and DeviceModel::trace) holds it: psi0 + i dpsi at acc_bits.
-    const int64_t code = sign_extend(r.psi0 + static_cast<int64_t>(i) * r.dpsi, f.acc_bits);
-    const double psi = static_cast<double>(code) * angle_lsb;  // exact: a power-of-two scale
+    // psi_i = psi0 + i dpsi from the loaded register codes alone, exact integer arithmetic
+    // (no wrap: the constructor checked that register 8 and a double hold every such sum),
+    // then radians by the register format (angle_value: code * 2^-angle_frac, exact). Not
+    // the golden model's accumulator: a bug shared by it and the RTL moves the RTL's pixels
+    // away from these references and fails (b) and (c).
+    const int64_t code = r.psi0 + static_cast<int64_t>(i) * r.dpsi;
+    const double psi = device::angle_value(code, f);
     const double apsi = std::fabs(psi);
     psi_out[i] = psi;
     ref_b[i] = n_ok && a * apsi < kHalfPi && apsi < kHalfPi ? c * ipow(std::cos(a * apsi), k) : 0.0;
@@ -192,9 +224,10 @@ void Checker::references(const device::Registers& r, size_t npix, double* psi_ou
   }
 }
 
-void Checker::compare(const device::Registers& r, const std::string& kind, size_t npix, const uint32_t* got_px,
-                      const uint32_t* golden, const double* psi_in, const double* ref_b_in, const double* ref_c_in,
-                      PolicyStats& st) const {
+void Checker::compare(const device::Registers& written, const std::string& kind, size_t npix,
+                      const uint32_t* got_px, const uint32_t* golden, const double* psi_in, const double* ref_b_in,
+                      const double* ref_c_in, PolicyStats& st) const {
+  const device::Registers r = as_loaded(written, model_.format());
   const double lsb = k_.lsb;
   const double c = r.c * lsb;  // exact, as device::c_value
   const int bank = bank_[r.n];

@@ -6,7 +6,11 @@
 //   (c) against C cos^n(psi) in double (the device error): relative in the epicenter
 //       |psi| <= x_e(n), absolute over the lobe |psi| <= pi/2; budget + 1 output LSB,
 //   (d) the protocol (the harness reports violations in LineRun::protocol_error).
-// psi and C are the exact values of the quantized registers. The line stages call
+// psi and C are the exact values of the quantized registers: the references take the
+// register codes as the ports carry them and psi_i = psi0 + i dpsi by exact integer
+// arithmetic (docs/device.md#fixed-point-contract), and use neither the golden model's
+// accumulator nor its register latch nor its decoder; only (a) compares with the golden
+// model. The line stages call
 // check_line; the scene stage (scene_stage.hpp) calls references() and compare() per span,
 // the first ahead of the RTL run (it needs only the registers), the second on the pixels the
 // stream delivered.
@@ -63,8 +67,9 @@ struct PolicyStats {
   Extreme abs_outside;      // max (|err| - 1 LSB) / C where |psi| > pi/2 (reference 0)
   std::map<uint32_t, uint64_t> rel_violations_by_n;
   // n = 1: the epicenter [0, pi/2] ends at the zero of cos, where the relative error of a
-  // direct table is unbounded (SPEC 3); reported here, and part of ok() (rel_violations)
-  // only where the reference is at least Budget::n1_min_ref_lsb output LSBs.
+  // direct table is unbounded (docs/metrics.md#maximum-relative-error-in-the-epicenter);
+  // reported here, and part of ok() (rel_violations) only where the reference is at least
+  // Budget::n1_min_ref_lsb output LSBs.
   Extreme rel_allow_n1;
   uint64_t n1_rel_over_budget = 0;
   double n1_budget_holds_below = 1e9;  // smallest |psi| at which n = 1 exceeds the relative budget
@@ -94,14 +99,14 @@ class Checker {
   void check_line(const Scanline& sl, const LineRun& run, bool random, PolicyStats& st) const;
 
   // Of the last check_line: the (c) reference C cos^n(psi_i) of each checked pixel (0 past
-  // pi/2 and for invalid n), from the latched registers.
+  // pi/2 and for invalid n), from the loaded registers.
   const std::vector<double>& last_reference() const { return ref_c_; }
 
-  // The double references of npix pixels of the (latched) registers r: psi_i, (b)
-  // C cos^k(a |psi_i|) and (c) C cos^n(psi_i). Const and allocation-free, so it may run on
-  // another thread than the RTL.
+  // The double references of npix pixels of the registers r as written (each field is cut to
+  // its port width here): psi_i = psi0 + i dpsi exactly, (b) C cos^k(a |psi_i|) and (c)
+  // C cos^n(psi_i). Const and allocation-free, so it may run on another thread than the RTL.
   void references(const device::Registers& r, size_t npix, double* psi, double* ref_b, double* ref_c) const;
-  // (a)-(c) for npix pixels of the latched registers r: `got` from the RTL, `golden` from the
+  // (a)-(c) for npix pixels of the registers r as written: `got` from the RTL, `golden` from the
   // golden model, the references from references(). Counts pixels, not lines.
   void compare(const device::Registers& r, const std::string& kind, size_t npix, const uint32_t* got,
                const uint32_t* golden, const double* psi, const double* ref_b, const double* ref_c,
@@ -113,10 +118,10 @@ class Checker {
   Budget budget_;
   std::vector<double> dk_;   // max |d/dx cos^k x| per bank
   std::vector<double> d2k_;  // max |d^2/dx^2 cos^k x| per bank
-  std::vector<int> bank_;    // decoder 10 per n code (-1: invalid), so no search per span
+  std::vector<int> bank_;    // decoder 10 per n code from Format::bank_max_n (-1: invalid), no search per span
   std::vector<double> xe_;   // epicenter end x_e(n) per n code (docs/metrics.md)
   struct {
-    double lsb, angle_lsb, half_step, interp, coef_err, trunc, rom_lsb;
+    double lsb, half_step, interp, coef_err, trunc, rom_lsb;
   } k_{};  // the format's constants (checks.cpp)
   // Per-line scratch of check_line (reused to avoid allocations per line).
   mutable std::vector<uint32_t> golden_;
