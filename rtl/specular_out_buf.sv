@@ -56,13 +56,9 @@ module specular_out_buf #(
         count_d = count_q - 2'd1;
       end
       2'b11: begin
-        // count 1 (2 is impossible: adv_q is low there): the new pixel replaces the head.
-        if (count_q == 2'd2) begin
-          head_d = tail_q;
-          tail_d = in_data_i;
-        end else begin
-          head_d = in_data_i;
-        end
+        // count 1: a pop needs an entry, and a push needs adv_q, which is the registered
+        // room (count <= 1, asserted by AdvIsRoom_A), so the buffer is never full here.
+        head_d = in_data_i;
       end
       default: ;
     endcase
@@ -87,8 +83,9 @@ module specular_out_buf #(
   assign px_data_o  = head_q;
 
   // Assertions (rtl/specular_assert.svh). At most two entries, and the advance is the
-  // registered "room" (so a push never meets a full buffer); while stalled the pixel
-  // stays valid and unchanged; an empty buffer reads 0; a valid pixel is known.
+  // registered "room" (so a push never meets a full buffer: the push-and-pop arm above
+  // relies on it); while stalled the pixel stays valid and unchanged; an empty buffer reads
+  // 0; a valid pixel is known.
   `SPEC_ASSERT(CountMax_A, count_q <= 2'd2, clk_i, rst_ni)
   `SPEC_ASSERT(AdvIsRoom_A, adv_q == (count_q <= 2'd1), clk_i, rst_ni)
   `SPEC_ASSERT_IF(HoldWhileStalled_A, px_valid_o && !px_ready_i, count_d != 2'd0 && head_d == head_q, clk_i, rst_ni)
