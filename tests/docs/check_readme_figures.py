@@ -1,0 +1,602 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
+"""The measured figures of README.md and rtl/fpga/README.md, checked against the JSON of the runs
+that measured them (README.md, section "Where the measured figures live").
+
+Sources (all committed; the paths are relative to the repository root):
+  docs/measured/sim.json          `sim_regression --json` (deterministic: counts, errors, clocks)
+  docs/measured/scene_bench.json  `scene_bench --json` over scenes/*.json (timings: the one run
+                                  whose figures README prints)
+  docs/fpga_figures.json          `make fpga` (place and route: too slow to re-run in ctest)
+  `specular errors ...`           run here when --specular names the binary (deterministic)
+
+Each figure is a regular expression on the document whose groups are the printed numbers, and
+a function of the sources giving the value each must print. A printed number must equal its
+value to the printed precision (half a unit of its last digit; counts exactly); a figure whose
+text is not found, is found more than once, or differs fails with a message naming it. Every
+number in the measured regions of the documents (FIGURE_REGIONS) must belong to a figure or to
+a stated non-measured constant (NOT_MEASURED); one that does not ("nobody measured it") fails.
+
+usage: check_readme_figures.py ROOT [--specular BIN]     check
+       check_readme_figures.py ROOT --list [--specular BIN]   print every figure's expected value
+       check_readme_figures.py ROOT --self-test [--specular BIN]  tampered copies must fail
+"""
+import json
+import math
+import os
+import re
+import shutil
+import subprocess
+import sys
+import tempfile
+
+
+# ------------------------------------------------------------------ sources
+class Data:
+    def __init__(self, root, specular=None):
+        self.root = root
+        self.specular = specular
+
+        def load(rel):
+            with open(os.path.join(root, rel)) as f:
+                return json.load(f)
+
+        self.sim = load("docs/measured/sim.json")
+        self.sb = load("docs/measured/scene_bench.json")
+        self.fpga = load("docs/fpga_figures.json")
+        self._cli = {}
+
+    # scene_bench
+    def scene(self, name):
+        for x in self.sb["scenes"]:
+            if x["scene"] == name:
+                return x
+        raise KeyError(f"scene {name} not in docs/measured/scene_bench.json")
+
+    def scenes(self, names=None):
+        return [x for x in self.sb["scenes"] if names is None or x["scene"] in names]
+
+    def speedups(self, x):
+        """device x phong_sleef as defined, AVX2 throughout, AVX-512 throughout."""
+        m = x.get("isa_matched", {})
+        return [x["speedup_vs_phong_sleef"]["device"], m["avx2"]["speedup"], m["avx512"]["speedup"]]
+
+    # place and route
+    def pnr(self, core, part):
+        for r in self.fpga["runs"]:
+            if r["core"] == core and r["part"].startswith(part):
+                return r
+        raise KeyError(f"{core} {part} not in docs/fpga_figures.json")
+
+    # sim_regression
+    def cfg(self, name):
+        return self.sim["configs"][name]
+
+    def cli(self, *args):
+        """The CSV rows of `specular ARGS` as dicts (run once per argument list)."""
+        if args not in self._cli:
+            if not self.specular:
+                raise KeyError("needs --specular BIN (the `specular` CLI)")
+            out = subprocess.run([self.specular, *args], check=True, capture_output=True, text=True).stdout
+            lines = [ln for ln in out.splitlines() if ln.strip()]
+            head = lines[0].split(",")
+            self._cli[args] = [dict(zip(head, ln.split(","))) for ln in lines[1:]]
+        return self._cli[args]
+
+
+def span_pixels(x):
+    return x["pixels"] / x["spans"]
+
+
+def lights(x):
+    return ", ".join(sorted({"constant" if h.startswith("constant") else "per pixel" for h in x["lights"]}))
+
+
+# ------------------------------------------------------------------ figures
+# A figure: (document, pattern, [(name, value function), ...]) with one group per name. In the
+# pattern a space stands for any run of white space (prose is wrapped). Value functions take
+# Data; "<" before a name makes the printed number an upper bound of the value instead.
+SHORT = ["bunny", "dense_mesh", "spheres"]  # the short-span scenes the prose names
+LONG = ["grazing_plane", "wide_glint"]  # 8 or more pixels per span
+
+
+def rng(fn, names=None):
+    return [(lambda d: min(fn(d, x) for x in d.scenes(names))), (lambda d: max(fn(d, x) for x in d.scenes(names)))]
+
+
+def ranged(doc, pattern, label, fn, names=None):
+    lo, hi = rng(fn, names)
+    return (doc, pattern, [(label + " (lowest)", lo), (label + " (highest)", hi)])
+
+
+def stream_scene_total(d, key):
+    ss = d.sim["scenes_stream"]
+    return sum(s[key] for s in ss.values()) / sum(s["pixels"] for s in ss.values())
+
+
+R = "README.md"
+F = "rtl/fpga/README.md"
+FIGURES = [
+    # Headline
+    ranged(R, r"device method with its scanline setup is (\S+)-(\S+) x as fast", "headline: device x phong_sleef",
+           lambda d, x: d.speedups(x)[0]),
+    ranged(R, r"but only (\S+)-(\S+) x when the setup, too, is held to AVX2", "headline: AVX2 throughout",
+           lambda d, x: d.speedups(x)[1]),
+    ranged(R, r"\((\S+)-(\S+) x with both on AVX-512\)", "headline: AVX-512 throughout", lambda d, x: d.speedups(x)[2]),
+    # The device
+    (R, r"\((\S+) cycles per pixel at `l = 2047`, measured by `make sim`\)",
+     [("register interface cycles per pixel at l = 2047", lambda d: d.cfg("default")["cycles_per_pixel_long_lines"])]),
+    # The streaming core
+    (R, r"Measured by `make sim` \(stream stage, (\S+) random spans with gaps, stalls and resets\): (\S+) mismatches, "
+        r"(\S+) protocol errors, (\S+) pixels per clock after the (\S+)-clock fill on `l = 0..3` spans \((\S+) with it\)",
+     [("stream stage spans", lambda d: d.sim["stream"]["spans"]),
+      ("stream stage mismatches", lambda d: d.sim["stream"]["mismatches"]),
+      ("stream stage protocol errors", lambda d: d.sim["stream"]["protocol_errors"]),
+      ("stream pixels per clock, l = 0..3, without the fill",
+       lambda d: d.sim["stream"]["pixels_per_clock_short_spans_steady"]),
+      ("stream fill latency (clocks, as measured on the scenes)",
+       lambda d: d.sim["scenes"]["bunny"]["latency"] if d.sim["scenes"]["bunny"]["latency"] ==
+       d.sim["scenes"]["bunny"]["expected_latency"] else math.nan),
+      ("stream pixels per clock, l = 0..3, with the fill", lambda d: d.sim["stream"]["pixels_per_clock_short_spans"])]),
+    (R, r"on the scenes \(streamed in the scene stage\), (\S+) clocks per pixel through the stream against (\S+) "
+        r"through the register interface's `l \+ 24` per line \((\S+) on `dense_mesh`\)",
+     [("scenes: stream clocks per pixel", lambda d: stream_scene_total(d, "stream_cycles")),
+      ("scenes: register interface clocks per pixel", lambda d: stream_scene_total(d, "register_cycles")),
+      ("dense_mesh: register interface clocks per pixel",
+       lambda d: d.sim["scenes_stream"]["dense_mesh"]["register_clocks_per_pixel"])]),
+    # Measured figures and known limits: make sim
+    (R, r"`make sim`, every configuration \((\S+) line runs, (\S+) million pixels each",
+     [("line runs per configuration", lambda d: d.cfg("default")["lines"]),
+      ("pixels per configuration (millions)", lambda d: d.cfg("default")["pixels"] / 1e6)]),
+    (R, r"(\S+) bit-exact mismatches, (\S+) protocol errors, latency (\S+)\.",
+     [("bit-exact mismatches, every configuration", lambda d: sum(c["mismatches"] for c in d.sim["configs"].values())),
+      ("protocol errors, every configuration", lambda d: sum(c["protocol_errors"] for c in d.sim["configs"].values())),
+      ("latency", lambda d: int(next(iter(d.cfg("default")["latency"]))))]),
+    (R, r"default build (\S+) % relative in the epicenter",
+     [("default: relative error in the epicenter (%)", lambda d: 100 * d.cfg("default")["rel_epicenter_with_lsb"]["value"])]),
+    (R, r"and (\S+) C absolute over the lobe; patent build (\S+) % and (\S+) C",
+     [("default: absolute error over the lobe (C)", lambda d: d.cfg("default")["abs_lobe_with_lsb"]["value"]),
+      ("patent: relative error in the epicenter (%)", lambda d: 100 * d.cfg("patent")["rel_epicenter_with_lsb"]["value"]),
+      ("patent: absolute error over the lobe (C)", lambda d: d.cfg("patent")["abs_lobe_with_lsb"]["value"])]),
+    (R, r"measured (\S+)% in float, `specular errors --model patent --n 3`",
+     [("patent float model at n = 3 (%)",
+       lambda d: 100 * float(d.cli("errors", "--model", "patent", "--n", "3")[0]["max_rel_epicenter"]))]),
+    (R, r"the patent build's budget is (\S+) %",
+     [("patent relative budget (%)", lambda d: 100 * d.cfg("patent")["budget"]["rel_epicenter"])]),
+    # Measured figures and known limits: place and route
+    (R, r"iCE40-HX8K (\S+) / (\S+) MHz \(target (\S+)\), (\S+) / (\S+) of (\S+) logic cells; iCE40-UP5K (\S+) / (\S+) MHz "
+        r"\(target (\S+)\), (\S+) / (\S+) of (\S+) logic cells; (\S+) block RAMs, no DSP",
+     [("specular_unit HX8K Fmax", lambda d: d.pnr("specular_unit", "HX8K")["fmax_mhz"]),
+      ("specular_stream HX8K Fmax", lambda d: d.pnr("specular_stream", "HX8K")["fmax_mhz"]),
+      ("HX8K target", lambda d: d.pnr("specular_stream", "HX8K")["target_mhz"]),
+      ("specular_unit HX8K logic cells", lambda d: d.pnr("specular_unit", "HX8K")["lcs"]),
+      ("specular_stream HX8K logic cells", lambda d: d.pnr("specular_stream", "HX8K")["lcs"]),
+      ("HX8K logic cells available", lambda d: d.pnr("specular_stream", "HX8K")["lcs_available"]),
+      ("specular_unit UP5K Fmax", lambda d: d.pnr("specular_unit", "UP5K")["fmax_mhz"]),
+      ("specular_stream UP5K Fmax", lambda d: d.pnr("specular_stream", "UP5K")["fmax_mhz"]),
+      ("UP5K target", lambda d: d.pnr("specular_stream", "UP5K")["target_mhz"]),
+      ("specular_unit UP5K logic cells", lambda d: d.pnr("specular_unit", "UP5K")["lcs"]),
+      ("specular_stream UP5K logic cells", lambda d: d.pnr("specular_stream", "UP5K")["lcs"]),
+      ("UP5K logic cells available", lambda d: d.pnr("specular_stream", "UP5K")["lcs_available"]),
+      ("block RAMs", lambda d: max(r["brams"] for r in d.fpga["runs"] if r["core"] in ("specular_unit", "specular_stream")))]),
+    # System speed
+    (R, r"2-vCPU AMD EPYC shared with other jobs, `--reps (\d+) --min-time (\S+)`\)",
+     [("scene_bench rounds", lambda d: int(re.search(r"median of (\d+) ", d.sb["timer"]).group(1))),
+      ("scene_bench min time (s)", lambda d: float(re.search(r">= (\S+) s", d.sb["timer"]).group(1)))]),
+]
+
+
+def goals_figures():
+    """The goals and causes bullets under the System speed table."""
+    out = []
+    out.append((R, r"met as defined \(lowest (\w+) (\S+) x, (\w+) (\S+) x, (\w+) (\S+) x\)", "NAMED3"))
+    out.append((R, r"missed at one instruction set on (\w+) \(AVX2 (\S+) x, AVX-512 (\S+) x\), (\w+) \((\S+) x, (\S+) x\) "
+                   r"and (\w+) \((\S+) x, (\S+) x\)", "MISSED"))
+    out.append((R, r"met in every configuration \((\S+)-(\S+) x\)",
+                [("5 x goal scenes, every configuration (lowest)",
+                  lambda d: min(min(d.speedups(x)) for x in d.scenes(LONG))),
+                 ("5 x goal scenes, every configuration (highest)",
+                  lambda d: max(max(d.speedups(x)) for x in d.scenes(LONG)))]))
+    out.append((R, r"the setup costs (\S+) \(dense_mesh, (\S+) % flat spans\) to (\S+) ns per span here with AVX-512",
+                [("setup ns per span, dense_mesh", lambda d: d.scene("dense_mesh")["device_setup_ns_per_span"]),
+                 ("dense_mesh flat spans (%)",
+                  lambda d: 100 * d.scene("dense_mesh")["spans_l0"] / d.scene("dense_mesh")["spans"]),
+                 ("setup ns per span (highest)", lambda d: max(x["device_setup_ns_per_span"] for x in d.scenes()))]))
+    out.append((R, r"per-pixel SLEEF Phong costs (\S+)-(\S+) ns per pixel with AVX2 \((\S+)-(\S+) with AVX-512\)",
+                [("phong_sleef ns per pixel AVX2 (lowest)",
+                  lambda d: min(x["isa_matched"]["avx2"]["phong_sleef"] for x in d.scenes())),
+                 ("phong_sleef ns per pixel AVX2 (highest)",
+                  lambda d: max(x["isa_matched"]["avx2"]["phong_sleef"] for x in d.scenes())),
+                 ("phong_sleef ns per pixel AVX-512 (lowest)",
+                  lambda d: min(x["isa_matched"]["avx512"]["phong_sleef"] for x in d.scenes())),
+                 ("phong_sleef ns per pixel AVX-512 (highest)",
+                  lambda d: max(x["isa_matched"]["avx512"]["phong_sleef"] for x in d.scenes()))]))
+    out.append(ranged(R, r"With (\S+)-(\S+) pixels per span the setup is paid", "short-span scenes: pixels per span",
+                      lambda d, x: span_pixels(x), SHORT))
+    be = lambda d: d.sb["break_even"][-1]  # noqa: E731
+    out.append((R, r"the device is at or below phong_sleef from l = (\d+) \((\d+) pixels per span\); at one instruction "
+                   r"set from l = (\d+) \(AVX2 and AVX-512\)\. At l = (\d+): (\S+) against (\S+) ns per pixel",
+                [("break-even l", lambda d: d.sb["break_even_l"]),
+                 ("break-even pixels per span", lambda d: d.sb["break_even_l"] + 1),
+                 ("break-even l at one instruction set",
+                  lambda d: d.sb["break_even_l_isa"]["avx2"] if d.sb["break_even_l_isa"]["avx2"] ==
+                  d.sb["break_even_l_isa"]["avx512"] else math.nan),
+                 ("break-even sweep: longest l", lambda d: be(d)["l"]),
+                 ("break-even sweep: device ns per pixel at the longest l", lambda d: be(d)["device"]),
+                 ("break-even sweep: phong_sleef ns per pixel at the longest l", lambda d: be(d)["phong_sleef"])]))
+    out.append((R, r"the batched setup does (\S+)-(\S+) M spans/s on one host core",
+                [("setup M spans/s (lowest)", lambda d: min(x["setup_mspans_per_s"] for x in d.scenes())),
+                 ("setup M spans/s (highest)", lambda d: max(x["setup_mspans_per_s"] for x in d.scenes()))]))
+    feed = lambda name, key: (lambda d: d.scene(name)[key])  # noqa: E731
+    out.append((R, r"In this run, at (\S+) MHz, that is (\S+) M spans/s on dense_mesh \((\S+) host cores to feed one "
+                   r"core\), (\S+) on bunny \((\S+)\), (\S+) on spheres \((\S+)\), under (\S+) on the other scenes",
+                [("scene_bench Fmax (docs/fpga_figures.json at the run)", lambda d: d.sb["fmax_mhz"]),
+                 ("dense_mesh core M spans/s", feed("dense_mesh", "core_mspans_per_s_at_fmax")),
+                 ("dense_mesh host cores to feed", feed("dense_mesh", "host_cores_to_feed")),
+                 ("bunny core M spans/s", feed("bunny", "core_mspans_per_s_at_fmax")),
+                 ("bunny host cores to feed", feed("bunny", "host_cores_to_feed")),
+                 ("spheres core M spans/s", feed("spheres", "core_mspans_per_s_at_fmax")),
+                 ("spheres host cores to feed", feed("spheres", "host_cores_to_feed")),
+                 ("<host cores to feed, other scenes",
+                  lambda d: max(x["host_cores_to_feed"] for x in d.sb["scenes"] if x["scene"] not in SHORT))]))
+    return out
+
+
+TABLES = [
+    # (document, header start, {column: (name, value function of (Data, key cell))}); the first column
+    # is the key; every row must have a source entry and every source entry a row.
+    (R, "| scene | spans | pixels per span | H | device |", "scene_bench scenes",
+     lambda d: [x["scene"] for x in d.sb["scenes"]],
+     {"spans": lambda d, k: d.scene(k)["spans"],
+      "pixels per span": lambda d, k: span_pixels(d.scene(k)),
+      "H": lambda d, k: lights(d.scene(k)),
+      "device": lambda d, k: d.scene(k)["ns_per_pixel"]["device"],
+      "phong_sleef": lambda d, k: d.scene(k)["ns_per_pixel"]["phong_sleef"],
+      "phong_scalar": lambda d, k: d.scene(k)["ns_per_pixel"]["phong_scalar"],
+      "pow_cos": lambda d, k: d.scene(k)["ns_per_pixel"]["pow_cos"],
+      "device x": lambda d, k: d.speedups(d.scene(k))[0],
+      "AVX2 throughout x": lambda d, k: d.speedups(d.scene(k))[1],
+      "AVX-512 throughout x": lambda d, k: d.speedups(d.scene(k))[2]}),
+]
+
+
+def fpga_table():
+    """rtl/fpga/README.md's tables: one row per docs/fpga_figures.json run, keyed by core and device."""
+    def run(d, k):
+        core, part = k
+        for r in d.fpga["runs"]:
+            if r["core"] == core and r["part"] == part:
+                return r
+        raise KeyError(f"{core} {part} not in docs/fpga_figures.json")
+
+    def fmax_text(d, k):
+        r = run(d, k)
+        return f"{r['fmax_mhz']:.2f}" + ("" if r["fmax_mhz"] >= r["target_mhz"] else " (missed)")
+
+    return {"fit": lambda d, k: "yes",
+            "LCs": lambda d, k: f"{run(d, k)['lcs']} / {run(d, k)['lcs_available']}",
+            "SB_LUT4": lambda d, k: run(d, k)["sb_lut4"],
+            "FFs": lambda d, k: run(d, k)["ffs"],
+            "BRAMs": lambda d, k: run(d, k)["brams"],
+            "DSPs": lambda d, k: run(d, k)["dsps"],
+            "Fmax (MHz)": fmax_text,
+            "target": lambda d, k: run(d, k)["target_mhz"],
+            "pixels per second": lambda d, k: run(d, k)["fmax_mhz"] * 1e6}  # one pixel per clock
+
+
+FPGA_TABLES = [
+    (F, "| core | device | fit | LCs |", cores)
+    for cores in (("specular_unit", "specular_stream"), ("specular_axil",))
+]
+
+# Where every number must be a figure above or a constant below: (document, start, end) regular
+# expressions; the region runs from the start match to the end match.
+FIGURE_REGIONS = [
+    (R, r"\*\*Headline", r"Figures, goals"),
+    (R, r"A line occupies", r"measured by\s+`make sim`\)"),
+    (R, r"- Measured by `make sim` \(stream stage", r"\(23\.11 on `dense_mesh`\)|on `dense_mesh`\)\."),
+    (R, r"Measured figures and known limits:", r"## Timing diagrams"),
+    (R, r"## System speed", r"## Where the measured figures live"),
+    (F, r"## Measured", r"On the HX8K the AXI4-Lite core meets"),
+]
+# Numbers in those regions that are not measurements: definitions, goals, budgets, settings.
+NOT_MEASURED = [
+    r"one 2048-pixel line",                      # the benchmark's definition (section 1 of the report)
+    r"at least 4 (?:output )?LSB",               # the n = 1 budget rule (sim/README.md)
+    r"seed 1\b",                                 # the place-and-route seed
+    r"\(256 Kbit, 64 block RAMs\)",              # the patent ROM's size, from its format
+    r"2-vCPU",                                   # the machine
+    r">= 1\.0 x",                                # goal
+    r">= 5 x on every\s+scene with 8 or more pixels per span",  # goal
+    r"4 banks x 4096 x 16 bits = 256 Kbit, 64 block RAMs",
+    r"8 banks x\s+256 x 31 bits",                # the configuration
+    r"Yosys 0\.23, nextpnr-ice40 0\.4",          # tool versions
+    r"commit `[0-9a-f]+`",
+    r"4-entry span FIFO",                        # the configuration
+    r"(?:ROM|register|multiplier|counter|decoder|control unit) \d+",  # the patent's block numbers
+    r"\(?(?:its )?section \d+\)?",                 # sections of the report
+    r"plus 24 cycles per line",                  # the protocol (docs/interfaces.md)
+    r"1-LSB allowance",                          # the check's definition (sim/README.md)
+    r"`cos` is 0",                               # mathematics
+]
+
+
+# ------------------------------------------------------------------ checking
+def printed(text):
+    """The printed number: its value and half a unit of its last digit."""
+    t = text.replace(",", "").strip("*")
+    m = re.fullmatch(r"-?\d+(?:\.(\d+))?(?:e([+-]?\d+))?", t)
+    if not m:
+        return None, None
+    dec = len(m.group(1) or "")
+    exp = int(m.group(2) or 0)
+    return float(t), 0.5 * 10.0 ** (exp - dec)
+
+
+def agrees(text, want):
+    if isinstance(want, str):
+        return text.strip("*") == want
+    got, tol = printed(text)
+    if got is None or want is None or (isinstance(want, float) and math.isnan(want)):
+        return False
+    return abs(got - want) <= tol * (1 + 1e-9) + 1e-12
+
+
+def fmt_want(want):
+    if want is None:
+        return "none (no such scene, or the text's claim does not hold)"
+    if isinstance(want, str):
+        return repr(want)
+    return f"{want:.6g}"
+
+
+def expand(pattern):
+    return pattern.replace(" ", r"\s+")
+
+
+def check(root, specular=None, listing=False):
+    """Messages, one per failure (empty: every figure agrees)."""
+    errors = []
+    texts = {}
+    for doc in {R, F}:
+        with open(os.path.join(root, doc)) as f:
+            texts[doc] = f.read()
+    try:
+        d = Data(root, specular)
+    except (OSError, ValueError) as e:
+        return [f"cannot read the figures' sources: {e}"]
+    covered = {doc: [] for doc in texts}  # spans of numbers that are figures or constants
+
+    def compare(doc, name, text, fn, span):
+        bound = name.startswith("<")
+        label = name.lstrip("<")
+        try:
+            want = fn(d)
+        except (KeyError, IndexError, TypeError, ValueError, subprocess.CalledProcessError, OSError) as e:
+            errors.append(f"{doc}: figure '{label}' ({text}): its source has no value: {e}")
+            return
+        if listing:
+            print(f"{doc}: {label}: printed {text}, source {fmt_want(want)}")
+        if bound:
+            got, _ = printed(text)
+            ok = got is not None and want < got
+        else:
+            ok = agrees(text, want)
+        if not ok:
+            line = texts[doc].count("\n", 0, span[0]) + 1
+            rel = "an upper bound of" if bound else "equal to"
+            errors.append(f"{doc}:{line}: figure '{label}' prints {text}, not {rel} its source's {fmt_want(want)}")
+
+    for entry in FIGURES + goals_figures():
+        doc, pattern, names = entry
+        ms = list(re.finditer(expand(pattern), texts[doc]))
+        if len(ms) != 1:
+            what = names[0][0] if isinstance(names, list) and names else pattern
+            errors.append(f"{doc}: figure '{what}': its text /{pattern}/ is found {len(ms)} times, not once")
+            continue
+        m = ms[0]
+        if names == "NAMED3" or names == "MISSED":
+            names = named_figures(names, m)
+        if len(names) != len(m.groups()):
+            errors.append(f"{doc}: /{pattern}/ has {len(m.groups())} groups for {len(names)} figures")
+            continue
+        for i, (name, fn) in enumerate(names, start=1):
+            covered[doc].append(m.span(i))
+            compare(doc, name, m.group(i), fn, m.span(i))
+
+    for doc, header, label, keys_of, columns in TABLES:
+        check_table(doc, texts[doc], header, label, keys_of(d), columns, 1, compare, covered, errors)
+    for doc, header, cores in FPGA_TABLES:
+        keys = [(r["core"], r["part"]) for r in d.fpga["runs"] if r["core"] in cores]
+        check_table(doc, texts[doc], header, "docs/fpga_figures.json runs of " + "/".join(cores), keys,
+                    fpga_table(), 2, compare, covered, errors, row_filter=lambda cells: cells[0] in cores)
+
+    # Coverage: every number in a measured region is a figure or a stated constant.
+    for doc, start, end in FIGURE_REGIONS:
+        text = texts[doc]
+        s = re.search(start, text)
+        e = re.compile(end).search(text, s.end()) if s else None
+        if not s or not e:
+            errors.append(f"{doc}: the measured region /{start}/ .. /{end}/ is not found")
+            continue
+        skip = list(covered[doc])
+        skip += [m.span() for m in re.finditer(r"`[^`\n]*`", text)]
+        skip += [m.span() for m in re.finditer(r"\]\([^)]*\)", text)]
+        for pat in NOT_MEASURED:
+            skip += [m.span() for m in re.finditer(expand(pat), text)]
+        for m in re.finditer(r"(?<![\w.^])(?<![A-Za-z]-)\d(?:[\d,]*\d)?(?:\.\d+)?(?:e[+-]?\d+)?(?![\w])",
+                             text[s.start():e.end()]):
+            a, b = m.start() + s.start(), m.end() + s.start()
+            if any(x <= a and b <= y for x, y in skip):
+                continue
+            line = text.count("\n", 0, a) + 1
+            ctx = text[max(0, a - 30):b + 10].replace("\n", " ")
+            errors.append(f"{doc}:{line}: '{m.group(0)}' is in a measured section but is no figure of "
+                          f"tests/docs/check_readme_figures.py (nobody measured it?): ...{ctx}...")
+    return errors
+
+
+def named_figures(kind, m):
+    """Figures whose scene names are part of the text. NAMED3: the lowest device x phong_sleef
+    (the first name must be the scene with the lowest), then two more scenes; MISSED: the scenes
+    below 1.0 x at one instruction set (each name must be one), with both ratios."""
+    def exists(s):
+        return lambda d: s if any(x["scene"] == s for x in d.sb["scenes"]) else None
+
+    names = []
+    if kind == "NAMED3":
+        for i in (1, 3, 5):
+            scene = m.group(i)
+            if i == 1:
+                names.append(("lowest device x phong_sleef: the scene",
+                              lambda d: min(d.sb["scenes"], key=lambda x: d.speedups(x)[0])["scene"]))
+            else:
+                names.append((f"scene {scene}", exists(scene)))
+            names.append((f"{scene}: device x phong_sleef", lambda d, s=scene: d.speedups(d.scene(s))[0]))
+    else:
+        for i in (1, 4, 7):
+            scene = m.group(i)
+            names.append((f"scene {scene} below 1.0 x at one instruction set",
+                          lambda d, s=scene: s if min(d.speedups(d.scene(s))[1:]) < 1 else None))
+            names.append((f"{scene}: AVX2 throughout x", lambda d, s=scene: d.speedups(d.scene(s))[1]))
+            names.append((f"{scene}: AVX-512 throughout x", lambda d, s=scene: d.speedups(d.scene(s))[2]))
+    return names
+
+
+def check_table(doc, text, header, label, keys, columns, key_cols, compare, covered, errors, row_filter=None):
+    """Every row of the Markdown tables whose header starts with `header` (and whose cells pass
+    row_filter) against the source entry of its key (the first key_cols cells)."""
+    lines = text.split("\n")
+    offsets = [0]
+    for ln in lines:
+        offsets.append(offsets[-1] + len(ln) + 1)
+    seen = []
+    found = False
+    i = 0
+    while i < len(lines):
+        if not lines[i].startswith(header):
+            i += 1
+            continue
+        head = [c.strip() for c in lines[i].strip().strip("|").split("|")]
+        i += 2  # the |---| line
+        while i < len(lines) and lines[i].startswith("|"):
+            cells = [c.strip() for c in lines[i].strip().strip("|").split("|")]
+            if row_filter and not row_filter(cells):
+                i += 1
+                continue
+            found = True
+            key = cells[0] if key_cols == 1 else tuple(cells[:key_cols])
+            seen.append(key)
+            if key not in keys:
+                errors.append(f"{doc}:{i + 1}: table row {key} has no entry in the {label}")
+                i += 1
+                continue
+            # cell spans, for the coverage check
+            pos = offsets[i] + 1
+            for col, cell_raw in zip(head, lines[i].strip().strip("|").split("|")):
+                a = offsets[i] + lines[i].index(cell_raw, pos - offsets[i])
+                pos = a + len(cell_raw)
+                cell = cell_raw.strip()
+                if col in columns:
+                    covered[doc].append((a, a + len(cell_raw)))
+                    want_fn = columns[col]
+                    compare(doc, f"{col} of {key}", cell, lambda dd, f=want_fn, k=key: f(dd, k), (a, a))
+            i += 1
+    if not found:
+        errors.append(f"{doc}: no table with the header '{header}...'")
+    for k in keys:
+        if k not in seen:
+            errors.append(f"{doc}: the {label} has {k}, which no table row shows")
+
+
+# ------------------------------------------------------------------ self-test
+def self_test(root, specular):
+    """A tampered figure, a tampered source, an unmeasured number and a missing figure must each fail,
+    with the figure named; the untouched copy must pass."""
+    failures = []
+    with tempfile.TemporaryDirectory() as tmp:
+        def fresh():
+            dst = os.path.join(tmp, "repo")
+            shutil.rmtree(dst, ignore_errors=True)
+            for rel in (R, F, "docs/fpga_figures.json", "docs/measured/sim.json", "docs/measured/scene_bench.json"):
+                os.makedirs(os.path.dirname(os.path.join(dst, rel)), exist_ok=True)
+                shutil.copy(os.path.join(root, rel), os.path.join(dst, rel))
+            return dst
+
+        def edit(dst, rel, old, new):
+            p = os.path.join(dst, rel)
+            with open(p) as f:
+                t = f.read()
+            if old not in t:
+                failures.append(f"self-test: '{old}' is not in {rel}")
+            with open(p, "w") as f:
+                f.write(t.replace(old, new, 1))
+
+        base = check(fresh(), specular)
+        if base:
+            failures.append("self-test: the untouched copy fails: " + "; ".join(base[:3]))
+        d = Data(root, specular)
+        fmax = f"{d.pnr('specular_stream', 'HX8K')['fmax_mhz']:.2f}"
+        cases = [
+            # (what, file, old, new, text the failure must contain)
+            ("README stream HX8K Fmax tampered", R, f"/ {fmax} MHz (target",
+             "/ 134.14 MHz (target", "specular_stream HX8K Fmax"),
+            ("rtl/fpga/README.md stream row tampered", F, f"| {fmax} | 100 |", "| 134.14 | 100 |",
+             "Fmax (MHz) of ('specular_stream', 'HX8K ct256')"),
+            ("docs/fpga_figures.json tampered", "docs/fpga_figures.json", f"\"fmax_mhz\": {fmax}",
+             "\"fmax_mhz\": 130.00", "specular_stream HX8K Fmax"),
+            ("a scene timing tampered", R, "| bunny |", "| bunny |", None),
+            ("docs/measured/sim.json tampered", "docs/measured/sim.json", '"mismatches": 0', '"mismatches": 1',
+             "bit-exact mismatches, every configuration"),
+            ("an unmeasured number added", R, "the setup is paid at about that rate per pixel.",
+             "the setup is paid at about that rate per pixel, 42 % of it in one loop.",
+             "'42' is in a measured section"),
+            ("a figure's text removed", R, "0 bit-exact mismatches, 0 protocol errors, latency",
+             "0 protocol errors, latency", "bit-exact mismatches, every configuration"),
+        ]
+        # The scene timing case: replace bunny's device ns/px with a different value.
+        bunny = d.scene("bunny")["ns_per_pixel"]["device"]
+        cases[3] = ("a scene timing tampered", R, f"| {bunny:.2f} |", f"| {bunny + 1:.2f} |", "device of bunny")
+        if specular:
+            cases.append(("the float-model figure tampered", R, "measured 1.09%", "measured 1.01%",
+                          "patent float model at n = 3"))
+        for what, rel, old, new, must in cases:
+            dst = fresh()
+            edit(dst, rel, old, new)
+            errs = check(dst, specular)
+            if not errs:
+                failures.append(f"self-test: {what}: the check passed")
+            elif must and not any(must in e for e in errs):
+                failures.append(f"self-test: {what}: no message names '{must}': " + "; ".join(errs[:3]))
+            else:
+                print(f"self-test: {what}: fails as it must: {errs[0]}")
+    return failures
+
+
+def main(argv):
+    args = [a for a in argv if not a.startswith("--")]
+    specular = None
+    if "--specular" in argv:
+        specular = argv[argv.index("--specular") + 1]
+        args.remove(specular)
+    if len(args) != 1:
+        print(__doc__, file=sys.stderr)
+        return 2
+    root = args[0]
+    if "--self-test" in argv:
+        failures = self_test(root, specular)
+        for f in failures:
+            print(f, file=sys.stderr)
+        print("check_readme_figures self-test: " + ("FAIL" if failures else "PASS"))
+        return 1 if failures else 0
+    errors = check(root, specular, listing="--list" in argv)
+    if not specular:
+        print("note: without --specular the float-model figure cannot be checked", file=sys.stderr)
+    for e in errors:
+        print(e, file=sys.stderr)
+    print(f"check_readme_figures: {'FAIL' if errors else 'PASS'} ({len(errors)} problems)")
+    return 1 if errors else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
