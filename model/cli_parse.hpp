@@ -4,10 +4,11 @@
 // for bad input. Header-only so that the model library itself does not need CLI11.
 #pragma once
 
+#include "number_text.hpp"
+
 #include <CLI/CLI.hpp>
 #include <glm/vec3.hpp>
 
-#include <charconv>
 #include <cmath>
 #include <iostream>
 #include <optional>
@@ -51,26 +52,10 @@ struct UsageError : std::runtime_error {
 // The shortest decimal text that parses back (strtod, std::stod, Python float) to
 // exactly v; "nan", "inf", "-inf" for the non-finite values. Every CSV number of the
 // tools is printed with it, so that a reader recomputes from the CSV what the tool computed.
-inline std::string num(double v) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
+inline std::string num(double v) { return shortest_text(v); }
 
 // The whole of s as a double, or nothing (empty, trailing characters, out of range).
-inline std::optional<double> to_double(const std::string& s) {
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(s, &used);
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-  if (used != s.size()) return std::nullopt;
-  return v;
-}
+inline std::optional<double> to_double(const std::string& s) { return whole_double(s); }
 
 // A finite real in [lo, hi]; `range` names the range in the message.
 inline double parse_real(const std::string& arg, const std::string& s, double lo, double hi, const std::string& range) {

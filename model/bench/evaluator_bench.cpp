@@ -48,7 +48,7 @@ namespace {
 
 using namespace specular;
 
-constexpr int kLen = 2047;  // pixels 0..2047
+constexpr int kLen = kMaxLen;  // pixels 0..kMaxLen: the longest line of counter 5
 constexpr int kPixels = kLen + 1;
 constexpr double kHalfPi = 1.57079632679489661923;
 

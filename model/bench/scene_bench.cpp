@@ -119,9 +119,7 @@ double stream_fmax_mhz(const std::string& path, std::string& source) {
 }
 
 std::string simd_description() {
-  __builtin_cpu_init();
-  const bool avx512 = __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
-                      __builtin_cpu_supports("avx512vl");
+  const bool avx512 = cpu_has_avx512();
   // Built with append: GCC 12 warns falsely (-Wrestrict) on operator+ chains of strings.
   const std::string shade = to_string(resolve(SimdPath::automatic));
   std::string s("setup_batch: ");
@@ -277,7 +275,7 @@ int main(int argc, char** argv) {
   app.add_option("--json", json_path, "write the results as JSON to FILE");
   app.add_option("--reps", reps, "rounds per scene (the median is reported)")->check(CLI::Range(1, 1000));
   app.add_option("--min-time", min_time, "seconds of CPU time per sample")->check(CLI::Range(1e-6, 10.0));
-  app.add_option("--max-len", max_len, "break-even sweep: l = 0..L")->check(CLI::Range(0, 2047));
+  app.add_option("--max-len", max_len, "break-even sweep: l = 0..L")->check(CLI::Range(0, kMaxLen));
   app.add_option("--break-even-spans", be_spans, "break-even sweep: spans per length")->check(CLI::Range(1, 1 << 20));
   app.add_flag("--no-break-even", no_break_even, "skip the break-even sweep");
   app.add_option("--fpga-figures", fpga_path, "the make fpga figures (default: the repository's docs/fpga_figures.json)");

@@ -43,15 +43,6 @@ DeviceShader::DeviceShader(const device::Format& f) {
   }
 }
 
-bool cpu_has_avx512() {
-  static const bool has = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
-           __builtin_cpu_supports("avx512vl");
-  }();
-  return has;
-}
-
 void DeviceShader::shade_avx512(const RegisterBatch& regs, float* out) const {
   if (!cpu_has_avx512()) throw std::runtime_error("DeviceShader::shade_avx512: this CPU lacks AVX-512 F/DQ/VL");
   detail::device_shade_avx512(t_, regs, out);
@@ -164,48 +155,41 @@ inline float phong_pixel(float dot, float q, float n, float C) {
   return c > 0.0f ? C * std::pow(c, n) : 0.0f;
 }
 
-template <bool Point, bool Persp>
-void eval_pp_scalar(const shade_baseline::PhongBuffers& B, int count, const PhongGroup& g, float* out) {
-  for (int i = 0; i < count; ++i) {
-    const float r = 1.0f / B.den[i];
-    const float px = B.px[i] * r, py = B.py[i] * r, pz = B.pz[i] * r;
-    float lx = g.light[0], ly = g.light[1], lz = g.light[2];
-    if constexpr (Point) {
-      lx -= px, ly -= py, lz -= pz;
-      const float s = 1.0f / std::sqrt(lx * lx + ly * ly + lz * lz);
-      lx *= s, ly *= s, lz *= s;
-    }
-    float vx = g.viewer[0], vy = g.viewer[1], vz = g.viewer[2];
-    if constexpr (Persp) {
-      vx -= px, vy -= py, vz -= pz;
-      const float s = 1.0f / std::sqrt(vx * vx + vy * vy + vz * vz);
-      vx *= s, vy *= s, vz *= s;
-    }
-    const float hx = lx + vx, hy = ly + vy, hz = lz + vz;
-    const float nx = B.nx[i], ny = B.ny[i], nz = B.nz[i];
-    const float dot = nx * hx + ny * hy + nz * hz;
-    const float q = (nx * nx + ny * ny + nz * nz) * (hx * hx + hy * hy + hz * hz);
-    out[i] = phong_pixel(dot, q, B.n[i], B.c[i]);
+// Stage 3 of Phong in scalar code (phong_shade's Stage3).
+struct ScalarPhong {
+  static void constant(const shade_baseline::PhongBuffers& B, int count, float* o) {
+    for (int i = 0; i < count; ++i) o[i] = phong_pixel(B.d[i], B.q[i], B.n[i], B.c[i]);
   }
-}
+
+  template <bool Point, bool Persp>
+  static void pp(const shade_baseline::PhongBuffers& B, int count, const PhongGroup& g, float* out) {
+    for (int i = 0; i < count; ++i) {
+      const float r = 1.0f / B.den[i];
+      const float px = B.px[i] * r, py = B.py[i] * r, pz = B.pz[i] * r;
+      float lx = g.light[0], ly = g.light[1], lz = g.light[2];
+      if constexpr (Point) {
+        lx -= px, ly -= py, lz -= pz;
+        const float s = 1.0f / std::sqrt(lx * lx + ly * ly + lz * lz);
+        lx *= s, ly *= s, lz *= s;
+      }
+      float vx = g.viewer[0], vy = g.viewer[1], vz = g.viewer[2];
+      if constexpr (Persp) {
+        vx -= px, vy -= py, vz -= pz;
+        const float s = 1.0f / std::sqrt(vx * vx + vy * vy + vz * vz);
+        vx *= s, vy *= s, vz *= s;
+      }
+      const float hx = lx + vx, hy = ly + vy, hz = lz + vz;
+      const float nx = B.nx[i], ny = B.ny[i], nz = B.nz[i];
+      const float dot = nx * hx + ny * hy + nz * hz;
+      const float q = (nx * nx + ny * ny + nz * nz) * (hx * hx + hy * hy + hz * hz);
+      out[i] = phong_pixel(dot, q, B.n[i], B.c[i]);
+    }
+  }
+};
 
 }  // namespace
 
-void phong_shade_scalar(const PhongSpans& s, float* out) {
-  shade_baseline::phong_shade(
-      s, out,
-      [](const shade_baseline::PhongBuffers& B, int count, float* o) {
-        for (int i = 0; i < count; ++i) o[i] = phong_pixel(B.d[i], B.q[i], B.n[i], B.c[i]);
-      },
-      [](const shade_baseline::PhongBuffers& B, int count, const PhongGroup& g, float* o) {
-        if (g.point_light && g.perspective)
-          eval_pp_scalar<true, true>(B, count, g, o);
-        else if (g.point_light)
-          eval_pp_scalar<true, false>(B, count, g, o);
-        else
-          eval_pp_scalar<false, true>(B, count, g, o);
-      });
-}
+void phong_shade_scalar(const PhongSpans& s, float* out) { shade_baseline::phong_shade<ScalarPhong>(s, out); }
 
 }  // namespace detail
 

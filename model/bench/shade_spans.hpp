@@ -116,8 +116,8 @@ void shade_phong(const PhongSpans& spans, float* out, SimdPath path = SimdPath::
 // when cpu_has_avx512() is false.
 void shade_phong_avx512(const PhongSpans& spans, float* out);
 
-// AVX-512 F, DQ and VL: what setup_batch's automatic path takes when present.
-bool cpu_has_avx512();
+// AVX-512 F, DQ and VL: what setup_batch's automatic path takes when present (span_shade.hpp).
+using specular::cpu_has_avx512;
 
 // C cos^n(psi_i) in double from the register codes (pow_cos_span per span); out must hold
 // pixel_count(regs) doubles.

@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <cstring>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #define SPAN_KERNEL_NS SHADE_KERNEL_NS
@@ -28,7 +29,7 @@ namespace specular::host::SHADE_KERNEL_NS {
 
 using v8f = float __attribute__((vector_size(32)));
 
-inline constexpr int kMaxPixels = 2048;      // l <= 2047 (counter 5)
+inline constexpr int kMaxPixels = kMaxLen + 1;  // l <= kMaxLen (counter 5, scanline_setup.hpp)
 inline constexpr int kSpanBlock = 256;       // stage 1 block (its arrays stay in L1)
 inline constexpr int kCapacity = kMaxPixels + 8;  // a buffer holds one whole span and the 8-lane surplus
 
@@ -202,7 +203,7 @@ inline void device_shade(const DeviceShader::Tables& t, const RegisterBatch& reg
         kk[j] = tk[nc];
       }
     }
-    if (longest >= static_cast<uint32_t>(kMaxPixels)) throw std::invalid_argument("DeviceShader::shade: len above 2047");
+    if (longest >= static_cast<uint32_t>(kMaxPixels)) throw std::invalid_argument("DeviceShader::shade: len above " + std::to_string(kMaxLen));
     if (narrow && differ == 0 && block_pixels + 8 <= static_cast<uint32_t>(kBuf)) {
       // One k for the block and room for all of it: the run and the flush are decided once.
       if (st.fill + static_cast<int>(block_pixels) + 8 > kBuf) {
@@ -370,11 +371,27 @@ inline void phong_stage1_pp(const float* __restrict ax, const float* __restrict 
   }
 }
 
-// Runs one group of spans through stages 1 and 2 and hands each filled buffer to stage 3:
-// eval_const(buffers, count, out) for constant-H groups, eval_pp(buffers, count, group, out)
-// otherwise.
-template <class EvalConst, class EvalPP>
-void phong_shade(const PhongSpans& s, float* out, EvalConst eval_const, EvalPP eval_pp) {
+// Stage 3 of per-pixel-H groups for a variant's Stage3 (below): its pp<Point, Persp> for the
+// group's light and viewer (a group with neither is constant-H).
+template <class Stage3>
+struct PhongEvalPP {
+  void operator()(const PhongBuffers& B, int count, const PhongGroup& g, float* out) const {
+    if (g.point_light && g.perspective)
+      Stage3::template pp<true, true>(B, count, g, out);
+    else if (g.point_light)
+      Stage3::template pp<true, false>(B, count, g, out);
+    else
+      Stage3::template pp<false, true>(B, count, g, out);
+  }
+};
+
+// Runs one group of spans through stages 1 and 2 and hands each filled buffer to stage 3 of
+// `Stage3`: Stage3::constant(buffers, count, out) for constant-H groups,
+// Stage3::pp<Point, Persp>(buffers, count, group, out) otherwise.
+template <class Stage3>
+void phong_shade(const PhongSpans& s, float* out) {
+  const auto eval_const = [](const PhongBuffers& B, int count, float* o) { Stage3::constant(B, count, o); };
+  const PhongEvalPP<Stage3> eval_pp;
   PhongBuffers B;
   float* dst = out;
   alignas(64) float k0[kSpanBlock], k1[kSpanBlock], k2[kSpanBlock], k3[kSpanBlock], k4[kSpanBlock],
@@ -401,7 +418,7 @@ void phong_shade(const PhongSpans& s, float* out, EvalConst eval_const, EvalPP e
         longest = longest > u ? longest : u;
         block_pixels += u + 1;
       }
-      if (longest >= static_cast<uint32_t>(kMaxPixels)) throw std::invalid_argument("shade_phong: l outside 0..2047");
+      if (longest >= static_cast<uint32_t>(kMaxPixels)) throw std::invalid_argument("shade_phong: l outside 0.." + std::to_string(kMaxLen));
       // Room for the whole block (the same rule as the device's): no test per span.
       const bool whole = block_pixels + 8 <= static_cast<uint32_t>(PhongBuffers::kSize);
       if (whole && fill + static_cast<int>(block_pixels) + 8 > PhongBuffers::kSize) {

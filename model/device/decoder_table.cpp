@@ -24,7 +24,7 @@ std::vector<int> derive_bank_max_n(const std::vector<int>& banks, const CoefSpec
     max_n.push_back(std::max(n - 1, k0));
     n = max_n.back() + 1;
   }
-  max_n.push_back(1000);
+  max_n.push_back(kMaxN);
   return max_n;
 }
 

@@ -28,7 +28,7 @@ DeviceLine make_device_line(const device::Format& f, int n, double end, int l) {
 
 DeviceError device_error(const device::DeviceModel& dm, int n) {
   const device::Format& f = dm.format();
-  constexpr int kLen = 2047;
+  const int len = f.max_len();  // counter 5's longest line
   DeviceError err;
   // n = 1: the epicenter would reach pi/2 where cos^n -> 0 and any fixed-point output has
   // unbounded relative error; stop at cos = 1/2 (the level where n = 2's epicenter ends).
@@ -37,9 +37,9 @@ DeviceError device_error(const device::DeviceModel& dm, int n) {
   const double xe_lsb = n > 1 ? epicenter_end(n) : kHalfPiE;
   enum class Kind { rel, rel_lsb, abs };
   auto sweep = [&](double end, Kind kind) {
-    const DeviceLine d = make_device_line(f, n, end, kLen);
+    const DeviceLine d = make_device_line(f, n, end, len);
     const std::vector<uint32_t> out = dm.line(d.regs);
-    for (int i = 0; i <= kLen; ++i) {
+    for (int i = 0; i <= len; ++i) {
       const double psi = i * d.dpsi;  // exact: the accumulator adds integers
       if (psi >= kHalfPiE) break;
       const double ref = d.c * std::pow(std::cos(psi), n);

@@ -68,7 +68,7 @@ RegisterLoad load_registers(const ScanlineSetup& s, double n, int l, const Forma
   out.angle_saturated = psi0_sat || dpsi_sat;
   const double n_max = std::ldexp(1.0, f.n_bits) - 1.0;
   out.reg.n = std::isfinite(n) ? static_cast<uint32_t>(std::clamp(std::round(n), 0.0, n_max)) : 0u;
-  out.reg.len = static_cast<uint32_t>(std::clamp(l, 0, (1 << f.len_bits) - 1));
+  out.reg.len = static_cast<uint32_t>(std::clamp(l, 0, f.max_len()));
   return out;
 }
 
@@ -79,8 +79,8 @@ Format Format::patent() {
   f.cos_interp = false;
   f.cos_addr_bits = 12;
   f.cos_data_bits = 16;
-  f.banks = {1, 2, 4, 16};
-  f.bank_max_n = {1, 2, 6, 1000};
+  f.banks.assign(kPatentBanks.begin(), kPatentBanks.end());
+  f.bank_max_n.assign(kPatentBankMaxN.begin(), kPatentBankMaxN.end());
   return f;
 }
 
@@ -137,10 +137,8 @@ DeviceModel::DeviceModel(Format f, std::vector<uint32_t> coef_rom, std::vector<u
 }
 
 int DeviceModel::bank_of(uint32_t n) const {
-  if (n == 0 || n > static_cast<uint32_t>(f_.max_n())) return -1;
-  for (size_t j = 0; j < f_.bank_max_n.size(); ++j)
-    if (n <= static_cast<uint32_t>(f_.bank_max_n[j])) return static_cast<int>(j);
-  return -1;
+  // The constructor required bank_max_n.back() == max_n(): n above max_n() gets -1.
+  return decoder_bank(f_.bank_max_n, n);
 }
 
 Registers DeviceModel::latch(const Registers& r) const {
@@ -149,7 +147,7 @@ Registers DeviceModel::latch(const Registers& r) const {
   q.dpsi = sign_extend(r.dpsi, f_.angle_bits);
   q.psi0 = sign_extend(r.psi0, f_.angle_bits);
   q.n = r.n & static_cast<uint32_t>((1ULL << f_.n_bits) - 1);
-  q.len = r.len & static_cast<uint32_t>((1ULL << f_.len_bits) - 1);
+  q.len = r.len & static_cast<uint32_t>(f_.max_len());
   return q;
 }
 

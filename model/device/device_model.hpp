@@ -31,8 +31,10 @@
 //   decoder 10           bank  from n (bank_max_n table); n = 0 or n > 1000 -> every pixel 0
 #pragma once
 
+#include "coefficients.hpp"
 #include "scanline_setup.hpp"
 
+#include <bit>
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -47,8 +49,10 @@ struct Format {
   int c_bits = 16, c_frac = 15;            // reg 1 and the output: unsigned, 0 <= C < 2
   int angle_bits = 32, angle_frac = 28;    // reg 2 (dpsi) and reg 3 (psi0): signed radians
   int acc_bits = 44;                       // reg 8: angle_bits + 12, cannot overflow over 2048 adds
-  int n_bits = 10;                         // reg 4
-  int len_bits = 11;                       // counter 5
+  // reg 4: 10 bits, the width of kMaxN (the patent's range of n, coefficients.hpp)
+  int n_bits = std::bit_width(static_cast<unsigned>(kMaxN));
+  // counter 5: 11 bits, the width of kMaxLen (scanline_setup.hpp: l in 0..kMaxLen)
+  int len_bits = std::bit_width(static_cast<unsigned>(kMaxLen));
   int coef_bits = 21, coef_frac = 18;      // ROM 9 words: a(n) * 2/pi
   int psi_mul_frac = 20;                   // fraction bits of |psi| kept at multiplier 11
   bool cos_interp = true;                  // ROM 12 interpolated (false: direct table)
@@ -57,13 +61,16 @@ struct Format {
   int cos_delta_bits = 12;                 // interpolated: width of the step d to the next entry
   int cos_frac_bits = 12;                  // interpolated: bits of zeta that weight the step
   std::vector<int> banks{1, 2, 3, 4, 6, 8, 12, 16};            // k of each ROM 12 bank
-  std::vector<int> bank_max_n{1, 2, 3, 4, 6, 9, 13, 1000};     // decoder 10: bank j serves
+  std::vector<int> bank_max_n{1, 2, 3, 4, 6, 9, 13, kMaxN};    // decoder 10: bank j serves
                                                                // bank_max_n[j-1] < n <= bank_max_n[j]
+                                                               // (decoder_bank, coefficients.hpp)
 
   // The patent's configuration (bit-exact build option, see the header comment).
   static Format patent();
 
-  int max_n() const { return 1000; }
+  static constexpr int max_n() { return kMaxN; }
+  // Counter 5's largest l: the line has at most max_len() + 1 pixels.
+  int max_len() const { return (1 << len_bits) - 1; }
   int coef_rom_depth() const { return 1 << n_bits; }
   int cos_rom_depth() const { return static_cast<int>(banks.size()) << cos_addr_bits; }
   // Bits of one ROM 12 word: {v, d} interpolated, the saturating value direct.
@@ -71,6 +78,8 @@ struct Format {
   // ceil(pi/2 * 2^angle_frac): |psi| codes at or above it are at or past pi/2.
   int64_t half_pi_code() const;
 };
+// kMaxLen is a full counter: the default len_bits hold exactly 0..kMaxLen.
+static_assert(std::has_single_bit(static_cast<unsigned>(kMaxLen) + 1U), "kMaxLen must be 2^len_bits - 1");
 
 // Register contents as the device holds them (raw two's complement / unsigned codes).
 struct Registers {

@@ -96,15 +96,6 @@ void setup_scalar(const SpanBatch& in, const device::Format& f, RegisterBatch& o
 
 namespace detail {
 
-bool cpu_has_avx512() {
-  static const bool has = [] {
-    __builtin_cpu_init();
-    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
-           __builtin_cpu_supports("avx512vl");
-  }();
-  return has;
-}
-
 size_t setup_batch_baseline(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
   return run_blocks(in, f, out, baseline_kernels::setup_block, baseline_kernels::flat_block);
 }
@@ -116,7 +107,7 @@ void setup_batch(const SpanBatch& in, const device::Format& f, RegisterBatch& ou
   out.resize(in.size());
   if (in.size() == 0) return;
   size_t specials = 0;
-  if (path == SimdPath::automatic && detail::cpu_has_avx512())
+  if (path == SimdPath::automatic && cpu_has_avx512())
     specials = detail::setup_batch_avx512(in, f, out);
   else if (resolve(path) == SimdPath::avx2)
     specials = detail::setup_batch_avx2(in, f, out);
@@ -148,15 +139,16 @@ glm::dvec3 tilt(const glm::dvec3& v, double angle, std::mt19937_64& rng) {
 ScanlineInput random_span(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   auto log_uniform = [&](double lo, double hi) { return lo * std::pow(hi / lo, u01(rng)); };
-  static constexpr double kBoundaries[] = {1, 2, 3, 6, 7, 1000};
+  static const std::vector<int> kBoundaries = patent_bank_edges();
   ScanlineInput in;
   in.n1 = random_unit(rng);
   in.n2 = u01(rng) < 0.1 ? in.n1 : tilt(in.n1, log_uniform(1e-9, 2.0), rng);
-  in.n = u01(rng) < 0.05 ? kBoundaries[rng() % 6] : std::min(std::floor(1.0 + 1000.0 * u01(rng)), 1000.0);
+  in.n = u01(rng) < 0.05 ? kBoundaries[rng() % kBoundaries.size()]
+                         : std::min(std::floor(1.0 + kMaxN * u01(rng)), static_cast<double>(kMaxN));
   in.h1 = u01(rng) < 0.8 ? tilt(in.n1, log_uniform(1e-6, 3.0 / std::sqrt(in.n)), rng) : random_unit(rng);
   in.he = u01(rng) < 0.5 ? in.h1 : tilt(in.h1, log_uniform(1e-9, 1.0), rng);
   const double r = u01(rng);
-  in.l = static_cast<int>(rng() % (r < 0.6 ? 16 : r < 0.9 ? 256 : 2048));
+  in.l = static_cast<int>(rng() % (r < 0.6 ? 16 : r < 0.9 ? 256 : kMaxLen + 1));
   in.is = u01(rng) < 0.02 ? 2.5 : u01(rng) * 1.2;
   return in;
 }

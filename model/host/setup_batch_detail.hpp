@@ -29,7 +29,7 @@ KernelFormat kernel_format(const device::Format& f) {
           std::ldexp(1.0, f.angle_frac),
           -std::ldexp(1.0, f.angle_bits - 1),
           std::ldexp(1.0, f.angle_bits - 1) - 1.0,
-          static_cast<double>(std::min((1 << f.len_bits) - 1, kMaxLen))};
+          static_cast<double>(std::min(f.max_len(), kMaxLen))};
 }
 
 }  // namespace
@@ -183,6 +183,5 @@ size_t run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& o
 size_t setup_batch_baseline(const SpanBatch& in, const device::Format& f, RegisterBatch& out);
 size_t setup_batch_avx2(const SpanBatch& in, const device::Format& f, RegisterBatch& out);
 size_t setup_batch_avx512(const SpanBatch& in, const device::Format& f, RegisterBatch& out);
-bool cpu_has_avx512();  // AVX-512 F, DQ and VL
 
 }  // namespace specular::host::detail

@@ -178,7 +178,7 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
     ordinary = d_he >= kTiny ? ordinary : 0.0;
     ordinary = d_he <= kHuge ? ordinary : 0.0;
     ordinary = nn >= 1.0 ? ordinary : 0.0;
-    ordinary = nn <= 1000.0 ? ordinary : 0.0;
+    ordinary = nn <= kMaxN ? ordinary : 0.0;
     ordinary = l >= 0.0 ? ordinary : 0.0;
     ordinary = l <= max_len ? ordinary : 0.0;
     ordinary = sc >= 0.0 ? ordinary : 0.0;
@@ -322,7 +322,7 @@ inline void flat_block(const double* __restrict n1x, const double* __restrict n1
     double ordinary = std::fabs(e1) <= kNearUnitBound ? 1.0 : 0.0;  // NaN: not ordinary
     ordinary = std::fabs(e3) <= kNearUnitBound ? ordinary : 0.0;
     ordinary = nn >= 1.0 ? ordinary : 0.0;
-    ordinary = nn <= 1000.0 ? ordinary : 0.0;
+    ordinary = nn <= kMaxN ? ordinary : 0.0;
     ordinary = l >= 0.0 ? ordinary : 0.0;
     ordinary = l <= max_len ? ordinary : 0.0;
     ordinary = sc >= 0.0 ? ordinary : 0.0;

@@ -2,6 +2,8 @@
 // Span and register CSV (model/host/span_csv.hpp).
 #include "span_csv.hpp"
 
+#include "number_text.hpp"
+
 #include <fmt/format.h>
 
 #include <charconv>
@@ -31,13 +33,6 @@ bool to_double(std::string_view f, double& v) {
   return end == s.c_str() + s.size();
 }
 
-std::string shortest(double v) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
-}
 
 }  // namespace
 
@@ -74,7 +69,8 @@ SpanBatch parse_span_csv(std::string_view text, const std::string& source) {
                                   "' is not a number");
       if (c == 13 && !(v[c] == std::floor(v[c]) && std::abs(v[c]) <= std::numeric_limits<int32_t>::max()))
         fail(source, line_no, "column l: '" + std::string(field.substr(0, 40)) +
-                                  "' is not an integer in -2147483647..2147483647 (the device takes 0..2047)");
+                                  "' is not an integer in -2147483647..2147483647 (the device takes 0.." +
+                                  std::to_string(kMaxLen) + ")");
     }
     ScanlineInput in;
     in.n1 = {v[0], v[1], v[2]};
@@ -95,8 +91,8 @@ std::string register_csv(const RegisterBatch& r, const device::Format& f) {
   auto it = std::back_inserter(out);
   for (size_t i = 0; i < r.size(); ++i)
     fmt::format_to(it, "{},{},{},{},{},{},{},{},{}\n", to_string(r.setup_status(i)), r.c[i], r.psi0[i], r.dpsi[i], r.n[i],
-                   r.len[i], shortest(device::c_value(r.c[i], f)), shortest(device::angle_value(r.psi0[i], f)),
-                   shortest(device::angle_value(r.dpsi[i], f)));
+                   r.len[i], shortest_text(device::c_value(r.c[i], f)), shortest_text(device::angle_value(r.psi0[i], f)),
+                   shortest_text(device::angle_value(r.dpsi[i], f)));
   return out;
 }
 

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace specular {
 
@@ -82,7 +83,7 @@ double kutlog_coef_fit(double n, int k, double Q) {
 double kutlog_fit_error(int k, double Q, int* n_at) {
   double worst = -1.0;
   int at = 0;
-  for (int n = k + 1; n <= 1000; ++n) {
+  for (int n = k + 1; n <= kMaxN; ++n) {
     // coef_fit * 2 pi Int = coef_fit / coef_exact
     const double e = std::abs(kutlog_coef_fit(n, k, Q) / kutlog_coef_exact(n, k, Q) - 1.0);
     if (e > worst) worst = e, at = n;
@@ -140,7 +141,7 @@ ModelEvaluator make_evaluator(Model model, const ModelParams& p) {
       break;
     case Model::patent:
       e.k = p.k > 0 ? p.k : decoder_k_real(p.n);
-      if (e.k == 0) throw std::invalid_argument("model patent: n must be in [1, 1000] for the decoder");
+      if (e.k == 0) throw std::invalid_argument("model patent: n must be in [1, " + std::to_string(kMaxN) + "] for the decoder");
       e.a = coefficient(p.n, e.k, p.coef);
       break;
     case Model::prototype:

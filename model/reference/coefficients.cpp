@@ -2,9 +2,11 @@
 #include "coefficients.hpp"
 
 #include "metrics.hpp"
+#include "number_text.hpp"
 
 #include <cmath>
 #include <limits>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
@@ -70,20 +72,22 @@ RRange r_range(double n, int k, double a, double xe) {
 }
 }  // namespace
 
-int decoder_k(int n) {
-  if (n < 1 || n > 1000) return 0;
-  if (n == 1) return 1;
-  if (n == 2) return 2;
-  if (n <= 6) return 4;
-  return 16;
-}
+int decoder_k(int n) { return decoder_k_real(n); }
 
 int decoder_k_real(double n) {
-  if (!(n >= 1.0) || !(n <= 1000.0)) return 0;
-  if (n <= 1.0) return 1;
-  if (n <= 2.0) return 2;
-  if (n <= 6.0) return 4;
-  return 16;
+  const int j = decoder_bank(kPatentBankMaxN, n);
+  return j < 0 ? 0 : kPatentBanks[static_cast<std::size_t>(j)];
+}
+
+std::vector<int> patent_bank_edges() {
+  std::vector<int> edges;
+  int first = 1;
+  for (const int last : kPatentBankMaxN) {
+    if (edges.empty() || edges.back() != first) edges.push_back(first);
+    if (edges.back() != last) edges.push_back(last);
+    first = last + 1;
+  }
+  return edges;
 }
 
 double coef_maclaurin(double n, int k) {
@@ -152,17 +156,9 @@ CoefSpec parse_coef_spec(const std::string& text) {
   if (text == "minimax") return {CoefPolicy::minimax, 0.5};
   if (text == "kutlog") return {CoefPolicy::kutlog, 0.5};
   if (text.rfind("kutlog:", 0) == 0) {
-    const std::string q = text.substr(7);
-    std::size_t used = 0;
-    double Q = 0.0;
-    try {
-      Q = std::stod(q, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (used != q.size() || q.empty() || !(Q > 0.0 && Q < 1.0))
-      throw std::invalid_argument("coefficient policy '" + text + "': " + usage);
-    return {CoefPolicy::kutlog, Q};
+    const std::optional<double> Q = whole_double(text.substr(7));
+    if (!Q || !(*Q > 0.0 && *Q < 1.0)) throw std::invalid_argument("coefficient policy '" + text + "': " + usage);
+    return {CoefPolicy::kutlog, *Q};
   }
   throw std::invalid_argument("coefficient policy '" + text + "': " + usage);
 }

@@ -9,15 +9,42 @@
 //   kutlog:Q   a = acos(Q^(1/k)) / acos(Q^(1/n))   (the 2023 paper: exact at level Q)
 #pragma once
 
+#include <array>
+#include <cstddef>
+#include <span>
 #include <string>
+#include <vector>
 
 namespace specular {
 
-// Patent table: n=1 -> 1, 2 -> 2, 3..6 -> 4, 7..1000 -> 16; 0 for n < 1 or n > 1000.
+// The patent's range of the specular exponent: n in 1..kMaxN (docs/device.md, the blocks and
+// the errata). Every bound on n in the model, and device::Format::max_n(), is this one.
+inline constexpr int kMaxN = 1000;
+
+// The patent's decoder table (block 10, docs/device.md): bank j has k = kPatentBanks[j] and
+// serves kPatentBankMaxN[j-1] < n <= kPatentBankMaxN[j], i.e. 1 | 2 | 3..6 | 7..1000.
+// device::Format::patent() takes its bank set and decoder from here.
+inline constexpr std::array<int, 4> kPatentBanks{1, 2, 4, 16};
+inline constexpr std::array<int, 4> kPatentBankMaxN{1, 2, 6, kMaxN};
+static_assert(kPatentBankMaxN.back() == kMaxN, "the last bank ends at kMaxN");
+
+// The decoder rule for a table `bank_max_n` (strictly increasing): the bank j with
+// bank_max_n[j-1] < n <= bank_max_n[j]; -1 for n < 1, n above the last entry or NaN.
+inline int decoder_bank(std::span<const int> bank_max_n, double n) {
+  if (!(n >= 1.0)) return -1;
+  for (std::size_t j = 0; j < bank_max_n.size(); ++j)
+    if (n <= bank_max_n[j]) return static_cast<int>(j);
+  return -1;
+}
+
+// The patent's table: n=1 -> 1, 2 -> 2, 3..6 -> 4, 7..1000 -> 16; 0 for n < 1 or n > kMaxN.
 // (Erratum: n up to 1000 needs 10 decoder inputs; the patent draws 9.)
 int decoder_k(int n);
-// Same table for a real exponent: bank j serves bank_max[j-1] < n <= bank_max[j].
+// Same table for a real exponent: bank j serves kPatentBankMaxN[j-1] < n <= kPatentBankMaxN[j].
 int decoder_k_real(double n);
+// The first and the last n of each bank of the patent's table, increasing, each once:
+// 1, 2, 3, 6, 7, 1000 (the exponents where the decoder switches banks, and the range's ends).
+std::vector<int> patent_bank_edges();
 
 enum class CoefPolicy { maclaurin, minimax, kutlog };
 

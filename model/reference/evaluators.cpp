@@ -8,6 +8,7 @@
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace specular {
 
@@ -113,7 +114,7 @@ double CoskEval::operator()(double x) const {
 
 CoskEval patent_eval(int n, const CoefSpec& spec) {
   const int k = decoder_k(n);
-  if (k == 0) throw std::invalid_argument("patent_eval: n must be in 1..1000");
+  if (k == 0) throw std::invalid_argument("patent_eval: n must be in 1.." + std::to_string(kMaxN));
   return CoskEval(k, coefficient(n, k, spec));
 }
 

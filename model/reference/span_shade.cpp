@@ -8,6 +8,7 @@
 #include <cmath>
 #include <mutex>
 #include <stdexcept>
+#include <string>
 #include <vector>
 
 #define SPAN_KERNEL_NS baseline_kernels
@@ -29,6 +30,15 @@ bool cpu_has_avx2() {
   return has;
 }
 
+bool cpu_has_avx512() {
+  static const bool has = [] {
+    __builtin_cpu_init();
+    return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512dq") &&
+           __builtin_cpu_supports("avx512vl");
+  }();
+  return has;
+}
+
 SimdPath resolve(SimdPath p) {
   if (p == SimdPath::automatic) return cpu_has_avx2() ? SimdPath::avx2 : SimdPath::scalar;
   if (p == SimdPath::avx2 && !cpu_has_avx2()) throw std::runtime_error("SimdPath::avx2 forced but this CPU lacks AVX2/FMA");
@@ -45,7 +55,8 @@ std::string to_string(SimdPath p) {
 }
 
 DeviceSpanPlan make_device_span_plan(double n) {
-  if (!(n >= 1.0 && n <= 1000.0)) throw std::invalid_argument("make_device_span_plan: n must be in [1, 1000]");
+  if (!(n >= 1.0 && n <= kMaxN))
+    throw std::invalid_argument("make_device_span_plan: n must be in [1, " + std::to_string(kMaxN) + "]");
   DeviceSpanPlan p;
   p.n = n;
   for (int k : kBanks)
@@ -55,11 +66,11 @@ DeviceSpanPlan make_device_span_plan(double n) {
 }
 
 const DeviceSpanPlan& device_span_plan(int n) {
-  if (n < 1 || n > 1000) throw std::invalid_argument("device_span_plan: n must be in 1..1000");
+  if (n < 1 || n > kMaxN) throw std::invalid_argument("device_span_plan: n must be in 1.." + std::to_string(kMaxN));
   static const std::vector<DeviceSpanPlan> table = [] {
     std::vector<DeviceSpanPlan> t;
-    t.reserve(1000);
-    for (int m = 1; m <= 1000; ++m) t.push_back(make_device_span_plan(m));
+    t.reserve(kMaxN);
+    for (int m = 1; m <= kMaxN; ++m) t.push_back(make_device_span_plan(m));
     return t;
   }();
   return table[n - 1];

@@ -30,6 +30,8 @@ enum class SimdPath {
   avx2,       // AVX2 + FMA code (throws std::runtime_error when the CPU lacks it)
 };
 bool cpu_has_avx2();                       // AVX2 and FMA, detected once
+bool cpu_has_avx512();                     // AVX-512 F, DQ and VL, detected once (the batched
+                                           // setup's and the scene shaders' widest variants)
 SimdPath resolve(SimdPath p);              // automatic -> the path that will run
 std::string to_string(SimdPath p);         // "automatic", "scalar", "avx2"
 

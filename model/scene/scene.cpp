@@ -2,6 +2,7 @@
 // Scene loading (nlohmann::json) and mesh generation. See scene.hpp and scenes/README.md.
 #include "scene.hpp"
 
+#include "coefficients.hpp"
 #include "model_file.hpp"
 
 #include <glm/geometric.hpp>
@@ -313,7 +314,7 @@ std::vector<Material> parse_materials(const Reader& rd, const json& root) {
     m.name = rd.string_value(arr[i], "name", f + ".name", {});
     for (const auto& prev : out)
       if (prev.name == m.name) rd.fail(f + ".name", "a name not used by another material", &arr[i]["name"]);
-    m.n = rd.number(arr[i], "n", f + ".n", 1.0, 1000.0);
+    m.n = rd.number(arr[i], "n", f + ".n", 1.0, kMaxN);
     m.ks = rd.number(arr[i], "ks", f + ".ks", 0.0, 1.0);
     m.norm = rd.number_or(arr[i], "norm", f + ".norm", 0.0, 1e3, 1.0, true);
     out.push_back(m);

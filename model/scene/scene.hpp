@@ -7,6 +7,8 @@
 // x = 0..width-1 to the right, y = 0..height-1 downwards.
 #pragma once
 
+#include "scanline_setup.hpp"
+
 #include <glm/vec3.hpp>
 
 #include <array>
@@ -82,9 +84,9 @@ struct Scene {
   size_t triangle_count() const;
 };
 
-// Limits enforced by the loader. The span counter of the device has 11 bits
-// (l <= 2047), so an image row may hold at most 2048 pixels.
-inline constexpr int kMaxImageSize = 2048;
+// Limits enforced by the loader. The span counter of the device holds l <= kMaxLen
+// (scanline_setup.hpp), so an image row may hold at most kMaxLen + 1 pixels.
+inline constexpr int kMaxImageSize = kMaxLen + 1;
 inline constexpr int kMaxTessellation = 1024;
 
 Scene load_scene(const std::string& path);               // throws SceneError

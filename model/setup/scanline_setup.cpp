@@ -23,11 +23,15 @@
 //  * psi crossing 0 inside the span: ordinary; cos is even.
 #include "scanline_setup.hpp"
 
+#include "coefficients.hpp"
+
 #include <glm/geometric.hpp>
 
+#include <bit>
 #include <cmath>
 #include <limits>
 #include <stdexcept>
+#include <string>
 
 namespace specular {
 
@@ -61,8 +65,11 @@ bool normalize_input(const ScanlineInput& in, Normalized& out, std::string* why)
     if (why) *why = w;
     return false;
   };
-  if (!std::isfinite(in.n) || in.n < 1.0 || in.n > 1000.0) return bad("n must be in [1, 1000]");
-  if (in.l < 0 || in.l > kMaxLen) return bad("l must be in 0..2047 (11-bit counter)");
+  static const std::string n_range = "n must be in [1, " + std::to_string(kMaxN) + "]";
+  static const std::string l_range = "l must be in 0.." + std::to_string(kMaxLen) + " (" +
+                                     std::to_string(std::bit_width(static_cast<unsigned>(kMaxLen))) + "-bit counter)";
+  if (!std::isfinite(in.n) || in.n < 1.0 || in.n > kMaxN) return bad(n_range.c_str());
+  if (in.l < 0 || in.l > kMaxLen) return bad(l_range.c_str());
   if (!std::isfinite(in.is) || in.is < 0.0) return bad("Is must be finite and >= 0");
   if (!std::isfinite(in.ks) || in.ks < 0.0) return bad("ks must be finite and >= 0");
   if (!std::isfinite(in.norm) || in.norm < 0.0) return bad("s(n) must be finite and >= 0");

@@ -25,6 +25,7 @@
 #include "coefficients.hpp"
 #include "device_model.hpp"
 #include "evaluators.hpp"
+#include "number_text.hpp"
 #include "rom_image.hpp"
 #include "span_shade.hpp"
 
@@ -63,25 +64,10 @@ inline void add_options(CLI::App* sub, Args& a) {
 }
 
 inline double real(const std::string& arg, const std::string& s, double lo, double hi, const std::string& range) {
-  std::size_t used = 0;
-  double v = 0;
-  try {
-    v = std::stod(s, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used == 0 || used != s.size() || !std::isfinite(v)) bad(arg, "'" + s + "' is not a number; allowed " + range);
-  if (v < lo || v > hi) bad(arg, "'" + s + "' is outside the allowed range " + range);
-  return v;
-}
-
-template <class T>
-std::string shortest(T v) {
-  if (std::isnan(v)) return "nan";
-  if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-  char buf[64];
-  const auto r = std::to_chars(buf, buf + sizeof buf, v);
-  return std::string(buf, r.ptr);
+  const std::optional<double> v = whole_double(s);
+  if (!v || !std::isfinite(*v)) bad(arg, "'" + s + "' is not a number; allowed " + range);
+  if (*v < lo || *v > hi) bad(arg, "'" + s + "' is outside the allowed range " + range);
+  return *v;
 }
 
 // The CSV text of the span; throws std::invalid_argument on a bad argument.
@@ -94,12 +80,13 @@ inline std::string run(const Args& a) {
   for (const auto& nm : names) known = known || nm == e;
   if (!known) bad("--evaluator", "'" + e + "' is not allowed; allowed " + kEvaluators);
   const bool golden = e == "device" || e == "device_minimax";
-  const double n = real("--n", a.n, 1.0, 1000.0, "[1, 1000]");
-  if (golden && n != std::floor(n)) bad("--n", "'" + a.n + "' is not an integer; device evaluators allow 1..1000");
+  const std::string max_n = std::to_string(kMaxN), max_len = std::to_string(kMaxLen);
+  const double n = real("--n", a.n, 1.0, kMaxN, "[1, " + max_n + "]");
+  if (golden && n != std::floor(n)) bad("--n", "'" + a.n + "' is not an integer; device evaluators allow 1.." + max_n);
   const double psi0 = real("--psi0", a.psi0, -6.3, 6.3, "[-6.3, 6.3]");
   const double dpsi = real("--dpsi", a.dpsi, -1.0, 1.0, "[-1, 1]");
-  const double lenv = real("--len", a.len, 0.0, 2047.0, "0..2047");
-  if (lenv != std::floor(lenv)) bad("--len", "'" + a.len + "' is not an integer; allowed 0..2047");
+  const double lenv = real("--len", a.len, 0.0, kMaxLen, "0.." + max_len);
+  if (lenv != std::floor(lenv)) bad("--len", "'" + a.len + "' is not an integer; allowed 0.." + max_len);
   const int len = static_cast<int>(lenv);
   const double C = golden ? real("--c", a.c, 0.0, 1.99996948242187, "[0, 2) for device evaluators")
                           : real("--c", a.c, 0.0, 1e6, "[0, 1e6]");
@@ -113,7 +100,7 @@ inline std::string run(const Args& a) {
 
   std::string out = "i,psi,value\n";
   auto row = [&](int i, double psi, const std::string& v) {
-    out += std::to_string(i) + "," + shortest(psi) + "," + v + "\n";
+    out += std::to_string(i) + "," + shortest_text(psi) + "," + v + "\n";
   };
   const int count = len + 1;
   if (e == "device_simd") {
@@ -121,15 +108,15 @@ inline std::string run(const Args& a) {
     const double nn = n;
     const DeviceSpanPlan plan = nn == std::floor(nn) ? device_span_plan(static_cast<int>(nn)) : make_device_span_plan(nn);
     device_span(plan, psi0, dpsi, len, static_cast<float>(C), v.data(), path);
-    for (int i = 0; i < count; ++i) row(i, psi0 + i * dpsi, shortest(v[i]));
+    for (int i = 0; i < count; ++i) row(i, psi0 + i * dpsi, shortest_text(v[i]));
   } else if (e == "pow_cos") {
     std::vector<double> v(count);
     pow_cos_span(n, psi0, dpsi, len, C, v.data());
-    for (int i = 0; i < count; ++i) row(i, psi0 + i * dpsi, shortest(v[i]));
+    for (int i = 0; i < count; ++i) row(i, psi0 + i * dpsi, shortest_text(v[i]));
   } else if (e == "phong_scalar" || e == "phong_sleef") {
     if (std::abs(len * dpsi) > 3.0)
       bad("--dpsi", "phong evaluators lerp the normal between the span ends; |len * dpsi| must be <= 3 (got " +
-                        shortest(len * dpsi) + ")");
+                        shortest_text(len * dpsi) + ")");
     const double p1 = psi0 + len * dpsi;
     const Vec3f n0{float(std::sin(psi0)), 0.0f, float(std::cos(psi0))}, n1{float(std::sin(p1)), 0.0f, float(std::cos(p1))};
     const Vec3f h{0.0f, 0.0f, 1.0f};
@@ -139,7 +126,7 @@ inline std::string run(const Args& a) {
     for (int i = 0; i < count; ++i) {
       const double t = len > 0 ? static_cast<double>(i) / len : 0.0;
       const double x = n0[0] + t * (double(n1[0]) - n0[0]), z = n0[2] + t * (double(n1[2]) - n0[2]);
-      row(i, std::atan2(x, z), shortest(v[i]));
+      row(i, std::atan2(x, z), shortest_text(v[i]));
     }
   } else if (golden) {
     const device::Format f;
@@ -153,7 +140,7 @@ inline std::string run(const Args& a) {
     r.len = static_cast<uint32_t>(len);
     const std::vector<uint32_t> codes = dm.line(r);
     const double q0 = device::angle_value(r.psi0, f), dq = device::angle_value(r.dpsi, f);
-    for (int i = 0; i < count; ++i) row(i, q0 + i * dq, shortest(device::c_value(codes[i], f)));
+    for (int i = 0; i < count; ++i) row(i, q0 + i * dq, shortest_text(device::c_value(codes[i], f)));
   } else {
     std::function<double(double)> cosine, angle;
     if (e == "pow") cosine = PowEval{n};
@@ -169,7 +156,7 @@ inline std::string run(const Args& a) {
     }
     for (int i = 0; i < count; ++i) {
       const double psi = psi0 + i * dpsi;
-      row(i, psi, shortest(C * (cosine ? cosine(std::cos(psi)) : angle(psi))));
+      row(i, psi, shortest_text(C * (cosine ? cosine(std::cos(psi)) : angle(psi))));
     }
   }
   return out;

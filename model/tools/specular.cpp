@@ -159,7 +159,7 @@ int main(int argc, char** argv) {
       const auto model = parse_model(e_model);
       if (!model || *model == Model::phong)
         bad("--model", "'" + e_model + "' is not allowed; allowed blinn, patent, prototype, schlick, schlick-mod, lyon, f16, kutlog");
-      const auto ns = parse_list("--n", e_n, 1, 1000, true);
+      const auto ns = parse_list("--n", e_n, 1, kMaxN, true);
       ModelParams p;
       const bool is_patent = *model == Model::patent, is_kutlog = *model == Model::kutlog;
       if (!e_k.empty() && !is_patent && !is_kutlog) bad("--k", "applies to --model patent or kutlog only");
@@ -200,7 +200,7 @@ int main(int argc, char** argv) {
       for (double kd : ks) {
         const int k = static_cast<int>(kd);
         int n_min = 0, n_max = 0, count = 0;
-        for (int n = 1; n <= 1000; ++n) {
+        for (int n = 1; n <= kMaxN; ++n) {
           const double a = coefficient(n, k, spec);
           const double e = max_rel_epicenter([&](double x) { return cosk_shape(x, k, a); }, n);
           if (e <= tol) {
@@ -216,7 +216,7 @@ int main(int argc, char** argv) {
       const auto model = parse_model(a_model);
       if (!model || *model == Model::phong)
         bad("--model", "'" + a_model + "' is not allowed; allowed blinn, patent, prototype, schlick, schlick-mod, lyon, f16, kutlog");
-      const auto ns = parse_list("--n", a_n, 1, 1000, true);
+      const auto ns = parse_list("--n", a_n, 1, kMaxN, true);
       if (a_conv != "phong" && a_conv != "blinn") bad("--convention", "'" + a_conv + "' is not allowed; allowed phong, blinn");
       if (a_norm != "none" && a_norm != "own" && a_norm != "fit")
         bad("--norm", "'" + a_norm + "' is not allowed; allowed none, own, fit");
@@ -267,7 +267,7 @@ int main(int argc, char** argv) {
       if (zero(in.n1)) bad("--n1", "is the zero vector; a normal must have nonzero length");
       if (zero(in.n2)) bad("--n2", "is the zero vector; a normal must have nonzero length");
       in.l = parse_int("--len", s_len, 0, kMaxLen);
-      in.n = parse_real("--exp", s_exp, 1.0, 1000.0, "[1, 1000]");
+      in.n = parse_real("--exp", s_exp, 1.0, kMaxN, "[1, " + std::to_string(kMaxN) + "]");
       in.is = parse_real("--is", s_is, 0.0, 1e300, "[0, 1e300]");
       in.ks = parse_real("--ks", s_ks, 0.0, 1e300, "[0, 1e300]");
       if (s_norm != "none" && s_norm != "own") bad("--norm", "'" + s_norm + "' is not allowed; allowed none, own");
