@@ -86,6 +86,16 @@ void run_line(benchmark::State& state, const Eval& eval, const std::vector<doubl
   state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(in.size()));
 }
 
+// The golden model's whole line for the registers, output codes.
+void run_device(benchmark::State& state, const device::DeviceModel& dm, const device::Registers& regs) {
+  for (auto _ : state) {
+    std::vector<uint32_t> out = dm.line(regs);
+    benchmark::DoNotOptimize(out.data());
+    benchmark::ClobberMemory();
+  }
+  state.SetItemsProcessed(state.iterations() * static_cast<int64_t>(kPixels));
+}
+
 // "pow/50" (built with append: GCC 12 warns falsely on operator+ of a literal and a string).
 std::string bench_name(const char* evaluator, int n) {
   std::string s(evaluator);
@@ -140,22 +150,10 @@ int main(int argc, char** argv) {
     });
     // The golden fixed-point model of the device along the same line (its registers hold
     // the same quantized psi0 and dpsi); output codes, C = 1.
-    benchmark::RegisterBenchmark(bench_name("device", n).c_str(), [&s, &dm](benchmark::State& st) {
-      for (auto _ : st) {
-        std::vector<uint32_t> out = dm.line(s.regs);
-        benchmark::DoNotOptimize(out.data());
-        benchmark::ClobberMemory();
-      }
-      st.SetItemsProcessed(st.iterations() * static_cast<int64_t>(kPixels));
-    });
-    benchmark::RegisterBenchmark(bench_name("device_minimax", n).c_str(), [&s, &dm_mm](benchmark::State& st) {
-      for (auto _ : st) {
-        std::vector<uint32_t> out = dm_mm.line(s.regs);
-        benchmark::DoNotOptimize(out.data());
-        benchmark::ClobberMemory();
-      }
-      st.SetItemsProcessed(st.iterations() * static_cast<int64_t>(kPixels));
-    });
+    benchmark::RegisterBenchmark(bench_name("device", n).c_str(),
+                                 [&s, &dm](benchmark::State& st) { run_device(st, dm, s.regs); });
+    benchmark::RegisterBenchmark(bench_name("device_minimax", n).c_str(),
+                                 [&s, &dm_mm](benchmark::State& st) { run_device(st, dm_mm, s.regs); });
     // Whole-span evaluators: span parameters in, one value per pixel out.
     const double p0 = s.psi.front(), dp = s.psi[1] - s.psi[0];
     benchmark::RegisterBenchmark(bench_name("pow_cos", n).c_str(), [p0, dp, dn](benchmark::State& st) {

@@ -136,6 +136,21 @@ double max_abs_diff(const A& a, const B& b, size_t count) {
   return w;
 }
 
+// The device method and phong_sleef at one instruction set each: setup_batch's automatic path
+// takes AVX-512 where the CPU has it, while device and phong_sleef shade with AVX2. AVX2
+// throughout: the setup held to AVX2; AVX-512 throughout: both shaders built for AVX-512
+// (SLEEF powf16 for Phong). The methods shade into dev and phong; the pointed-to objects
+// outlive the methods.
+void add_isa_methods(std::vector<Method>& ms, const host::SpanBatch* batch, const device::Format* f,
+                     host::RegisterBatch* regs, const host::DeviceShader* shader, const host::PhongSpans* ps, float* dev,
+                     float* phong, double np) {
+  if (!cpu_has_avx2()) return;
+  ms.push_back({"device_avx2", [=] { host::setup_batch(*batch, *f, *regs, SimdPath::avx2); shader->shade(*regs, dev, SimdPath::avx2); }, np});
+  if (!cpu_has_avx512()) return;
+  ms.push_back({"device_avx512", [=] { host::setup_batch(*batch, *f, *regs); shader->shade_avx512(*regs, dev); }, np});
+  ms.push_back({"phong_sleef_avx512", [=] { host::shade_phong_avx512(*ps, phong); }, np});
+}
+
 json bench_scene(const std::string& path, int reps, double min_time, double fmax_mhz) {
   const Scene scene = load_scene(path);
   const Raster raster = rasterize(scene);
@@ -163,16 +178,7 @@ json bench_scene(const std::string& path, int reps, double min_time, double fmax
   // The device method's two parts alone: setup per span, shading per pixel.
   ms.push_back({"setup_batch", [&] { host::setup_batch(batch, f, regs); }, ns});
   ms.push_back({"device_shade", [&] { shader.shade(regs_fixed, out_shade.data()); }, np});
-  // The methods at one instruction set: setup_batch's automatic path takes AVX-512 where the
-  // CPU has it, while device and phong_sleef above shade with AVX2. AVX2 throughout: the setup
-  // held to AVX2; AVX-512 throughout: both shaders built for AVX-512 (SLEEF powf16 for Phong).
-  const bool avx2 = cpu_has_avx2(), avx512 = avx2 && host::cpu_has_avx512();
-  if (avx2)
-    ms.push_back({"device_avx2", [&] { host::setup_batch(batch, f, regs, SimdPath::avx2); shader.shade(regs, out_dev.data(), SimdPath::avx2); }, np});
-  if (avx512) {
-    ms.push_back({"device_avx512", [&] { host::setup_batch(batch, f, regs); shader.shade_avx512(regs, out_dev.data()); }, np});
-    ms.push_back({"phong_sleef_avx512", [&] { host::shade_phong_avx512(ps, out_ps.data()); }, np});
-  }
+  add_isa_methods(ms, &batch, &f, &regs, &shader, &ps, out_dev.data(), out_ps.data(), np);
   if (pixels > 0) time_methods(ms, reps, min_time);
   std::map<std::string, double> t;
   for (const Method& m : ms) t[m.name] = pixels > 0 ? m.median() : 0.0;
@@ -200,6 +206,7 @@ json bench_scene(const std::string& path, int reps, double min_time, double fmax
   j["device_setup_ns_per_pixel"] = t["setup_batch"] * ns / std::max(np, 1.0);
   j["device_shade_ns_per_pixel"] = t["device_shade"];
   json isa = json::object();
+  const bool avx2 = cpu_has_avx2(), avx512 = avx2 && cpu_has_avx512();
   if (avx2)
     isa["avx2"] = {{"device", t["device_avx2"]}, {"phong_sleef", t["phong_sleef"]},
                    {"speedup", t["device_avx2"] > 0 ? t["phong_sleef"] / t["device_avx2"] : 0.0}};
@@ -246,14 +253,7 @@ json break_even(int max_len, size_t count, int reps, double min_time) {
     std::vector<Method> ms;
     ms.push_back({"device", [&] { host::setup_batch(batch, f, regs); shader.shade(regs, a.data()); }, np});
     ms.push_back({"phong_sleef", [&] { host::shade_phong(ps, b.data(), SimdPath::automatic); }, np});
-    // At one instruction set (see bench_scene).
-    const bool avx2 = cpu_has_avx2(), avx512 = avx2 && host::cpu_has_avx512();
-    if (avx2)
-      ms.push_back({"device_avx2", [&] { host::setup_batch(batch, f, regs, SimdPath::avx2); shader.shade(regs, a.data(), SimdPath::avx2); }, np});
-    if (avx512) {
-      ms.push_back({"device_avx512", [&] { host::setup_batch(batch, f, regs); shader.shade_avx512(regs, a.data()); }, np});
-      ms.push_back({"phong_sleef_avx512", [&] { host::shade_phong_avx512(ps, b.data()); }, np});
-    }
+    add_isa_methods(ms, &batch, &f, &regs, &shader, &ps, a.data(), b.data(), np);
     time_methods(ms, reps, min_time);
     json row = {{"l", l}, {"pixels_per_span", l + 1}, {"spans", count}};
     for (const Method& m : ms) row[m.name] = m.median();

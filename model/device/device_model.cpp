@@ -24,37 +24,31 @@ void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("device::Format/ROM: " + what);
 }
 
-}  // namespace
-
-uint32_t quantize_c(double c, const Format& f, bool* saturated) {
-  const double top = std::ldexp(1.0, f.c_bits) - 1.0;
+// x * 2^frac rounded to nearest (ties away from zero) and clamped to [lo, hi]; NaN gives 0.
+// *saturated (when given) says whether it was clamped or NaN.
+double quantize(double x, int frac, double lo, double hi, bool* saturated) {
   bool sat = false;
   double q = 0.0;
-  if (std::isnan(c)) {
+  if (std::isnan(x)) {
     sat = true;
   } else {
-    q = std::round(std::ldexp(c, f.c_frac));
-    if (q < 0.0) { q = 0.0; sat = true; }
-    if (q > top) { q = top; sat = true; }
-  }
-  if (saturated) *saturated = sat;
-  return static_cast<uint32_t>(q);
-}
-
-int64_t quantize_angle(double rad, const Format& f, bool* saturated) {
-  const double hi = std::ldexp(1.0, f.angle_bits - 1) - 1.0;
-  const double lo = -std::ldexp(1.0, f.angle_bits - 1);
-  bool sat = false;
-  double q = 0.0;
-  if (std::isnan(rad)) {
-    sat = true;
-  } else {
-    q = std::round(std::ldexp(rad, f.angle_frac));
+    q = std::round(std::ldexp(x, frac));
     if (q < lo) { q = lo; sat = true; }
     if (q > hi) { q = hi; sat = true; }
   }
   if (saturated) *saturated = sat;
-  return static_cast<int64_t>(q);
+  return q;
+}
+
+}  // namespace
+
+uint32_t quantize_c(double c, const Format& f, bool* saturated) {
+  return static_cast<uint32_t>(quantize(c, f.c_frac, 0.0, std::ldexp(1.0, f.c_bits) - 1.0, saturated));
+}
+
+int64_t quantize_angle(double rad, const Format& f, bool* saturated) {
+  const double half = std::ldexp(1.0, f.angle_bits - 1);
+  return static_cast<int64_t>(quantize(rad, f.angle_frac, -half, half - 1.0, saturated));
 }
 
 double c_value(uint32_t code, const Format& f) { return std::ldexp(static_cast<double>(code), -f.c_frac); }

@@ -15,6 +15,7 @@
 #include <cmath>
 #include <cstdio>
 #include <fstream>
+#include <functional>
 #include <iterator>
 #include <iostream>
 #include <optional>
@@ -48,6 +49,36 @@ CoefSpec coef_from(const std::string& coef, const std::string& q_text, bool q_gi
     spec.Q = parse_real("--Q", q_text, 1e-300, 1.0 - 1e-16, "(0, 1) exclusive");
   }
   return spec;
+}
+
+// The model options errors and albedo share: --k (patent, kutlog), --coef (patent), --Q
+// (kutlog, or patent with --coef kutlog), --m (lyon). coef_given: --coef was on the command
+// line. kutlog_q parses --Q of kutlog (albedo's --norm fit narrows its range).
+ModelParams model_params(Model model, bool coef_given, const std::string& k, const std::string& coef,
+                         const std::string& q, const std::string& m,
+                         const std::function<double(const std::string&)>& kutlog_q) {
+  const bool is_patent = model == Model::patent, is_kutlog = model == Model::kutlog;
+  if (!k.empty() && !is_patent && !is_kutlog) bad("--k", "applies to --model patent or kutlog only");
+  if (coef_given && !is_patent) bad("--coef", "applies to --model patent only");
+  if (!q.empty() && !is_kutlog && !(is_patent && coef == "kutlog"))
+    bad("--Q", "applies to --model kutlog or --coef kutlog only");
+  if (!m.empty() && model != Model::lyon) bad("--m", "applies to --model lyon only");
+  ModelParams p;
+  if (is_patent) {
+    if (!k.empty()) p.k = parse_int("--k", k, 1, 64);
+    p.coef = coef_from(coef, q, !q.empty());
+  }
+  if (is_kutlog) {
+    if (k.empty()) bad("--k", "required for --model kutlog; allowed 1..5");
+    if (q.empty()) bad("--Q", "required for --model kutlog; allowed (0, 1) exclusive");
+    p.k = parse_int("--k", k, 1, 5);
+    p.Q = kutlog_q(q);
+  }
+  if (model == Model::lyon && !m.empty()) {
+    p.m = parse_int("--m", m, 1, 1024);
+    if ((p.m & (p.m - 1)) != 0) bad("--m", "'" + m + "' is not a power of two; allowed 1, 2, 4, ..., 1024");
+  }
+  return p;
 }
 
 struct Out {
@@ -160,27 +191,9 @@ int main(int argc, char** argv) {
       if (!model || *model == Model::phong)
         bad("--model", "'" + e_model + "' is not allowed; allowed blinn, patent, prototype, schlick, schlick-mod, lyon, f16, kutlog");
       const auto ns = parse_list("--n", e_n, 1, kMaxN, true);
-      ModelParams p;
-      const bool is_patent = *model == Model::patent, is_kutlog = *model == Model::kutlog;
-      if (!e_k.empty() && !is_patent && !is_kutlog) bad("--k", "applies to --model patent or kutlog only");
-      if (err->count("--coef") && !is_patent) bad("--coef", "applies to --model patent only");
-      if (!e_q.empty() && !is_kutlog && !(is_patent && e_coef == "kutlog"))
-        bad("--Q", "applies to --model kutlog or --coef kutlog only");
-      if (!e_m.empty() && *model != Model::lyon) bad("--m", "applies to --model lyon only");
-      if (is_patent) {
-        if (!e_k.empty()) p.k = parse_int("--k", e_k, 1, 64);
-        p.coef = coef_from(e_coef, e_q, !e_q.empty());
-      }
-      if (is_kutlog) {
-        if (e_k.empty()) bad("--k", "required for --model kutlog; allowed 1..5");
-        if (e_q.empty()) bad("--Q", "required for --model kutlog; allowed (0, 1) exclusive");
-        p.k = parse_int("--k", e_k, 1, 5);
-        p.Q = parse_real("--Q", e_q, 1e-300, 1.0 - 1e-16, "(0, 1) exclusive");
-      }
-      if (*model == Model::lyon && !e_m.empty()) {
-        p.m = parse_int("--m", e_m, 1, 1024);
-        if ((p.m & (p.m - 1)) != 0) bad("--m", "'" + e_m + "' is not a power of two; allowed 1, 2, 4, ..., 1024");
-      }
+      ModelParams p = model_params(*model, err->count("--coef") > 0, e_k, e_coef, e_q, e_m, [](const std::string& q) {
+        return parse_real("--Q", q, 1e-300, 1.0 - 1e-16, "(0, 1) exclusive");
+      });
       out.row({"model", "n", "k", "a", "max_rel_epicenter", "max_abs_lobe"});
       for (double n : ns) {
         p.n = n;
@@ -220,31 +233,15 @@ int main(int argc, char** argv) {
       if (a_conv != "phong" && a_conv != "blinn") bad("--convention", "'" + a_conv + "' is not allowed; allowed phong, blinn");
       if (a_norm != "none" && a_norm != "own" && a_norm != "fit")
         bad("--norm", "'" + a_norm + "' is not allowed; allowed none, own, fit");
-      const bool is_patent = *model == Model::patent, is_kutlog = *model == Model::kutlog;
+      const bool is_kutlog = *model == Model::kutlog;
       if (a_norm == "fit" && !is_kutlog) bad("--norm", "fit applies to --model kutlog only; allowed none, own");
-      if (!a_k.empty() && !is_patent && !is_kutlog) bad("--k", "applies to --model patent or kutlog only");
-      if (al->count("--coef") && !is_patent) bad("--coef", "applies to --model patent only");
-      if (!a_q.empty() && !is_kutlog && !(is_patent && a_coef == "kutlog"))
-        bad("--Q", "applies to --model kutlog or --coef kutlog only");
-      if (!a_m.empty() && *model != Model::lyon) bad("--m", "applies to --model lyon only");
-      ModelParams p;
-      if (is_patent) {
-        if (!a_k.empty()) p.k = parse_int("--k", a_k, 1, 64);
-        p.coef = coef_from(a_coef, a_q, !a_q.empty());
-      }
-      if (is_kutlog) {
-        if (a_k.empty()) bad("--k", "required for --model kutlog; allowed 1..5");
-        if (a_q.empty()) bad("--Q", "required for --model kutlog; allowed (0, 1) exclusive");
-        p.k = parse_int("--k", a_k, 1, 5);
-        const bool fit = a_norm == "fit";
-        p.Q = fit ? parse_real("--Q", a_q, 0.1, 0.9, "[0.1, 0.4] or [0.5, 0.9] with --norm fit")
-                  : parse_real("--Q", a_q, 1e-300, 1.0 - 1e-16, "(0, 1) exclusive");
-        if (fit && p.Q > 0.4 && p.Q < 0.5) bad("--Q", "'" + a_q + "' is between the fits' ranges; allowed [0.1, 0.4] or [0.5, 0.9] with --norm fit");
-      }
-      if (*model == Model::lyon && !a_m.empty()) {
-        p.m = parse_int("--m", a_m, 1, 1024);
-        if ((p.m & (p.m - 1)) != 0) bad("--m", "'" + a_m + "' is not a power of two; allowed 1, 2, 4, ..., 1024");
-      }
+      const bool fit = a_norm == "fit";
+      ModelParams p = model_params(*model, al->count("--coef") > 0, a_k, a_coef, a_q, a_m, [&](const std::string& q) {
+        if (!fit) return parse_real("--Q", q, 1e-300, 1.0 - 1e-16, "(0, 1) exclusive");
+        const double Q = parse_real("--Q", q, 0.1, 0.9, "[0.1, 0.4] or [0.5, 0.9] with --norm fit");
+        if (Q > 0.4 && Q < 0.5) bad("--Q", "'" + q + "' is between the fits' ranges; allowed [0.1, 0.4] or [0.5, 0.9] with --norm fit");
+        return Q;
+      });
       const Convention conv = a_conv == "phong" ? Convention::phong : Convention::blinn;
       out.row({"model", "n", "albedo"});
       for (double n : ns) {

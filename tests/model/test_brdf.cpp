@@ -109,7 +109,7 @@ TEST_CASE("kutlog fit error against the closed-form integral (k = 2)", "[brdf]")
   int at = 0;
   const double worst = kutlog_fit_error(2, Q, &at);
   REQUIRE(at >= 3);
-  REQUIRE(at <= 1000);
+  REQUIRE(at <= kMaxN);
   CHECK_THAT(worst, WithinRel(closed(at), 1e-6));
   for (double n : {3.0, 10.0, 100.0, 1000.0}) CHECK(closed(n) <= worst * (1 + 1e-6));
 }

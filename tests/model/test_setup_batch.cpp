@@ -87,14 +87,14 @@ std::vector<Hard> hard_cases() {
   add("overflowing N2", [](ScanlineInput& s) { s.n2 = {1e300, 1e300, 0}; });
   add("NaN n", [nan](ScanlineInput& s) { s.n = nan; });
   add("n = 0", [](ScanlineInput& s) { s.n = 0; });
-  add("n = 1001", [](ScanlineInput& s) { s.n = 1001; });
+  add("n = 1001", [](ScanlineInput& s) { s.n = kMaxN + 1; });
   add("l = -1", [](ScanlineInput& s) { s.l = -1; });
-  add("l = 2048", [](ScanlineInput& s) { s.l = 2048; });
+  add("l = 2048", [](ScanlineInput& s) { s.l = kMaxLen + 1; });
   add("scale < 0", [](ScanlineInput& s) { s.is = -1; });
   add("scale NaN", [nan](ScanlineInput& s) { s.is = nan; });
   add("scale inf", [inf](ScanlineInput& s) { s.is = inf; });
   add("l = 0", [](ScanlineInput& s) { s.l = 0; });
-  add("l = 2047", [](ScanlineInput& s) { s.l = 2047; });
+  add("l = 2047", [](ScanlineInput& s) { s.l = kMaxLen; });
   for (int n : {1, 2, 3, 4, 5, 6, 7, 9, 10, 13, 14, 1000})
     add("n = " + std::to_string(n), [n](ScanlineInput& s) { s.n = n; });
   add("psi crosses 0", [](ScanlineInput& s) {

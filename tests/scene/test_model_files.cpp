@@ -6,6 +6,7 @@
 #include "image.hpp"
 #include "model_file.hpp"
 #include "raster.hpp"
+#include "raster_checks.hpp"
 #include "scene.hpp"
 
 #include <catch2/catch.hpp>
@@ -417,28 +418,17 @@ TEST_CASE("render: a scene with a bad model file exits with 2 and writes nothing
 // (glmark2-data, assimp-testmodels); they are required, not skipped.
 namespace {
 
-// What tests/scene/test_repo_scenes.cpp checks of every listed scene, for the model
+// What tests/scene/test_repo_scenes.cpp checks of every listed scene (raster_checks.hpp), for the model
 // scenes: every triangle rasterized, spans disjoint and inside the image, C unsaturated.
 void check_raster(const Scene& s) {
   const Raster r = rasterize(s);
-  CHECK(r.stats.triangles == s.triangle_count());
-  CHECK(r.stats.triangles_dropped == 0);
-  REQUIRE(r.spans.size() > 0);
-  std::vector<int> count(static_cast<size_t>(s.width) * s.height * s.lights.size(), 0);
   const device::Format f;
   size_t saturated = 0;
-  for (const Span& sp : r.spans) {
-    REQUIRE(sp.y >= 0);
-    REQUIRE(sp.y < s.height);
-    REQUIRE(sp.x_start >= 0);
-    REQUIRE(sp.x_end < s.width);
-    REQUIRE(sp.x_start <= sp.x_end);
-    for (int x = sp.x_start; x <= sp.x_end; ++x) ++count[(static_cast<size_t>(sp.light) * s.height + sp.y) * s.width + x];
+  test::check_spans(s, r, [&](const Span& sp) {
     bool sat = false;
     host::span_registers(sp.setup_in, f, &sat);
     saturated += sat;
-  }
-  CHECK(*std::max_element(count.begin(), count.end()) == 1);
+  });
   CHECK(saturated == 0);
 }
 
