@@ -51,10 +51,11 @@ struct Args {
 
 inline void add_options(CLI::App* sub, Args& a) {
   sub->add_option("--evaluator", a.evaluator, std::string("evaluator: ") + kEvaluators)->required();
-  sub->add_option("--n", a.n, "specular exponent n, [1, 1000] (integer for device, device_minimax)")->required();
+  sub->add_option("--n", a.n, "specular exponent n, [1, " + std::to_string(kMaxN) + "] (integer for device, device_minimax)")
+      ->required();
   sub->add_option("--psi0", a.psi0, "angle at pixel 0, radians, [-6.3, 6.3]")->required();
   sub->add_option("--dpsi", a.dpsi, "angle increment per pixel, radians, [-1, 1]")->required();
-  sub->add_option("--len", a.len, "l: pixels 0..l, 0..2047")->required();
+  sub->add_option("--len", a.len, "l: pixels 0..l, 0.." + std::to_string(kMaxLen))->required();
   sub->add_option("--c", a.c, "intensity C, [0, 1e6] (device, device_minimax: [0, 2)); default 1");
   sub->add_option("--simd", a.simd, "device_simd, phong_sleef: auto (default), scalar or avx2 (forced)");
 }

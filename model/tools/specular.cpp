@@ -101,9 +101,10 @@ int main(int argc, char** argv) {
                                  "Shape errors of a model against cos^n: model,n,k,a,max_rel_epicenter,max_abs_lobe "
                                  "(fractions). k and a describe the cos^k(a x) form (blinn: k = n, a = 1; lyon/f16: "
                                  "k = m, a = nan; schlick, schlick-mod: nan)");
-  std::string e_model, e_n = "1..1000", e_k, e_coef = "maclaurin", e_q, e_m;
+  const std::string all_n = "1.." + std::to_string(kMaxN);  // every exponent of the patent
+  std::string e_model, e_n = all_n, e_k, e_coef = "maclaurin", e_q, e_m;
   err->add_option("--model", e_model, "blinn, patent, prototype, schlick, schlick-mod, lyon, f16, kutlog")->required();
-  err->add_option("--n", e_n, "exponents, e.g. 1..1000 or 1,2,7 (1..1000)");
+  err->add_option("--n", e_n, "exponents, e.g. " + all_n + " or 1,2,7 (" + all_n + ")");
   err->add_option("--k", e_k, "patent: bank override (1..64, default: decoder); kutlog: required (1..5)");
   err->add_option("--coef", e_coef, "patent: maclaurin (default), minimax, kutlog (needs --Q) or kutlog:Q");
   err->add_option("--Q", e_q, "kutlog: level in (0, 1)");
@@ -122,9 +123,9 @@ int main(int argc, char** argv) {
   // --- albedo ---
   auto* al = app.add_subcommand("albedo",
                                 "Hemispherical albedo 2 pi int F cos sin with light at the normal: model,n,albedo");
-  std::string a_model, a_n = "1..1000", a_conv = "phong", a_norm = "none", a_k, a_q, a_coef = "maclaurin", a_m;
+  std::string a_model, a_n = all_n, a_conv = "phong", a_norm = "none", a_k, a_q, a_coef = "maclaurin", a_m;
   al->add_option("--model", a_model, "blinn, patent, prototype, schlick, schlick-mod, lyon, f16, kutlog")->required();
-  al->add_option("--n", a_n, "exponents (1..1000)");
+  al->add_option("--n", a_n, "exponents (" + all_n + ")");
   al->add_option("--convention", a_conv, "phong (angle = theta, default) or blinn (angle = theta/2)");
   al->add_option("--norm", a_norm,
                  "none (default), own (blinn, patent, prototype, schlick, schlick-mod, lyon: (n+8)/(8 pi); "
@@ -144,8 +145,8 @@ int main(int argc, char** argv) {
   su->add_option("--n2", s_n2, "unit normal at the last pixel, X,Y,Z")->required();
   su->add_option("--h1", s_h1, "halfway vector at the first pixel, X,Y,Z")->required();
   su->add_option("--he", s_he, "halfway vector at the last pixel (default --h1)");
-  su->add_option("--len", s_len, "l = X_end - X_start, 0..2047 (l + 1 pixels)")->required();
-  su->add_option("--exp", s_exp, "specular exponent n, [1, 1000]")->required();
+  su->add_option("--len", s_len, "l = X_end - X_start, 0.." + std::to_string(kMaxLen) + " (l + 1 pixels)")->required();
+  su->add_option("--exp", s_exp, "specular exponent n, [1, " + std::to_string(kMaxN) + "]")->required();
   su->add_option("--is", s_is, "light intensity Is >= 0 (default 1)");
   su->add_option("--ks", s_ks, "specular coefficient ks >= 0 (default 1)");
   su->add_option("--norm", s_norm, "none (default) or own (Blinn-Phong (n+8)/(8 pi))");

@@ -112,7 +112,7 @@ TEST_CASE("minimax is exact when n = k and agrees with a brute-force search", "[
 
 // No wall-clock bound here: speed belongs in the benchmark (model/bench) and the report.
 TEST_CASE("minimax for all 1000 decoder entries is finite and never worse than maclaurin", "[coef]") {
-  for (int n = 1; n <= 1000; ++n) {
+  for (int n = 1; n <= kMaxN; ++n) {
     const int k = decoder_k(n);
     const double a = coefficient(n, k, {CoefPolicy::minimax, 0.5});
     INFO("n=" << n);

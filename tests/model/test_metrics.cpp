@@ -161,7 +161,7 @@ TEST_CASE("n = 1: relative error at pi/2 is 0 when F vanishes there and unbounde
 TEST_CASE("errors for n = 1..1000 of the patent: the worst is the n = 3 bank boundary", "[metrics]") {
   double worst = 0;
   int worst_n = 0;
-  for (int n = 1; n <= 1000; ++n) {
+  for (int n = 1; n <= kMaxN; ++n) {
     const int k = decoder_k(n);
     const double a = coef_maclaurin(n, k);
     const double e = shape_error([&](double x) { return cosk_shape(x, k, a); }, n).max_rel_epicenter;

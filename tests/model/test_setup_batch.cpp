@@ -294,7 +294,7 @@ TEST_CASE("the device fed by the batched setup stays within its budget end to en
   size_t pixels = 0, over = 0;
   for (size_t s = 0; s < in.size(); ++s) {
     const device::Registers r = ref.registers(s);
-    if (r.n < 1 || r.n > 1000) continue;
+    if (r.n < 1 || r.n > static_cast<uint32_t>(kMaxN)) continue;
     const std::vector<uint32_t> line = dm.line(got.registers(s));
     const double c = device::c_value(r.c, f), n = r.n, xe = epicenter_end(n);
     for (size_t i = 0; i < line.size(); ++i) {
