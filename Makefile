@@ -7,14 +7,15 @@ JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 PYTHON ?= /usr/bin/python3
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build test sim roms vcd report lint fuzz fpga coverage xprop clean help
+.PHONY: all deps configure build test sim stage-table roms vcd report lint fuzz fpga coverage xprop clean help
 
 all: build
 
 help:
 	@echo "make sim     build everything, run the RTL regression (every build configuration, the stream, scenes)"
 	@echo "make test    build everything, run every test with ctest (what CI runs)"
-	@echo "make roms    regenerate every configuration's ROM hex files under roms/ (romgen --all)"
+	@echo "make roms    regenerate every configuration's ROM hex files and roms/build_configs.cmake (romgen --all)"
+	@echo "make stage-table  rewrite docs/pipeline.md's stage table from rtl/specular_pkg.sv"
 	@echo "make vcd     write VCD timing diagrams to $(BUILD)/vcd and draw the 4-pixel one"
 	@echo "make report  measure and write $(BUILD)/report/report.md"
 	@echo "make lint    verilator -Wall lint and Yosys synthesis of rtl/"
@@ -39,6 +40,10 @@ test: build
 
 sim: build
 	./$(BUILD)/bin/sim_regression --images-dir $(BUILD)/scenes
+
+# docs/pipeline.md's stage table from rtl/specular_pkg.sv (docs/pipeline.md#stage-counts).
+stage-table: build
+	$(PYTHON) tests/docs/check_stage_counts.py --sim $(BUILD)/bin/sim_regression --root . --update
 
 roms: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target romgen

@@ -3,7 +3,8 @@
 // rtl/specular.f: the synthesizable sources of the core in compile order (leaf modules
 // first, top levels last). One path per line, relative to the repository root; a line
 // `+incdir+DIR` names an include directory (for `include files, .svh); `//` comment
-// lines and blank lines are ignored. There is no package.
+// lines and blank lines are ignored. The package specular_pkg (the stage counts) comes
+// first: every module refers to it.
 // Every build, lint, synthesis, formal and place-and-route flow of this repository reads
 // this file; how to use it elsewhere (Verilator, Icarus, Vivado, Quartus, FuseSoC, a
 // Makefile) is in rtl/README.md. The ctest rtl_filelist fails when an .sv file under
@@ -12,6 +13,8 @@
 // directory (the parameters CoefRomFile and CosRomFile; roms/README.md).
 
 +incdir+rtl
+// the package
+rtl/specular_pkg.sv
 // helpers
 rtl/specular_delay.sv
 rtl/specular_pipe_mul.sv

@@ -5,7 +5,7 @@
 // On the first strobe of a span (mux select 36 low) register 8 loads psi0; on every further
 // strobe it loads psi + dpsi (register 2). Write strobe of reg 8 is 37.
 //
-// Erratum (SPEC 5): the patent loads register 3 with -sqrt(n/k)*lambda, but multiplier 11
+// Erratum (docs/device.md#errata-of-the-patent-and-how-each-is-resolved): the patent loads register 3 with -sqrt(n/k)*lambda, but multiplier 11
 // scales the accumulator output afterwards, so registers 3 and 2 hold the unscaled angles
 // psi0 = -lambda and dpsi = gamma / l, in radians.
 //
@@ -41,6 +41,9 @@ module specular_accumulator #(
   localparam int LoBits = AccBits / 2;
   localparam int HiBits = AccBits - LoBits;
 
+  if (specular_pkg::AccStages != 2) begin : gen_pkg_check
+    `SPEC_PARAM_ERROR("specular_accumulator: register 8 is built as two halves (specular_pkg::AccStages)")
+  end
   if (AccBits < AngleBits + 1) begin : gen_width_check
     `SPEC_PARAM_ERROR("specular_accumulator: AccBits must exceed AngleBits")
   end

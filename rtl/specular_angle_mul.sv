@@ -6,8 +6,9 @@
 //   |psi|   one's complement of register 8 (psi >= 0 ? psi : ~psi, one code below |psi| for
 //           negative psi): cos is even, and no carry chain is spent on the negation
 //   far     |psi| >= pi/2 exactly (the comparison allows for the one's complement): N.H < 0
-//           there and the reference is 0 (SPEC 5 erratum: where a(n) < 1 the lobe of
-//           cos^k(a psi) would otherwise run past pi/2)
+//           there and the reference is 0 (an erratum: where a(n) < 1 the lobe of
+//           cos^k(a psi) would otherwise run past pi/2;
+//           docs/device.md#errata-of-the-patent-and-how-each-is-resolved)
 //   psi_t   |psi| truncated to 1 integer and PsiMulFrac fraction bits (|psi| < pi/2 < 2)
 //   zeta    coef * psi_t, coef = a(n) * 2/pi from ROM 9 (CoefFrac fraction bits), so zeta is
 //           in quarter turns: zeta >= 1 means a*|psi| >= pi/2, where ROM 12 has no entry
@@ -17,9 +18,10 @@
 //           zero when that reaches 2^CosAddrBits
 //   zero    far, or past a quarter turn, or n invalid (decoder 10)
 // Pipeline, every register enabled by en_i (stall): stage 1 |psi| and the coefficient;
-// stages 2 .. 1 + MulStages the radix-4 multiplier tree (specular_pipe_mul) with the pi/2 test
-// (stages 2 and 3) and n_valid beside it; then the address register: 2 + MulStages clocks
-// from psi_i to addr_o / frac_o / zero_o.
+// then the radix-4 multiplier tree (specular_pipe_mul) with the pi/2 test (in its first two
+// stages) and n_valid beside it; then the address register and
+// specular_pkg::Mul11RetimeStages retiming registers: specular_pkg::angle_mul_stages clocks
+// from psi_i to addr_o / frac_o / zero_o (docs/pipeline.md#stage-counts).
 
 `include "specular_assert.svh"
 
@@ -45,8 +47,10 @@ module specular_angle_mul #(
 );
 
   localparam int PsiTBits  = 1 + PsiMulFrac;
-  // Radix-4 tree over the bits of |psi|_t (specular_pipe_mul).
-  localparam int MulStages = 1 + ((((PsiTBits + 1) / 2) > 1) ? $clog2((PsiTBits + 1) / 2) : 0);
+  // Radix-4 tree over the bits of |psi|_t (specular_pipe_mul); the block's registers around
+  // it are those specular_pkg::angle_mul_stages counts (docs/pipeline.md#stage-counts).
+  localparam int MulStages = specular_pkg::pipe_mul_stages(PsiTBits);
+  localparam int RetimeStages = specular_pkg::Mul11RetimeStages;
   localparam int ZetaBits  = CoefBits + PsiTBits;
   localparam int ZetaFrac  = CoefFrac + PsiMulFrac;
   localparam int DropBits  = ZetaFrac - CosAddrBits;    // bits below the ROM address
@@ -62,6 +66,12 @@ module specular_angle_mul #(
   end
   if (DropBits < 1) begin : gen_drop_check
     `SPEC_PARAM_ERROR("specular_angle_mul: CoefFrac + PsiMulFrac must exceed CosAddrBits")
+  end
+  if (specular_pkg::Mul11InStages != 1 || specular_pkg::Mul11OutStages != 1) begin : gen_pkg_check
+    `SPEC_PARAM_ERROR("specular_angle_mul: builds one register in front of the tree and one address register behind it (specular_pkg)")
+  end
+  if (RetimeStages < 0) begin : gen_retime_check
+    `SPEC_PARAM_ERROR("specular_angle_mul: specular_pkg::Mul11RetimeStages must be >= 0")
   end
   if (MulStages < 2) begin : gen_stages_check
     `SPEC_PARAM_ERROR("specular_angle_mul: PsiMulFrac must be >= 2 (the pi/2 test needs two stages)")
@@ -114,8 +124,7 @@ module specular_angle_mul #(
   logic [ZetaBits-1:0] zeta;
   specular_pipe_mul #(
     .ABits  (CoefBits),
-    .BBits  (PsiTBits),
-    .Radix4 (1'b1)
+    .BBits  (PsiTBits)
   ) u_tree (
     .clk_i (clk_i),
     .en_i  (en_i),
@@ -172,9 +181,11 @@ module specular_angle_mul #(
     end
   end
 
-  assign addr_o = addr_q;
-  assign frac_o = frac_q;
-  assign zero_o = zero_q;
+  // Retiming registers behind the address register (specular_pkg::Mul11RetimeStages).
+  specular_delay #(.Width (CosAddrBits + CosFracBits), .Depth (RetimeStages), .Reset (1'b0)) u_retime (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (en_i), .d_i ({addr_q, frac_q}), .q_o ({addr_o, frac_o}));
+  specular_delay #(.Width (1), .Depth (RetimeStages)) u_retime_zero (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (en_i), .d_i (zero_q), .q_o (zero_o));
 
   // Bits of |psi| past pi/2 only matter through `far`; bits below the multiplier's
   // precision are deliberately dropped.

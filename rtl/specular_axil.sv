@@ -161,12 +161,9 @@ module specular_axil #(
   localparam int ErrBadN   = 0;
   localparam int ErrFull   = 1;
 
-  // Build information. Latency repeats specular_stream's formula (its Latency localparam);
-  // the testbench checks the two against each other and against the measured latency.
-  localparam int Mul11Stages = 3 + (((2 + PsiMulFrac) / 2 > 1) ? $clog2((2 + PsiMulFrac) / 2) : 0);
-  localparam int Rom12Stages = 3 + (((CosDeltaBits + 1) / 2 > 1) ? $clog2((CosDeltaBits + 1) / 2) : 0);
-  localparam int Mul13Stages = 2 + (((CosDataBits + 2) / 2 > 1) ? $clog2((CosDataBits + 2) / 2) : 0);
-  localparam int Latency     = 3 + Mul11Stages + Rom12Stages + Mul13Stages;
+  // Build information: the core's latency (specular_pkg, docs/pipeline.md#stage-counts); the
+  // testbench checks it against the measured latency.
+  localparam int Latency     = specular_pkg::stream_latency(PsiMulFrac, CosDeltaBits, CosDataBits);
   localparam int CosWordBits = CosInterp ? CosDataBits + 1 + CosDeltaBits : CosDataBits;
   localparam int RomBits     = NumBanks * (2 ** CosAddrBits) * CosWordBits;
 

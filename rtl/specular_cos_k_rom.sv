@@ -16,7 +16,7 @@
 // CosInterp = 0 (the patent's direct table): word = min(round(cos^k(i h) * 2^CosDataBits),
 // 2^CosDataBits - 1), cosk = word (cos^k(0) = 1 saturates deliberately).
 //
-// Erratum (SPEC 5): only [0, pi/2) is stored; multiplier 11 feeds |zeta| (cos is even)
+// Erratum (docs/device.md#errata-of-the-patent-and-how-each-is-resolved): only [0, pi/2) is stored; multiplier 11 feeds |zeta| (cos is even)
 // and flags zeta >= pi/2 as zero, so no address outside a bank is ever needed.
 //
 // Contents: $readmemh(CosRomFile, mem, 0, Depth - 1): one hex word per line, no comments,
@@ -25,9 +25,9 @@
 // Synchronous read with read enable (block RAM, RE of SB_RAM40_4K), no reset.
 //
 // Pipeline, every register enabled by en_i: the ROM read (with 3t beside it), then
-// (interpolated) the radix-4 t * d tree (specular_pipe_mul, 1 + clog2(ceil(CosDeltaBits/2))
-// stages) and the subtraction; the direct table is delayed by as many clocks, so both
-// have Latency = 3 + clog2(ceil(CosDeltaBits / 2)).
+// (interpolated) the radix-4 t * d tree (specular_pipe_mul) and the subtraction; the direct
+// table is delayed by as many clocks, so both take specular_pkg::cos_k_rom_stages clocks
+// (docs/pipeline.md#stage-counts).
 
 `include "specular_assert.svh"
 
@@ -52,8 +52,11 @@ module specular_cos_k_rom #(
   localparam int Depth     = NumBanks << CosAddrBits;
   localparam int WordBits  = CosInterp ? CosDataBits + 1 + CosDeltaBits : CosDataBits;
   // Radix-4 tree over the bits of d (specular_pipe_mul), t and 3t as the multiplicand.
-  localparam int MulStages = 1 + ((((CosDeltaBits + 1) / 2) > 1) ? $clog2((CosDeltaBits + 1) / 2) : 0);
+  localparam int MulStages = specular_pkg::pipe_mul_stages(CosDeltaBits);
 
+  if (specular_pkg::Rom12ReadStages != 1 || specular_pkg::Rom12OutStages != 1) begin : gen_pkg_check
+    `SPEC_PARAM_ERROR("specular_cos_k_rom: builds one read register and one subtraction register (specular_pkg)")
+  end
   if (CosInterp && CosDeltaBits > CosDataBits) begin : gen_delta_check
     `SPEC_PARAM_ERROR("specular_cos_k_rom: CosDeltaBits must not exceed CosDataBits")
   end
@@ -123,8 +126,7 @@ module specular_cos_k_rom #(
 
     specular_pipe_mul #(
       .ABits  (CosFracBits),
-      .BBits  (CosDeltaBits),
-      .Radix4 (1'b1)
+      .BBits  (CosDeltaBits)
     ) u_step (
       .clk_i (clk_i),
       .en_i  (en_i),

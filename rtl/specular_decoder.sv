@@ -8,7 +8,7 @@
 // n = 7..1000 -> k = 16. n = 0 or n > BankMaxN[NumBanks-1] selects no bank and flags the
 // exponent invalid: every pixel of the line is then 0.
 //
-// Erratum (SPEC 5): n up to 1000 needs 10 bits; the patent's decoder has 9 inputs.
+// Erratum (docs/device.md#errata-of-the-patent-and-how-each-is-resolved): n up to 1000 needs 10 bits; the patent's decoder has 9 inputs.
 //
 // BankMaxN is packed, NBits bits per bank, bank 0 in the least significant bits:
 // the default here is the patent's {10'd1000, 10'd6, 10'd2, 10'd1}. The limits must

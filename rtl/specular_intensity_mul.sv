@@ -9,9 +9,9 @@
 // zeta >= pi/2, invalid n), or no pixel at all (a pipeline bubble), so the output reads 0
 // whenever no pixel is valid.
 // Pipeline, every register enabled by en_i (stall): the radix-4 multiplier tree
-// (specular_pipe_mul over the bits of cos^k, 1 + clog2(ceil((CosDataBits + 1) / 2)) stages)
-// with the zero flag beside it, then the rounding and the output register:
-// Latency = 2 + clog2(ceil((CosDataBits + 1) / 2)).
+// (specular_pipe_mul over the bits of cos^k) with the zero flag beside it, then the rounding
+// and the output register: specular_pkg::intensity_mul_stages clocks
+// (docs/pipeline.md#stage-counts).
 
 `include "specular_assert.svh"
 
@@ -35,13 +35,15 @@ module specular_intensity_mul #(
 
   localparam int ProdBits  = CBits + CosDataBits + 1;
   // Radix-4 tree over the bits of cos^k (specular_pipe_mul), C and 3C as the multiplicand.
-  localparam int MulStages = 1 + (((CosDataBits + 2) / 2 > 1) ? $clog2((CosDataBits + 2) / 2) : 0);
+  localparam int MulStages = specular_pkg::pipe_mul_stages(CosDataBits + 1);
+  if (specular_pkg::Mul13OutStages != 1) begin : gen_pkg_check
+    `SPEC_PARAM_ERROR("specular_intensity_mul: builds one output register behind the tree (specular_pkg)")
+  end
 
   logic [ProdBits-1:0] prod;
   specular_pipe_mul #(
     .ABits  (CBits),
-    .BBits  (CosDataBits + 1),
-    .Radix4 (1'b1)
+    .BBits  (CosDataBits + 1)
   ) u_tree (
     .clk_i (clk_i),
     .en_i  (en_i),

@@ -5,76 +5,67 @@
 // needed), one new operand pair every clock, en_i freezes every stage (pipeline stall).
 // No reset: the datapath carries no control state, the valid bits beside it are reset.
 //
-// Radix4 = 0: the BBits partial products (a << j where b[j] is set) are summed by a binary
-//   tree of adders with a register after every level: Stages = max(1, clog2(BBits)).
-// Radix4 = 1: b is taken two bits at a time; each digit selects 0, a, 2a or 3a (a3_i, which
-//   the caller computes a clock earlier, off this pipeline's path). The first stage only
-//   registers the selected rows (a multiplexer, no carry chain: the AND in front of an
-//   adder costs the UP5K its 50 MHz otherwise), then the binary tree adds them:
-//   Stages = 1 + clog2(ceil(BBits / 2)) (1 when BBits <= 2).
-// Either way no stage holds more than one carry chain.
+// b is taken two bits at a time; each digit selects 0, a, 2a or 3a (a3_i, which the caller
+// computes a clock earlier, off this pipeline's path). The first stage only registers the
+// selected rows (a multiplexer, no carry chain: the AND in front of an adder costs the UP5K
+// its 50 MHz otherwise), then a binary tree of adders with a register after every level
+// adds them, so no stage holds more than one carry chain. Stages:
+// specular_pkg::pipe_mul_stages(BBits) = 1 + clog2(ceil(BBits / 2)) (docs/pipeline.md#stage-counts);
+// the block checks at elaboration that the tree it builds has that many levels.
 // Used by multiplier 11 (coef * |psi|), the ROM 12 interpolation (t * d) and
 // multiplier 13 (C * cos^k) of patent UA 71489.
 
 `include "specular_assert.svh"
 
 module specular_pipe_mul #(
-  parameter int ABits  = 16,
-  parameter int BBits  = 16,
-  parameter bit Radix4 = 1'b0
+  parameter int ABits = 16,
+  parameter int BBits = 16
 ) (
   input  logic                   clk_i,
   input  logic                   en_i,
   input  logic [ABits-1:0]       a_i,
-  input  logic [ABits+1:0]       a3_i,    // 3 * a_i (Radix4 only)
+  input  logic [ABits+1:0]       a3_i,    // 3 * a_i
   input  logic [BBits-1:0]       b_i,
   output logic [ABits+BBits-1:0] p_o
 );
 
-  localparam int PBits   = ABits + BBits;
-  localparam int NRows   = Radix4 ? (BBits + 1) / 2 : BBits;
-  localparam int TreeLvl = (NRows > 1) ? $clog2(NRows) : 0;
-  // Radix-4 rows are registered once before the tree; a radix-2 tree needs at least one
-  // register even for a single row.
-  localparam int FirstLvl = Radix4 ? 1 : 0;
-  localparam int Levels   = (FirstLvl + TreeLvl > 0) ? FirstLvl + TreeLvl : 1;
+  localparam int PBits  = ABits + BBits;
+  localparam int NRows  = (BBits + 1) / 2;
+  localparam int Levels = specular_pkg::pipe_mul_stages(BBits);
 
-  if (ABits < 1 || BBits < 1) begin : gen_width_check
-    `SPEC_PARAM_ERROR("specular_pipe_mul: widths must be >= 1")
+  // (BBits = 1 needs no multiplier; from 2 on every digit row fits the product's width.)
+  if (ABits < 1 || BBits < 2) begin : gen_width_check
+    `SPEC_PARAM_ERROR("specular_pipe_mul: ABits must be >= 1 and BBits >= 2")
+  end
+  // Level 1 registers the rows, levels 2 .. Levels halve them until one is left.
+  if (Levels != 1 + ((NRows > 1) ? $clog2(NRows) : 0)) begin : gen_levels_check
+    `SPEC_PARAM_ERROR("specular_pipe_mul: specular_pkg::pipe_mul_stages disagrees with the tree built here")
   end
 
   // rows[l][j]: row j after level l; level 0 is combinational.
   logic [PBits-1:0] rows [Levels+1][NRows];
 
-  if (Radix4) begin : gen_r4
-    logic [2*NRows-1:0] b_pad;
-    assign b_pad = (2 * NRows)'(b_i);
-    for (genvar j = 0; j < NRows; j++) begin : gen_pp
-      logic [1:0]       digit;
-      logic [ABits+1:0] digit_row;
-      assign digit = b_pad[2*j +: 2];  // Icarus 11: no constant part select in always_comb
-      always_comb begin
-        unique case (digit)
-          2'd0:    digit_row = '0;
-          2'd1:    digit_row = (ABits + 2)'(a_i);
-          2'd2:    digit_row = (ABits + 2)'(a_i) << 1;
-          default: digit_row = a3_i;
-        endcase
-      end
-      assign rows[0][j] = PBits'(digit_row) << (2 * j);
+  logic [2*NRows-1:0] b_pad;
+  assign b_pad = (2 * NRows)'(b_i);
+  for (genvar j = 0; j < NRows; j++) begin : gen_pp
+    logic [1:0]       digit;
+    logic [ABits+1:0] digit_row;
+    assign digit = b_pad[2*j +: 2];  // Icarus 11: no constant part select in always_comb
+    always_comb begin
+      unique case (digit)
+        2'd0:    digit_row = '0;
+        2'd1:    digit_row = (ABits + 2)'(a_i);
+        2'd2:    digit_row = (ABits + 2)'(a_i) << 1;
+        default: digit_row = a3_i;
+      endcase
     end
-  end else begin : gen_r2
-    for (genvar j = 0; j < NRows; j++) begin : gen_pp
-      assign rows[0][j] = b_i[j] ? (PBits'(a_i) << j) : '0;
-    end
-    logic unused_a3;
-    assign unused_a3 = ^a3_i;
+    assign rows[0][j] = PBits'(digit_row) << (2 * j);
   end
 
   for (genvar l = 1; l <= Levels; l++) begin : gen_level
-    // Radix-4: level 1 registers the rows as they are; later levels add pairs.
-    localparam bit Adds  = !(Radix4 && l == 1);
-    localparam int Shift = Radix4 ? l - 1 : l;   // additions done up to this level
+    // Level 1 registers the rows as they are; later levels add pairs.
+    localparam bit Adds  = l != 1;
+    localparam int Shift = l - 1;   // additions done up to this level
     localparam int NPrev = Adds ? (NRows + (1 << (Shift - 1)) - 1) >> (Shift - 1) : NRows;
     localparam int NCur  = (NRows + (1 << Shift) - 1) >> Shift;
     for (genvar j = 0; j < NCur; j++) begin : gen_row
@@ -107,18 +98,16 @@ module specular_pipe_mul #(
   // from the same a, on the same enable). No reset here: checked from the first enabled edge
   // on (before it the caller's registers hold power-up values) and on known operands (a
   // bubble's may be X).
-  if (Radix4) begin : gen_a3_check
 `ifndef SYNTHESIS
-    logic primed_q = 1'b0;
-    always_ff @(posedge clk_i) begin
-      if (en_i) begin
-        primed_q <= 1'b1;
-      end
+  logic primed_q = 1'b0;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      primed_q <= 1'b1;
     end
-    logic a_known;
-    assign a_known = `SPEC_KNOWN({a_i, a3_i});
-    `SPEC_ASSERT_IF(A3IsThreeA_A, en_i && a_known, a3_i == (ABits + 2)'(a_i) * (ABits + 2)'(3), clk_i, primed_q)
-`endif
   end
+  logic a_known;
+  assign a_known = `SPEC_KNOWN({a_i, a3_i});
+  `SPEC_ASSERT_IF(A3IsThreeA_A, en_i && a_known, a3_i == (ABits + 2)'(a_i) * (ABits + 2)'(3), clk_i, primed_q)
+`endif
 
 endmodule

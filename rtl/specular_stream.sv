@@ -31,8 +31,9 @@
 // reaches only the output buffer's flip-flops.
 //
 // Timing: a span accepted at the edge ending cycle t has pixel i on the output in cycle
-// t + Latency + i (Latency = 22 with the default parameters: PipeDepth below) when
-// px_ready_i stays high; the next span's pixel 0
+// t + L + i, L = specular_pkg::stream_latency (PipeDepth stages plus the output buffer; the
+// figures per configuration: docs/pipeline.md#stage-counts) when px_ready_i stays high;
+// the next span's pixel 0
 // follows its previous span's last pixel in the next cycle, whatever l (one pixel per
 // clock sustained, no bubble between spans). Stalls (px_ready_i low) freeze every stage.
 //
@@ -41,15 +42,15 @@
 //   stage 0  registers 1 (C), 2 (dpsi), 4 (n), counter 5 and the tag load when a span is
 //            accepted; register 8 (accumulator 6/7/8) takes psi0 then psi + dpsi; ROM 9 is
 //            read with the span's n at the accept edge; decoder 10 decodes register 4
-//   stage 1            register 8, high half (specular_accumulator splits the 44-bit add)
-//   stages 2 .. 8      multiplier 11: |psi| and pi/2 test, the multiplier tree (5 stages
-//                      for 21 bits of |psi|), the ROM 12 address / weight / zero flag
-//   stages 9 .. 14     ROM 12: block RAM read, interpolation tree d * t (4 stages),
-//                      cos^k = v - d t (the direct table is delayed as long)
-//   stages 15 .. 20    multiplier 13: radix-4 tree over cos^k (5 stages), rounding and the
-//                      output register (output 27)
-//   output buffer      two entries (specular_out_buf): the pixel handshake
-// (stage counts for the default widths; each block's latency follows its parameters).
+//   stage 1       register 8, high half (specular_accumulator splits the 44-bit add)
+//   then          multiplier 11: |psi| and pi/2 test, the multiplier tree over the bits of
+//                 |psi|, the ROM 12 address / weight / zero flag
+//   then          ROM 12: block RAM read, interpolation tree d * t, cos^k = v - d t (the
+//                 direct table is delayed as long)
+//   then          multiplier 13: radix-4 tree over cos^k, rounding and the output register
+//                 (output 27)
+//   output buffer two entries (specular_out_buf): the pixel handshake
+// (each block's stage count follows its parameters: specular_pkg, docs/pipeline.md#stage-counts).
 // Every stage holds at most one carry chain, which is what an iCE40 needs for 100 MHz.
 // C, the tag, the bank and the n-valid flag of each pixel travel beside it (specular_delay), so every
 // pixel uses its own span's values while consecutive spans overlap in the pipeline.
@@ -106,19 +107,15 @@ module specular_stream #(
   output logic [TagBits-1:0]   px_tag_o
 );
 
-  // Stage latencies (see each block's header): register 8, multiplier 11 (|psi|, the
-  // multiplier tree, the address register), ROM 12 (read, interpolation tree, subtraction),
-  // multiplier 13 (tree, rounding and output register).
-  localparam int Mul11Stages = 3 + (((2 + PsiMulFrac) / 2 > 1) ? $clog2((2 + PsiMulFrac) / 2) : 0);
-  localparam int Rom12Stages = 3 + (((CosDeltaBits + 1) / 2 > 1) ? $clog2((CosDeltaBits + 1) / 2) : 0);
-  localparam int Mul13Stages = 2 + (((CosDataBits + 2) / 2 > 1) ? $clog2((CosDataBits + 2) / 2) : 0);
-  // Register 8 is two stages (specular_accumulator: low half, then high half).
-  localparam int PipeDepth   = 2 + Mul11Stages + Rom12Stages + Mul13Stages;
-  // Accept cycle -> pixel 0 on the output (with px_ready_i high): the stages plus the
-  // output buffer; read by the testbenches.
-  /* verilator lint_off UNUSEDPARAM */
-  localparam int Latency /*verilator public*/ = PipeDepth + 1;
-  /* verilator lint_on UNUSEDPARAM */
+  // Stage counts of the blocks and of the whole pipeline: specular_pkg, their one
+  // definition (docs/pipeline.md#stage-counts).
+  localparam int AccStages   = specular_pkg::AccStages;
+  localparam int Mul11Stages = specular_pkg::angle_mul_stages(PsiMulFrac);
+  localparam int Rom12Stages = specular_pkg::cos_k_rom_stages(CosDeltaBits);
+  localparam int PipeDepth   = specular_pkg::stream_pipe_depth(PsiMulFrac, CosDeltaBits, CosDataBits);
+  if (specular_pkg::OutBufStages != 1) begin : gen_pkg_check
+    `SPEC_PARAM_ERROR("specular_stream: the output buffer is one register (specular_pkg::OutBufStages)")
+  end
 
   if (CFrac > CBits) begin : gen_c_check
     `SPEC_PARAM_ERROR("specular_stream: CFrac must not exceed CBits")
@@ -282,7 +279,7 @@ module specular_stream #(
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (coef0), .q_o (coef1));
   specular_delay #(.Width (NumBanks), .Depth (Mul11Stages)) u_bank_line (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (bank1), .q_o (bank_rom));
-  specular_delay #(.Width (2 * CBits + 2), .Depth (1 + Mul11Stages + Rom12Stages)) u_c_line (
+  specular_delay #(.Width (2 * CBits + 2), .Depth (AccStages - 1 + Mul11Stages + Rom12Stages)) u_c_line (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({c30, c0}), .q_o ({c3_mul13, c_mul13}));
   specular_delay #(.Width (TagBits), .Depth (PipeDepth - 1)) u_tag_line (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (tag0), .q_o (tag_out));
@@ -338,7 +335,7 @@ module specular_stream #(
   logic valid_rom;
   specular_delay #(.Width (1), .Depth (Rom12Stages)) u_zero_line (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (zero_addr), .q_o (zero_cosk));
-  assign valid_rom = stage_valid[1 + Mul11Stages + Rom12Stages];
+  assign valid_rom = stage_valid[AccStages - 1 + Mul11Stages + Rom12Stages];
 
   logic [CBits-1:0] intensity;
 

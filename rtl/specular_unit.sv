@@ -24,7 +24,7 @@
 // Register values persist until rewritten (l included, see specular_down_counter).
 //
 // Protocol, start_i high in cycle s while idle (writes in cycle s apply to this line),
-// L = Latency (23 with the default parameters):
+// L = specular_pkg::unit_latency (per configuration: docs/pipeline.md#stage-counts):
 //   busy_o   high in cycles s+1 .. s+L+l, low in s+L+1+l, when a new start is accepted
 //   valid_o  high in cycles s+L .. s+L+l, pixel i in cycle s+L+i
 // i.e. latency L clocks to the first pixel, one pixel per clock, a line occupies l + L + 1
@@ -39,7 +39,7 @@
 // whenever this unit is idle); px_ready_i is tied high. The latch cycle plus the stream's
 // latency make the L clocks above.
 //
-// Patent errata resolved here (SPEC 5): n has 10 bits (the patent's decoder has 9 inputs);
+// Patent errata resolved here (docs/device.md#errata-of-the-patent-and-how-each-is-resolved): n has 10 bits (the patent's decoder has 9 inputs);
 // register 3 holds the unscaled -lambda and register 2 gamma/l (multiplier 11 applies
 // a(n)); ROM 12 covers only [0, pi/2), so the magnitude |zeta| addresses it and
 // zeta >= pi/2 outputs 0.
@@ -105,14 +105,11 @@ module specular_unit #(
   output logic                 busy_o
 );
 
-  // The start latch cycle plus the stream's latency (specular_stream: PipeDepth plus its
-  // output buffer, the same formula); the regression checks the measured latency.
-  /* verilator lint_off UNUSEDPARAM */
-  localparam int Latency /*verilator public*/ = 1 + 2 + 1
-      + 3 + (((2 + PsiMulFrac) / 2 > 1) ? $clog2((2 + PsiMulFrac) / 2) : 0)
-      + 3 + (((CosDeltaBits + 1) / 2 > 1) ? $clog2((CosDeltaBits + 1) / 2) : 0)
-      + 2 + (((CosDataBits + 2) / 2 > 1) ? $clog2((CosDataBits + 2) / 2) : 0);
-  /* verilator lint_on UNUSEDPARAM */
+  // Start in cycle s -> pixel 0 in cycle s + specular_pkg::unit_latency: the start latch
+  // (specular_pkg::StartLatchStages, built here as one register) plus the stream's latency.
+  if (specular_pkg::StartLatchStages != 1) begin : gen_pkg_check
+    `SPEC_PARAM_ERROR("specular_unit: the start latch is one register (specular_pkg::StartLatchStages)")
+  end
 
   // ---------------------------------------------------------------------------------
   // Host registers 1-4 and the line length (inputs 15..24; writes only while idle)

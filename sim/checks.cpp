@@ -107,8 +107,8 @@ nlohmann::json PolicyStats::to_json() const {
           {"failures", failures}};
 }
 
-Checker::Checker(const device::DeviceModel& model, std::vector<double> a_exact, Budget budget)
-    : model_(model), a_(std::move(a_exact)), budget_(budget) {
+Checker::Checker(const device::DeviceModel& model, const CoefSpec& spec, Budget budget)
+    : model_(model), budget_(budget) {
   // max over x of |k cos^(k-1) x sin x|: at sin^2 x = 1/k (k > 1), 1 for k = 1.
   // max over x of |(cos^k)''| = |k cos^(k-2) ((k-1) sin^2 - cos^2)|: a dense scan on [0, pi/2]
   // (the curvature bound of the interpolated ROM 12; closed forms per k are not needed).
@@ -152,6 +152,7 @@ Checker::Checker(const device::DeviceModel& model, std::vector<double> a_exact, 
         if (n <= static_cast<uint32_t>(f.bank_max_n[j])) bank = static_cast<int>(j);
     bank_.push_back(bank);
     xe_.push_back(bank >= 0 ? epicenter_end(static_cast<double>(n)) : 0.0);
+    a_.push_back(bank >= 0 ? coefficient(static_cast<int>(n), f.banks[bank], spec) : 0.0);
   }
   // The reference angle psi_i = psi0 + i dpsi is the exact sum (references()): register 8
   // holds it without wrapping (docs/device.md#fixed-point-contract: psi0 then psi + dpsi,

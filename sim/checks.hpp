@@ -16,6 +16,7 @@
 // stream delivered.
 #pragma once
 
+#include "coefficients.hpp"
 #include "device_model.hpp"
 #include "harness.hpp"
 #include "scanlines.hpp"
@@ -91,8 +92,9 @@ struct PolicyStats {
 
 class Checker {
  public:
-  // a_exact[n]: the policy's coefficient for n (0 where n is invalid).
-  Checker(const device::DeviceModel& model, std::vector<double> a_exact, Budget budget);
+  // spec: the configuration's ROM 9 policy; the checker takes the exact a(n) from it, for
+  // the k its own decoder 10 (from the format's table) gives n.
+  Checker(const device::DeviceModel& model, const CoefSpec& spec, Budget budget);
   // Checks every pixel of `run` against the three references and folds the result into `st`.
   // The golden model and the double references are computed in two timed passes before the
   // comparison (st.golden_seconds, st.reference_seconds).

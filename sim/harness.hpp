@@ -129,7 +129,8 @@ class Harness {
     if (sampled_valid_) fail("valid_o high in the start cycle");
     clear_inputs();
 
-    const uint64_t limit = static_cast<uint64_t>(r.len) + 64;  // far above any sane latency
+    constexpr uint64_t kMargin = 64;  // clocks beyond the line's pixels: far above any sane latency
+    const uint64_t limit = static_cast<uint64_t>(r.len) + kMargin;
     uint64_t last_valid = 0;
     bool seen_valid = false, valid_ended = false;
     std::bernoulli_distribution do_poke(poke);
@@ -158,7 +159,7 @@ class Harness {
         break;
       }
       if (c - start > limit) {
-        fail("line did not end within l + 64 cycles");
+        fail("line did not end within l + " + std::to_string(kMargin) + " cycles");
         run.cycles = c - start;
         break;
       }

@@ -291,15 +291,19 @@ void SceneRun::compare_span(size_t j, const StreamRun& run, uint64_t recorded) {
   ++st.lines;
   if (o >= recorded) return;  // the run ended short: finish() counts the missing pixels
   const size_t npix = std::min<size_t>(r.len + 1, recorded - o);
-  // The stream view: tag and last of every pixel as the golden model has them.
-  for (size_t k = o; k < o + npix; ++k)
-    if (run.tag[k] != golden_[k].tag || (run.last[k] != 0) != golden_[k].last) {
+  // The stream view: every pixel carries its span's tag and only pixel l is last
+  // (docs/interfaces.md), from the span as sent, not from the golden model.
+  const uint32_t want_tag = spans_[j].tag;
+  for (size_t k = o; k < o + npix; ++k) {
+    const bool want_last = k - o == r.len;
+    if (run.tag[k] != want_tag || (run.last[k] != 0) != want_last) {
       if (stream_errors_ < 6)
         note(st.policy + " stream: span " + std::to_string(j) + " pixel " + std::to_string(k - o) + ": tag/last " +
-             std::to_string(run.tag[k]) + "/" + std::to_string(run.last[k]) + ", golden " +
-             std::to_string(golden_[k].tag) + "/" + std::to_string(golden_[k].last));
+             std::to_string(run.tag[k]) + "/" + std::to_string(run.last[k]) + ", expected " + std::to_string(want_tag) +
+             "/" + std::to_string(want_last));
       ++stream_errors_;
     }
+  }
   // Latency: the span's pixel 0 after its accept.
   ++st.latency[static_cast<int>(run.pixel_cycle[o] - run.accept_cycle[j])];
   checker_.compare(r, kind_, npix, &run.intensity[o], &golden_intensity_[o], &psi_[o], &ref_b_[o], &ref_c_[o], st);

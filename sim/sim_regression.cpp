@@ -5,7 +5,7 @@
 // (ROM paths are relative). Exit 0 when every check passes, 1 on any failure, 2 on bad
 // arguments.
 //   sim_regression                          full regression, every configuration, summary table
-//   sim_regression --seed S --random N --config default|patent|banks4-interp|interp128|all --json FILE
+//   sim_regression --seed S --random N --config NAME|all --json FILE   (NAME: build_configs())
 //   sim_regression --vcd-dir DIR --vcd-only DIR/line_l3.vcd (l = 3) and DIR/line_long.vcd
 //   sim_regression --scenes-dir DIR --images-dir DIR   every DIR/*.json through specular_stream, PNGs
 //   sim_regression --no-scenes                         regression lines only
@@ -21,24 +21,9 @@
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wunused-parameter"
 #pragma GCC diagnostic ignored "-Wpedantic"  // anonymous structs in Verilator's public-parameter headers
-#include "Vspecular_scene_banks4_interp.h"
-#include "Vspecular_scene_banks4_interp_specular_stream.h"
-#include "Vspecular_scene_default.h"
-#include "Vspecular_scene_default_specular_stream.h"
-#include "Vspecular_scene_interp128.h"
-#include "Vspecular_scene_interp128_specular_stream.h"
-#include "Vspecular_scene_patent.h"
-#include "Vspecular_scene_patent_specular_stream.h"
 #include "Vspecular_stream_default.h"
 #include "Vspecular_stream_default_specular_stream.h"
-#include "Vspecular_unit_banks4_interp.h"
-#include "Vspecular_unit_banks4_interp_specular_unit.h"
-#include "Vspecular_unit_default.h"
-#include "Vspecular_unit_default_specular_unit.h"
-#include "Vspecular_unit_interp128.h"
-#include "Vspecular_unit_interp128_specular_unit.h"
-#include "Vspecular_unit_patent.h"
-#include "Vspecular_unit_patent_specular_unit.h"
+#include "sim_configs.inc"  // every configuration's models (sim/CMakeLists.txt)
 #pragma GCC diagnostic pop
 #include "cli_parse.hpp"
 #include "coefficients.hpp"
@@ -57,18 +42,42 @@
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <sstream>
 #include <string>
 #include <string_view>
 #include <vector>
 
 namespace {
 
+// One row of docs/pipeline.md#stage-counts: a configuration's stage counts from P, its
+// sim/specular_pipeline.sv model.
+template <class P>
+std::string stage_row(const std::string& name) {
+  std::ostringstream o;
+  o << "| " << name << " | " << P::PsiMulFrac << " | " << P::CosDeltaBits << " | " << P::CosDataBits << " | "
+    << P::Mul11Stages << " | " << P::Rom12Stages << " | " << P::Mul13Stages << " | " << P::PipeDepth << " | "
+    << P::StreamLatency << " | " << P::UnitLatency << " | l + " << P::UnitLatency + 1 << " |\n";
+  return o.str();
+}
+
+// The configurations this build verilated (sim/CMakeLists.txt, SPECULAR_SIM_CONFIGS), and "all".
+std::vector<std::string> config_names() {
+  std::vector<std::string> v;
+#define SPECULAR_CONFIG_NAME(id, name) v.push_back(name);
+  SPECULAR_SIM_CONFIGS(SPECULAR_CONFIG_NAME)
+#undef SPECULAR_CONFIG_NAME
+  v.push_back("all");
+  return v;
+}
+
 using specular::device::Format;
 using namespace specular::sim;
 
-// The RTL is verilated with its parameter defaults, which must be Format{}: the golden
-// model, the ROM generator and this harness all take their widths from Format. The
-// parameters are /*verilator public*/, so the check reads them from the verilated model.
+// Each configuration is verilated with the parameters roms/build_configs.cmake gives it
+// (those that differ from the RTL defaults), which must be its Format: the golden model, the
+// ROM generator and this harness all take their widths from Format. The parameters are
+// /*verilator public*/, so the check reads them from the verilated model; for the default
+// configuration it checks the RTL's parameter defaults against Format{}.
 template <typename Root>
 bool format_matches_rtl(const Format& f, std::string& why) {
   struct Item { const char* name; int model, rtl; };
@@ -193,7 +202,9 @@ struct SceneRunOptions {
 // The regression lines on specular_unit (V), then every scene through specular_stream (SV) of
 // the same configuration, with the same checker and budgets; the scene images are written
 // when images_dir is not empty.
-template <class V, class Root, class SV, class SRoot>
+// Pipeline: the configuration's stage counts (sim/specular_pipeline.sv from rtl/specular_pkg.sv),
+// where the expected latencies come from.
+template <class V, class Root, class SV, class SRoot, class Pipeline>
 PolicyStats run_config(const specular::BuildConfig& bc, const std::vector<Scanline>& det,
                        const std::vector<Scanline>& rnd, uint64_t seed, std::vector<LoadedScene>& scenes,
                        const std::string& images_dir, const SceneRunOptions& sro,
@@ -209,13 +220,11 @@ PolicyStats run_config(const specular::BuildConfig& bc, const std::vector<Scanli
   PolicyStats st;
   st.policy = policy;
   st.budget = budget;
-  st.expected_latency = Root::Latency;
+  st.expected_latency = static_cast<int>(Pipeline::UnitLatency);
   const auto t0 = std::chrono::steady_clock::now();
   const specular::device::DeviceModel model = specular::load_device_model(f, bc.coef_hex(), bc.cos_hex());
   const specular::CoefSpec spec = specular::parse_coef_spec(bc.policy);
-  std::vector<double> a(f.coef_rom_depth(), 0.0);
-  for (int n = 1; n <= f.max_n(); ++n) a[n] = specular::coefficient(n, f.banks[model.bank_of(n)], spec);
-  const Checker checker(model, a, budget);
+  const Checker checker(model, spec, budget);
   std::mt19937_64 rng(seed ^ 0x5eed);
   {
     // The unit's harness ends before the stream's begins: Verilator 5.006 destroys a model
@@ -260,7 +269,7 @@ PolicyStats run_config(const specular::BuildConfig& bc, const std::vector<Scanli
       if (ls.scene.name == sro.corrupt_scene) opt.corrupt_span = sro.corrupt_span;
       SceneStats ss = run_scene(sh, checker, policy, ls, opt);
       ss.checks.budget = budget;
-      ss.checks.expected_latency = SRoot::Latency;
+      ss.checks.expected_latency = static_cast<int>(Pipeline::StreamLatency);
       scene_stats.push_back(std::move(ss));
     }
   }
@@ -385,8 +394,11 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(0, 10000000))
       ->capture_default_str();
   app.add_option("--config", config, "hardware configuration to simulate (rom_image.hpp build_configs)")
-      ->check(CLI::IsMember({"default", "patent", "banks4-interp", "interp128", "all"}))
+      ->check(CLI::IsMember(config_names()))
       ->capture_default_str();
+  bool stage_table = false;
+  app.add_flag("--stage-table", stage_table,
+               "print the stage counts of every configuration as docs/pipeline.md's table, and nothing else");
   app.add_option("--vcd-dir", vcd_dir, "write line_l3.vcd, line_long.vcd and stream.vcd (default build) into DIR");
   app.add_flag("--vcd-only", vcd_only, "only write the VCD files, no regression")->needs("--vcd-dir");
   app.add_option("--json", json_path, "also write the summary as JSON to FILE");
@@ -430,6 +442,15 @@ int main(int argc, char** argv) {
   if (const auto exit_code =
           specular::parse_command_line(app, static_cast<int>(args.size()), args.data(), "sim_regression"))
     return *exit_code;
+  if (stage_table) {
+    std::cout << "| configuration | PsiMulFrac | CosDeltaBits | CosDataBits | multiplier 11 | ROM 12 | multiplier 13 | "
+                 "PipeDepth | L_s | L | clocks per line of l + 1 pixels |\n"
+                 "|---|---|---|---|---|---|---|---|---|---|---|\n";
+#define SPECULAR_STAGE_ROW(id, name) std::cout << stage_row<Vspecular_pipeline_##id##_specular_pipeline>(name);
+    SPECULAR_SIM_CONFIGS(SPECULAR_STAGE_ROW)
+#undef SPECULAR_STAGE_ROW
+    return 0;
+  }
   if (!coverage_dir.empty()) {
 #if VM_COVERAGE
     std::filesystem::create_directories(coverage_dir);
@@ -506,7 +527,7 @@ int main(int argc, char** argv) {
     // 4 LSB): the goals of the interpolated builds, the patent's 1.2 % with n = 1 reported only.
     // Images come from the first configuration simulated; scenes run on default and patent.
     const bool every = config == "all";
-    auto want = [&](const char* name) { return every || config == name; };
+    auto want = [&](const std::string& name) { return every || config == name; };
     std::vector<LoadedScene> none;
     std::string images = images_dir;
     auto take_images = [&]() {
@@ -514,26 +535,18 @@ int main(int argc, char** argv) {
       images.clear();
       return d;
     };
-    if (want("default"))
-      all.push_back(run_config<Vspecular_unit_default, Vspecular_unit_default_specular_unit, Vspecular_scene_default,
-                               Vspecular_scene_default_specular_stream>(
-          specular::build_config("default"), det, rnd, seed, scenes, take_images(), sro,
-          scene_stats));
-    if (want("patent"))
-      all.push_back(run_config<Vspecular_unit_patent, Vspecular_unit_patent_specular_unit, Vspecular_scene_patent,
-                               Vspecular_scene_patent_specular_stream>(
-          specular::build_config("patent"), det, rnd, seed, scenes, take_images(), sro,
-          scene_stats));
-    if (want("banks4-interp"))
-      all.push_back(run_config<Vspecular_unit_banks4_interp, Vspecular_unit_banks4_interp_specular_unit,
-                               Vspecular_scene_banks4_interp, Vspecular_scene_banks4_interp_specular_stream>(
-          specular::build_config("banks4-interp"), det, rnd, seed, every ? none : scenes,
-          take_images(), sro, scene_stats));
-    if (want("interp128"))
-      all.push_back(run_config<Vspecular_unit_interp128, Vspecular_unit_interp128_specular_unit,
-                               Vspecular_scene_interp128, Vspecular_scene_interp128_specular_stream>(
-          specular::build_config("interp128"), det, rnd, seed, every ? none : scenes,
-          take_images(), sro, scene_stats));
+    // Every verilated configuration in build_configs() order; the scenes run on those marked
+    // for them (BuildConfig::scenes) or on the one asked for.
+#define SPECULAR_RUN_CONFIG(id, name)                                                                          \
+  if (bc.name == name)                                                                                         \
+    all.push_back(run_config<Vspecular_unit_##id, Vspecular_unit_##id##_specular_unit, Vspecular_scene_##id,   \
+                             Vspecular_scene_##id##_specular_stream, Vspecular_pipeline_##id##_specular_pipeline>( \
+        bc, det, rnd, seed, every && !bc.scenes ? none : scenes, take_images(), sro, scene_stats));
+    for (const auto& bc : specular::build_configs()) {
+      if (!want(bc.name.c_str())) continue;
+      SPECULAR_SIM_CONFIGS(SPECULAR_RUN_CONFIG)
+    }
+#undef SPECULAR_RUN_CONFIG
     print_table(all);
     if (!scene_stats.empty()) {
       std::cout << "\nScenes (every span through specular_stream, back to back, registers from the batched setup;\n"

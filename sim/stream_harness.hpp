@@ -177,11 +177,17 @@ class StreamHarness {
     edge();
     if (span_fire) {
       ++cnt_.spans_accepted;
+      // The intensities are the golden model's; the count, the last flag and the tag follow
+      // from the span as driven (l + 1 pixels of the span's tag, last on pixel l;
+      // docs/interfaces.md), not from the model.
       std::vector<device::StreamPixel> tmp;
-      device::Span s = *offer;
-      s.tag = static_cast<uint32_t>(s.tag & tag_mask_);
-      model_.stream_span(s, tmp);
-      expect_.insert(expect_.end(), tmp.begin(), tmp.end());
+      model_.stream_span(*offer, tmp);
+      const uint32_t len = offer->reg.len & static_cast<uint32_t>(model_.format().max_len());
+      const uint32_t tag = static_cast<uint32_t>(offer->tag & tag_mask_);
+      if (tmp.size() != size_t{len} + 1) error("the golden model's span has " + std::to_string(tmp.size()) +
+                                               " pixels, the span " + std::to_string(len + 1));
+      for (uint32_t i = 0; i <= len; ++i)
+        expect_.push_back({i < tmp.size() ? tmp[i].intensity : 0u, i == len, tag});
     }
     if (transferred) *transferred = px_fire;
     return span_fire;

@@ -53,12 +53,28 @@ struct BuildConfig {
   std::string policy;  // ROM 9 coefficient policy (parse_coef_spec)
   std::string dir;     // relative to the repository root
   ErrorBudget budget;
+  bool scenes = true;  // the full regression runs the scene stage on it (sim/README.md)
   std::string coef_hex() const;
   std::string cos_hex() const;
 };
 const std::vector<BuildConfig>& build_configs();
 // Throws std::invalid_argument naming the known configurations.
 const BuildConfig& build_config(const std::string& name);
+
+// A configuration as the RTL takes it (docs/pipeline.md#build-configurations): the
+// parameters of specular_unit / specular_stream in Verilog syntax, as Verilator's -G takes
+// them (strings quoted, BankMaxN a sized hex literal).
+struct RtlParameter {
+  std::string name, value;
+  bool operator==(const RtlParameter&) const = default;
+};
+std::vector<RtlParameter> rtl_parameters(const BuildConfig& bc);
+// A C identifier for the configuration's name ("banks4-interp" -> "banks4_interp").
+std::string config_id(const std::string& name);
+// The CMake fragment roms/build_configs.cmake that `romgen --all` writes beside the ROMs: per
+// configuration its name, identifier, -G flags (the parameters that differ from the first
+// configuration's, which are the RTL defaults) and the -G flags of sim/specular_pipeline.sv.
+std::string build_configs_cmake();
 
 // "cos_k_1_2_4_16.hex" (direct) or "cos_k_1_2_4_16_interp256.hex" for the ROM 12 of `f`.
 std::string cos_rom_file_name(const device::Format& f);

@@ -3,7 +3,9 @@
 //   romgen --out-dir roms                  the default build: coef_minimax.hex and
 //                                          cos_k_1_2_3_4_6_8_12_16_interp256.hex
 //   romgen --config patent --out-dir roms/patent    coef_maclaurin.hex, cos_k_1_2_4_16.hex
-//   romgen --all --out-dir roms            both of the above (what `make roms` runs)
+//   romgen --all --out-dir roms            every configuration of build_configs() and the CMake
+//                                          list of them, roms/build_configs.cmake (what
+//                                          `make roms` runs; docs/pipeline.md#build-configurations)
 //   romgen --out-dir d --policy kutlog:0.3 --cos-addr-bits 7 --banks 1,2,4 ...  others
 // A bank set given without --bank-max-n gets the derived decoder table (decoder_table.hpp).
 // Files are written whole (temp file + rename); on any error nothing is written and the
@@ -17,6 +19,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <stdexcept>
 #include <string>
@@ -156,6 +159,18 @@ int main(int argc, char** argv) {
       specular::write_hex(files[i].first, files[i].second, widths[i]);
       if (!quiet)
         std::cout << "wrote " << files[i].first << " (" << files[i].second.size() << " x " << widths[i] << " bits)\n";
+    }
+    if (all) {
+      // Whole or not at all, as the ROMs: a temporary file renamed over the old one.
+      const std::filesystem::path path = std::filesystem::path(out_dir) / "build_configs.cmake";
+      const std::filesystem::path tmp = path.string() + ".tmp";
+      {
+        std::ofstream out(tmp, std::ios::binary);
+        out << specular::build_configs_cmake();
+        if (!out.flush()) throw std::runtime_error("cannot write " + tmp.string());
+      }
+      std::filesystem::rename(tmp, path);
+      if (!quiet) std::cout << "wrote " << path.string() << "\n";
     }
   } catch (const std::exception& e) {
     std::cerr << "romgen: " << e.what() << "\n";

@@ -56,11 +56,4 @@ int run_stream(Model& m, int latency, const std::vector<Item>& items, Apply appl
   return failures;
 }
 
-// Smallest s with 2^s >= n (the $clog2 of the RTL, written independently).
-constexpr int ceil_log2(int n) {
-  int s = 0;
-  while ((1 << s) < n) ++s;
-  return s;
-}
-
 }  // namespace specular::rtl_test

@@ -21,6 +21,7 @@
 #include "Vaxil_small.h"
 #include "Vaxil_small_specular_axil.h"
 #include "Vaxil_specular_axil.h"
+#include "Vpipeline_axi_default_specular_pipeline.h"
 #pragma GCC diagnostic pop
 
 #include "axil_driver.hpp"
@@ -39,6 +40,9 @@ using namespace specular::rtl_test;
 namespace dev = specular::device;
 
 namespace {
+
+// The default configuration's stream latency (sim/specular_pipeline.sv from rtl/specular_pkg.sv).
+constexpr uint32_t kStreamLatency = Vpipeline_axi_default_specular_pipeline::StreamLatency;
 
 // Byte offsets (docs/interfaces.md).
 enum : uint32_t {
@@ -99,8 +103,8 @@ std::map<uint32_t, RegSpec> expected_map() {
   m[kSpanLen] = {Access::rw, 0, ones(f.len_bits)};
   m[kSpanTag] = {Access::rw, 0, ones(tag_bits)};
   m[kPush] = {Access::wo, 0, 0};
-  // Latency 22: the stream's (docs/interfaces.md, "Latency of the stream").
-  m[kBuildCore] = {Access::ro, 22u | static_cast<uint32_t>(fifo) << 8 | static_cast<uint32_t>(tag_bits) << 16 |
+  // The stream's latency (docs/pipeline.md#stage-counts; both benches have the default widths).
+  m[kBuildCore] = {Access::ro, kStreamLatency | static_cast<uint32_t>(fifo) << 8 | static_cast<uint32_t>(tag_bits) << 16 |
                                    (f.cos_interp ? 1u << 24 : 0u), 0};
   m[kBuildRom] = {Access::ro, banks | static_cast<uint32_t>(f.cos_addr_bits) << 8 | word_bits << 16, 0};
   m[kBuildRomBits] = {Access::ro, banks * (1u << f.cos_addr_bits) * word_bits, 0};
@@ -515,7 +519,7 @@ TEST_CASE("specular_axil error bits, write-1-to-clear and irq_o", "[rtl][axil]")
 TEST_CASE("specular_axil: PUSH to pixel 0 is BUILD_CORE's latency", "[rtl][axil]") {
   Bench<Vaxil> b(51);
   const uint32_t latency = rd(b.bus, kBuildCore) & 0xff;
-  CHECK(latency == 22);
+  CHECK(latency == kStreamLatency);
   // PUSH takes effect at the edge that ends the write; B is valid in the next cycle, at
   // whose end the span enters the FIFO; the core accepts it in the cycle after that, and
   // pixel 0 follows Latency cycles later (docs/interfaces.md).

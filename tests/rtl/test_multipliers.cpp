@@ -9,8 +9,16 @@
 #include "Vangle_mul.h"
 #include "Vangle_mul_patent.h"
 #include "Vintensity_mul.h"
-#include "Vpipe_mul.h"
-#include "Vpipe_mul_odd.h"
+#include "Vpipe_mul_21x21.h"
+#include "Vpipe_mul_3x2.h"
+#include "Vpipe_mul_4x8.h"
+#include "Vpipe_mul_5x3.h"
+#include "Vpipe_mul_6x6.h"
+#include "Vpipe_mul_7x5.h"
+#include "Vpipeline_default.h"
+#include "Vpipeline_default_specular_pipeline.h"
+#include "Vpipeline_patent.h"
+#include "Vpipeline_patent_specular_pipeline.h"
 #include "pipe_stream.hpp"
 #include "rtl_harness.hpp"
 
@@ -24,7 +32,6 @@
 #include <string>
 #include <vector>
 
-using specular::rtl_test::ceil_log2;
 using specular::rtl_test::reset;
 using specular::rtl_test::run_stream;
 using specular::rtl_test::tick;
@@ -52,7 +59,8 @@ struct RandomStalls {
 };
 
 // ------------------------------------------------------------------------------------
-// specular_pipe_mul: p = a * b exactly, latency max(1, clog2(BBits))
+// specular_pipe_mul: p = a * b exactly through the radix-4 tree every instance uses; the
+// latency it must show is specular_pkg::pipe_mul_stages(BBits) (via sim/specular_pipeline.sv)
 // ------------------------------------------------------------------------------------
 
 struct MulItem {
@@ -60,17 +68,20 @@ struct MulItem {
 };
 
 template <class Dut>
-int run_pipe_mul(Dut& dut, int a_bits, int b_bits, const std::vector<MulItem>& items, bool stalls) {
-  const int latency = b_bits > 1 ? ceil_log2(b_bits) : 1;
+int run_pipe_mul(Dut& dut, int latency, int a_bits, int b_bits, const std::vector<MulItem>& items, bool stalls) {
   std::mt19937_64 junk(7);
   const uint64_t a_mask = (uint64_t{1} << a_bits) - 1, b_mask = (uint64_t{1} << b_bits) - 1;
   RandomStalls st;
+  // a3_i = 3 a, as every caller computes it a clock ahead.
   auto apply = [](Dut& m, const MulItem& it) {
     m.a_i = it.a;
+    m.a3_i = 3 * it.a;
     m.b_i = it.b;
   };
   auto garbage = [&](Dut& m) {
-    m.a_i = junk() & a_mask;
+    const uint64_t a = junk() & a_mask;
+    m.a_i = a;
+    m.a3_i = 3 * a;
     m.b_i = junk() & b_mask;
   };
   auto check = [](Dut& m, const MulItem& it) {
@@ -93,36 +104,65 @@ std::vector<MulItem> mul_items(int a_bits, int b_bits, int random_count, uint64_
     v.push_back({uint64_t{1} << i, b_max});
   }
   for (int j = 0; j < b_bits; ++j) v.push_back({a_max, uint64_t{1} << j});
+  // Every radix-4 digit value (0, 1, 2, 3) in every digit position, against all ones.
+  for (int j = 0; j < b_bits; j += 2)
+    for (uint64_t d = 1; d < 4; ++d) v.push_back({a_max, (d << j) & b_max});
   std::mt19937_64 rng(seed);
   for (int i = 0; i < random_count; ++i) v.push_back({rng() & a_max, rng() & b_max});
   return v;
 }
 
+std::vector<MulItem> every_pair(int a_bits, int b_bits) {
+  std::vector<MulItem> all;
+  for (uint64_t a = 0; a < (uint64_t{1} << a_bits); ++a)
+    for (uint64_t b = 0; b < (uint64_t{1} << b_bits); ++b) all.push_back({a, b});
+  return all;
+}
+
+// specular_pkg::pipe_mul_stages(b), from sim/specular_pipeline.sv's table.
+int tree_stages(int b) {
+  using P = Vpipeline_default_specular_pipeline;
+  const int bit = 8 * b;
+  return static_cast<int>((P::TreeStagesTable[bit / 32] >> (bit % 32)) & 0xffu);
+}
+
 }  // namespace
 
-TEST_CASE("pipe_mul 21x21: exact products, one pair per clock, latency clog2(21) = 5", "[rtl][pipe_mul]") {
-  Vpipe_mul dut;
+TEST_CASE("pipe_mul 21x21 (multiplier 11's tree): exact products, one pair per clock", "[rtl][pipe_mul]") {
+  Vpipe_mul_21x21 dut;
   dut.clk_i = 0;
   dut.eval();
-  CHECK(run_pipe_mul(dut, 21, 21, mul_items(21, 21, 20000, 11), false) == 0);
+  const int latency = tree_stages(21);
+  CHECK(run_pipe_mul(dut, latency, 21, 21, mul_items(21, 21, 20000, 11), false) == 0);
 }
 
 TEST_CASE("pipe_mul 21x21 holds every stage while en_i is low", "[rtl][pipe_mul][stall]") {
-  Vpipe_mul dut;
+  Vpipe_mul_21x21 dut;
   dut.clk_i = 0;
   dut.eval();
-  CHECK(run_pipe_mul(dut, 21, 21, mul_items(21, 21, 5000, 12), true) == 0);
+  const int latency = tree_stages(21);
+  CHECK(run_pipe_mul(dut, latency, 21, 21, mul_items(21, 21, 5000, 12), true) == 0);
 }
 
-TEST_CASE("pipe_mul 7x5 (odd row count): every operand pair, with and without stalls", "[rtl][pipe_mul]") {
-  std::vector<MulItem> all;
-  for (uint64_t a = 0; a < 128; ++a)
-    for (uint64_t b = 0; b < 32; ++b) all.push_back({a, b});
-  Vpipe_mul_odd dut;
+// Small widths, every operand pair: odd and even row counts, a single row (BBits = 2), two
+// rows (BBits = 3) and a tree of three levels (BBits = 8).
+template <class Dut>
+void every_pair_case(int a_bits, int b_bits) {
+  Dut dut;
   dut.clk_i = 0;
   dut.eval();
-  CHECK(run_pipe_mul(dut, 7, 5, all, false) == 0);  // latency clog2(5) = 3
-  CHECK(run_pipe_mul(dut, 7, 5, all, true) == 0);
+  const int latency = tree_stages(b_bits);
+  const auto all = every_pair(a_bits, b_bits);
+  CHECK(run_pipe_mul(dut, latency, a_bits, b_bits, all, false) == 0);
+  CHECK(run_pipe_mul(dut, latency, a_bits, b_bits, all, true) == 0);
+}
+
+TEST_CASE("pipe_mul at small widths: every operand pair, with and without stalls", "[rtl][pipe_mul]") {
+  SECTION("7x5") { every_pair_case<Vpipe_mul_7x5>(7, 5); }
+  SECTION("6x6") { every_pair_case<Vpipe_mul_6x6>(6, 6); }
+  SECTION("4x8") { every_pair_case<Vpipe_mul_4x8>(4, 8); }
+  SECTION("5x3") { every_pair_case<Vpipe_mul_5x3>(5, 3); }
+  SECTION("3x2") { every_pair_case<Vpipe_mul_3x2>(3, 2); }
 }
 
 // ------------------------------------------------------------------------------------
@@ -133,7 +173,9 @@ namespace {
 constexpr long double kPi = std::numbers::pi_v<long double>;
 constexpr int kAccBits = 44;
 constexpr uint64_t kAccMask = (uint64_t{1} << kAccBits) - 1;
-constexpr int kMul11Latency = 2 + ceil_log2(1 + 20);  // 7: |psi|, 5 tree stages, address
+// Latencies: the configurations' stage counts (sim/specular_pipeline.sv).
+constexpr int kMul11Latency = static_cast<int>(Vpipeline_default_specular_pipeline::Mul11Stages);
+constexpr int kMul11PatentLatency = static_cast<int>(Vpipeline_patent_specular_pipeline::Mul11Stages);
 constexpr int64_t kHalfPiCode = 421657429;             // ceil(pi/2 * 2^28)
 
 struct AngleItem {
@@ -205,8 +247,9 @@ int run_angle(Dut& dut, const std::vector<AngleItem>& items, bool patent, bool s
     m.n_valid_i = junk() & 1;
   };
   auto check = [patent](Dut& m, const AngleItem& it) { return check_angle(m, it, patent); };
-  if (stalls) return run_stream(dut, kMul11Latency, items, apply, garbage, check, accept_any, RandomStalls{});
-  return run_stream(dut, kMul11Latency, items, apply, garbage, check, accept_any, always_on);
+  const int latency = patent ? kMul11PatentLatency : kMul11Latency;
+  if (stalls) return run_stream(dut, latency, items, apply, garbage, check, accept_any, RandomStalls{});
+  return run_stream(dut, latency, items, apply, garbage, check, accept_any, always_on);
 }
 
 std::vector<AngleItem> random_angles(int count, bool patent, uint64_t seed) {
@@ -298,7 +341,7 @@ TEST_CASE("multiplier 11: pi/2 test, quarter-turn crossing, n_valid, hand-comput
   CHECK(run_angle(dut, items, false, false) == 0);
 }
 
-TEST_CASE("multiplier 11: random operands streamed one per clock (latency 7)", "[rtl][mul11]") {
+TEST_CASE("multiplier 11: random operands streamed one per clock", "[rtl][mul11]") {
   const auto items = random_angles(40000, false, 71489);
   int nonzero = 0, far_edge = 0;
   for (const auto& it : items) {
@@ -362,7 +405,7 @@ TEST_CASE("multiplier 11, patent build: rounded 12-bit address, zero at 4096", "
 namespace {
 
 // 6: radix-4 tree over the 19 bits of cos^k (a row register + 4 adder levels), output.
-constexpr int kMul13Latency = 2 + ceil_log2((19 + 1) / 2);
+constexpr int kMul13Latency = static_cast<int>(Vpipeline_default_specular_pipeline::Mul13Stages);
 constexpr uint32_t kCosOne = 1u << 18;             // cos^k = 1.0
 
 struct IntensityItem {
@@ -442,7 +485,7 @@ TEST_CASE("multiplier 13: C x 1 = C exactly for every C, rounding, extremes", "[
   CHECK(run_intensity(dut, items, false) == 0);
 }
 
-TEST_CASE("multiplier 13: random operands streamed one per clock (latency 5)", "[rtl][mul13]") {
+TEST_CASE("multiplier 13: random operands streamed one per clock", "[rtl][mul13]") {
   Vintensity_mul dut;
   reset(dut);
   CHECK(run_intensity(dut, random_intensities(30000, 29), false) == 0);

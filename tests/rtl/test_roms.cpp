@@ -10,6 +10,8 @@
 #include "Vcoef_rom_minimax.h"
 #include "Vcos_k_rom.h"
 #include "Vcos_k_rom_patent.h"
+#include "Vpipeline_default_specular_pipeline.h"
+#include "Vpipeline_patent_specular_pipeline.h"
 #include "pipe_stream.hpp"
 #include "rtl_harness.hpp"
 
@@ -27,7 +29,6 @@
 #include <string>
 #include <vector>
 
-using specular::rtl_test::ceil_log2;
 using specular::rtl_test::run_stream;
 using specular::rtl_test::tick;
 
@@ -110,7 +111,8 @@ namespace {
 constexpr int kBanks[] = {1, 2, 3, 4, 6, 8, 12, 16};  // k of each bank, bank 0 first
 constexpr int kEntries = 256;
 constexpr long double kOne = 262144.0L;                // 2^18: cos^k = 1.0
-constexpr int kRom12Latency = 2 + ceil_log2(12);       // 6: read, 4 tree stages, subtract
+// The configuration's stage count (sim/specular_pipeline.sv).
+constexpr int kRom12Latency = static_cast<int>(Vpipeline_default_specular_pipeline::Rom12Stages);
 
 // True cos^k at entry i of bank b, in units of 2^-18 (h = pi/2 / 256).
 long double cos_k_true(int bank, int i) {
@@ -286,12 +288,13 @@ TEST_CASE("ROM 12 (patent, direct): every bank and entry", "[rtl][rom][patent]")
   };
   auto any = [](Vcos_k_rom_patent&) { return std::string(); };
   Vcos_k_rom_patent dut;
+  constexpr int kRom12PatentLatency = static_cast<int>(Vpipeline_patent_specular_pipeline::Rom12Stages);
   dut.clk_i = 0;
   dut.eval();
   // Same latency as the interpolated build (the word is delayed as long as the d t tree).
-  CHECK(run_stream(dut, kRom12Latency, items, apply, garbage, check, any, [](long) { return true; }) == 0);
+  CHECK(run_stream(dut, kRom12PatentLatency, items, apply, garbage, check, any, [](long) { return true; }) == 0);
   CHECK(image_mismatches == 0);
   std::mt19937 stall(9);
   std::vector<Item> some(items.begin(), items.begin() + 3000);
-  CHECK(run_stream(dut, kRom12Latency, some, apply, garbage, check, any, [&](long) { return stall() % 3 != 0; }) == 0);
+  CHECK(run_stream(dut, kRom12PatentLatency, some, apply, garbage, check, any, [&](long) { return stall() % 3 != 0; }) == 0);
 }

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Top level specular_unit: the protocol of docs/interfaces.md as fixed for the RTL
-// (latency L = specular_unit's Latency parameter; one pixel per
+// (latency L = specular_pkg::unit_latency, docs/pipeline.md#stage-counts; one pixel per
 // clock, busy through the last pixel, l + L + 1 clocks per line), zero conditions, writes
 // and starts while busy, asynchronous reset, the RTL parameter defaults against
 // specular::device::Format, the pixels against C cos^k(a psi) in long double within the
@@ -9,6 +9,7 @@
 #pragma GCC diagnostic ignored "-Wpedantic"  // anonymous structs in Verilator's public-parameter header
 #include "Vunit.h"
 #include "Vunit_specular_unit.h"
+#include "Vpipeline_default_specular_pipeline.h"
 #pragma GCC diagnostic pop
 #include "rtl_harness.hpp"
 
@@ -31,14 +32,13 @@ using specular::rtl_test::tick;
 namespace {
 
 using R = Vunit_specular_unit;  // public parameters (/*verilator public*/)
-// Start in cycle s -> first valid pixel in s + L (L = 23): the start latch, register 8 (two
-// stages: the 44-bit add split in halves) and the block latencies, each a register stage
-// around a tree of radix-4 digits: multiplier 11: |psi|, 1 + clog2(11), address = 7;
-// ROM 12: read, 1 + clog2(6) over the 12 bits of d, subtraction = 6; multiplier 13:
-// 1 + clog2(10) over the 19 bits of cos^k, output = 6; the stream's output buffer = 1. The
-// tests use the RTL's own Latency and measure it; the protocol test requires this sum.
-constexpr int kLatency = static_cast<int>(R::Latency);
-constexpr int kBlockLatency = 1 + 2 + 7 + 6 + 6 + 1;  // latch, reg 8, mul 11, ROM 12, mul 13, buffer
+// Start in cycle s -> first valid pixel in s + L: the start latch, register 8 and the block
+// latencies and the stream's output buffer, as rtl/specular_pkg.sv defines them (read through
+// sim/specular_pipeline.sv, not from the model under test); the tests measure it.
+using P = Vpipeline_default_specular_pipeline;
+constexpr int kLatency = static_cast<int>(P::UnitLatency);
+constexpr int kBlockLatency = static_cast<int>(P::StartLatchStages + P::AccStages + P::Mul11Stages + P::Rom12Stages +
+                                               P::Mul13Stages + P::OutBufStages);
 constexpr int kLineOverhead = kLatency + 1;  // start to next accepted start: l + L + 1 cycles
 
 struct Line {
