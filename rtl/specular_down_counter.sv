@@ -4,12 +4,9 @@
 // Down counter, block 5 of patent UA 71489: holds the pixel count l (input 23, write 24),
 // decrements on every count pulse (34) and raises its borrow (35) on the pulse that
 // takes it past zero. A line of l + 1 pixels therefore gets l + 1 count pulses and the
-// borrow comes with the last one.
-//
-// Deviation from the patent, for usability: the written value is also kept in a shadow
-// register and reloaded into the counter by the borrow, so l persists from line to line
-// like the contents of registers 1-4 (the patent reloads the counter before every line;
-// a host that does so sees no difference).
+// borrow comes with the last one; the count then stays 0 until the next write. As in the
+// patent, l is written before every line (the stream loads it with each accepted span;
+// specular_unit keeps l in its own register, so l persists from line to line there).
 
 `include "specular_assert.svh"
 
@@ -30,7 +27,6 @@ module specular_down_counter #(
     `SPEC_PARAM_ERROR("specular_down_counter: LenBits must be >= 1")
   end
 
-  logic [LenBits-1:0] len_q;
   logic [LenBits-1:0] cnt_d, cnt_q;
   logic               zero_d, zero_q;
 
@@ -44,10 +40,7 @@ module specular_down_counter #(
     if (len_we_i) begin
       cnt_d  = len_i;
       zero_d = (len_i == '0);
-    end else if (borrow_o) begin
-      cnt_d  = len_q;              // reload: ready for the next line
-      zero_d = (len_q == '0);
-    end else if (count_i) begin
+    end else if (count_i && !zero_q) begin   // the borrow pulse leaves the count at 0
       cnt_d  = cnt_q - 1'b1;
       zero_d = (cnt_q == LenBits'(1));
     end
@@ -55,13 +48,9 @@ module specular_down_counter #(
 
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      len_q  <= '0;
       cnt_q  <= '0;
       zero_q <= 1'b1;
     end else begin
-      if (len_we_i) begin
-        len_q <= len_i;
-      end
       cnt_q  <= cnt_d;
       zero_q <= zero_d;
     end
@@ -72,11 +61,10 @@ module specular_down_counter #(
 
   // Assertions (rtl/specular_assert.svh): the zero flag is the count's zero test, the
   // count never passes below zero (a decrement starts above zero, the borrow comes only at
-  // zero) and never exceeds the written l; the strobes are never X.
+  // zero); the strobes are never X.
   `SPEC_ASSERT(ZeroFlag_A, zero_q == (cnt_q == '0), clk_i, rst_ni)
   `SPEC_ASSERT_IF(BorrowAtZero_A, borrow_o, cnt_q == '0, clk_i, rst_ni)
   `SPEC_ASSERT_IF(NoWrap_A, count_i && !len_we_i && !borrow_o, cnt_q != '0, clk_i, rst_ni)
-  `SPEC_ASSERT(CntLeLen_A, cnt_q <= len_q, clk_i, rst_ni)
   `SPEC_ASSERT_KNOWN(StrobesKnown_A, {len_we_i, count_i}, clk_i, rst_ni)
   `SPEC_ASSERT_KNOWN_IF(LenKnown_A, len_i, len_we_i, clk_i, rst_ni)
 

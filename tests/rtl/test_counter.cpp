@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Down counter 5: the borrow (35) comes with the (l+1)-th count pulse, exactly once,
-// and the written l is reloaded for the next line.
+// Down counter 5: the borrow (35) comes with the (l+1)-th count pulse, exactly once; the
+// count then stays 0 until l is written again (rtl/specular_down_counter.sv; the stream
+// writes l with every accepted span).
 #include "Vcounter.h"
 #include "rtl_harness.hpp"
 
@@ -48,8 +49,38 @@ TEST_CASE("counter 5 borrows on the (l+1)-th pulse", "[rtl][counter]") {
   load(dut, len);
   CHECK(static_cast<unsigned>(dut.count_o) == len);
   CHECK(pulses_to_borrow(dut, 5000) == static_cast<long>(len) + 1);
-  // Reloaded from the written value: the next line has the same length.
+  // After the borrow the count stays 0 (no wrap): a further pulse borrows at once.
+  CHECK(dut.count_o == 0);
+  CHECK(dut.zero_o == 1);
+  for (int i = 0; i < 3; ++i) tick(dut);
+  CHECK(dut.count_o == 0);
+  CHECK(pulses_to_borrow(dut, 5000) == 1);
+  CHECK(dut.count_o == 0);
+  // The next line is written again, as the stream does with every span.
+  load(dut, len);
   CHECK(static_cast<unsigned>(dut.count_o) == len);
+  CHECK(pulses_to_borrow(dut, 5000) == static_cast<long>(len) + 1);
+}
+
+TEST_CASE("counter 5: a write in the borrow's cycle starts the next line", "[rtl][counter]") {
+  // The stream accepts the next span at the edge where the previous span's last pixel
+  // takes the borrow: the write wins over the count pulse.
+  const unsigned len = GENERATE(0u, 1u, 5u);
+  Vcounter dut;
+  reset(dut);
+  load(dut, 2);
+  CHECK(pulses_to_borrow(dut, 2) == -1);   // pulses 1 and 2: no borrow yet
+  dut.count_i = 1;
+  dut.len_we_i = 1;
+  dut.len_i = len;
+  dut.eval();
+  CHECK(dut.borrow_o == 1);
+  tick(dut);
+  dut.count_i = 0;
+  dut.len_we_i = 0;
+  dut.eval();
+  CHECK(static_cast<unsigned>(dut.count_o) == len);
+  CHECK(dut.zero_o == (len == 0 ? 1 : 0));
   CHECK(pulses_to_borrow(dut, 5000) == static_cast<long>(len) + 1);
 }
 
