@@ -547,6 +547,7 @@ int main(int argc, char** argv) {
       SPECULAR_SIM_CONFIGS(SPECULAR_RUN_CONFIG)
     }
 #undef SPECULAR_RUN_CONFIG
+    if (all.empty()) throw std::runtime_error("no verilated configuration is named '" + config + "'");
     print_table(all);
     if (!scene_stats.empty()) {
       std::cout << "\nScenes (every span through specular_stream, back to back, registers from the batched setup;\n"
