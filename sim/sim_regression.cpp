@@ -537,8 +537,8 @@ int main(int argc, char** argv) {
     };
     // Every verilated configuration in build_configs() order; the scenes run on those marked
     // for them (BuildConfig::scenes) or on the one asked for.
-#define SPECULAR_RUN_CONFIG(id, name)                                                                          \
-  if (bc.name == name)                                                                                         \
+#define SPECULAR_RUN_CONFIG(id, cfg_name)                                                                      \
+  if (bc.name == cfg_name)                                                                                     \
     all.push_back(run_config<Vspecular_unit_##id, Vspecular_unit_##id##_specular_unit, Vspecular_scene_##id,   \
                              Vspecular_scene_##id##_specular_stream, Vspecular_pipeline_##id##_specular_pipeline>( \
         bc, det, rnd, seed, every && !bc.scenes ? none : scenes, take_images(), sro, scene_stats));

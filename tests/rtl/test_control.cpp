@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // Control unit 14 of the streaming pipeline, cycle by cycle (its block model has the
-// default PipeDepth = 5). Counter 5 is modelled here (loaded with l on accept, decremented
+// block's default PipeDepth, kLatency below). Counter 5 is modelled here (loaded with l on accept, decremented
 // by every count pulse 34), so the unit is checked against the stream contract,
 // independently of its implementation. adv_i is the pipeline advance (in the core a
 // register of the output buffer); a pixel leaves the last stage at an edge where
 // out_valid_o and adv_i are both high.
 //   * with adv_i high and spans always offered, a span accepted in cycle t has pixel i in
-//     the last stage in cycle t + 5 + i; the next span is accepted in cycle t + l + 1
+//     the last stage in cycle t + PipeDepth + i; the next span is accepted in cycle t + l + 1
 //     (one pixel per clock, l = 0 included);
 //   * mux select 36 is 0 exactly on accepting strobes, a strobe (37) and a count pulse
 //     (34) per pixel leaving register 8;
