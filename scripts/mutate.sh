@@ -70,7 +70,8 @@ fi
 src="$out/src"
 rm -rf "$src"
 mkdir -p "$src"
-(cd "$root" && git ls-files -z --cached --others --exclude-standard | xargs -0 cp --parents -t "$src")
+# Timestamps kept, so that a second run reuses the build of the first.
+(cd "$root" && git ls-files -z --cached --others --exclude-standard | xargs -0 cp -p --parents -t "$src")
 build="$out/build"
 echo "mutate.sh: configuring $build (default configuration only)"
 cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSPECULAR_SIM_CONFIGS=default > "$out/configure.log" 2>&1 ||
@@ -91,7 +92,7 @@ for m in "${mutants[@]}"; do
   IFS='#' read -r name file expr what <<< "$m"
   if [ -n "$only" ] && [[ ",$only," != *",$name,"* ]]; then continue; fi
   f="$src/rtl/$file"
-  cp "$f" "$out/$file.orig"
+  cp -p "$f" "$out/$file.orig"
   sed -i "$expr" "$f"
   if cmp -s "$f" "$out/$file.orig"; then
     echo "mutate.sh: mutant '$name' no longer applies to rtl/$file (the RTL changed): update its sed expression" >&2
@@ -113,8 +114,9 @@ for m in "${mutants[@]}"; do
       result="survived"
     else
       result="killed"
-      killer=$( (grep -E '^FAIL|SPEC_ASSERT|%Error' "$log" || echo "exit code $rc") | head -3 | cut -c1-140 |
-                sed 's/|/\\|/g' | paste -sd ';' | sed 's/;/; /g')
+      killer=$(grep -m3 -E '^FAIL|SPEC_ASSERT|%Error' "$log" | cut -c1-140 | sed 's/|/\\|/g' | paste -sd ';' |
+                 sed 's/;/; /g' || true)
+      [ -n "$killer" ] || killer="exit code $rc"
     fi
   fi
   if [ "$result" = survived ]; then
