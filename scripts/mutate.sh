@@ -70,8 +70,10 @@ fi
 src="$out/src"
 rm -rf "$src"
 mkdir -p "$src"
-# Timestamps kept, so that a second run reuses the build of the first.
+# Timestamps kept, so that a second run reuses the C++ of the first; the RTL is touched, so
+# that no model of an earlier run's mutant survives into this one.
 (cd "$root" && git ls-files -z --cached --others --exclude-standard | xargs -0 cp -p --parents -t "$src")
+touch "$src"/rtl/*.sv
 build="$out/build"
 echo "mutate.sh: configuring $build (default configuration only)"
 cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSPECULAR_SIM_CONFIGS=default > "$out/configure.log" 2>&1 ||
