@@ -176,7 +176,7 @@ void Checker::check_line(const Scanline& sl, const LineRun& run, bool random, Po
   }
   if (run.latency >= 0) ++st.latency[run.latency];
   st.cycles += run.cycles;
-  if (r.len == (1u << f.len_bits) - 1) {
+  if (r.len == static_cast<uint32_t>(f.max_len())) {
     st.long_line_cycles += run.cycles;
     st.long_line_pixels += r.len + 1;
   }

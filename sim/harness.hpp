@@ -213,7 +213,7 @@ class Harness {
     top_->dpsi_i = static_cast<uint32_t>((d >> 7) & ((1ULL << f.angle_bits) - 1));
     top_->psi0_i = static_cast<uint32_t>(rng() & ((1ULL << f.angle_bits) - 1));
     top_->n_i = static_cast<uint32_t>((d >> 40) & ((1ULL << f.n_bits) - 1));
-    top_->len_i = static_cast<uint32_t>((d >> 50) & ((1ULL << f.len_bits) - 1));
+    top_->len_i = static_cast<uint32_t>((d >> 50) & static_cast<uint64_t>(f.max_len()));
     settle();
   }
   void settle() {

@@ -70,7 +70,7 @@ glm::dvec3 random_perp(const glm::dvec3& v, std::mt19937_64& rng) {
 
 std::vector<Scanline> deterministic_scanlines(const device::Format& f) {
   std::vector<Scanline> out;
-  const int max_len = (1 << f.len_bits) - 1;
+  const int max_len = f.max_len();
   const double full = 2.0;  // quantizes to the top code of register 1 (saturation, reported)
   const double c_levels[3] = {0.0, 1.0, full};
   const int short_l[5] = {0, 1, 2, 3, max_len};
@@ -193,7 +193,7 @@ std::vector<Scanline> deterministic_scanlines(const device::Format& f) {
 std::vector<Scanline> random_scanlines(const device::Format& f, uint64_t seed, int count) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
-  const int max_len = (1 << f.len_bits) - 1;
+  const int max_len = f.max_len();
   std::vector<Scanline> out;
   out.reserve(count);
   for (int i = 0; i < count; ++i) {

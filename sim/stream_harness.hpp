@@ -298,7 +298,7 @@ class StreamHarness {
     top_->span_psi0_i = static_cast<uint32_t>(static_cast<uint64_t>(s.reg.psi0) & am);
     top_->span_dpsi_i = static_cast<uint32_t>(static_cast<uint64_t>(s.reg.dpsi) & am);
     top_->span_n_i = s.reg.n & ((1U << f.n_bits) - 1);
-    top_->span_len_i = s.reg.len & ((1U << f.len_bits) - 1);
+    top_->span_len_i = s.reg.len & static_cast<uint32_t>(f.max_len());
     top_->span_tag_i = static_cast<uint32_t>(s.tag & tag_mask_);
   }
   void check_pixel(const device::StreamPixel& px) {

@@ -37,7 +37,7 @@ device::Span random_span(const device::Format& f, std::mt19937_64& rng, bool sho
   else r.n = edges[rng() % std::size(edges)];
   r.n &= (1U << f.n_bits) - 1;
   // l: short spans dominate a rasterizer's output; a few long ones reach the counter maximum.
-  const uint32_t lmax = (1U << f.len_bits) - 1;
+  const uint32_t lmax = static_cast<uint32_t>(f.max_len());
   const double pl = u01(rng);
   if (short_only || pl < 0.6) r.len = static_cast<uint32_t>(rng() % 4);
   else if (pl < 0.98) r.len = 4 + static_cast<uint32_t>(rng() % 28);
