@@ -21,7 +21,8 @@
 //   intensity_o[16]       pixel intensity, format of C (output 27); 0 while valid_o is low
 //   valid_o               intensity_o holds the next pixel (data valid strobe 29)
 //   busy_o                line in progress ("End", 28)
-// Register values persist until rewritten (l included, see specular_down_counter).
+// Register values persist until rewritten (l included: this unit keeps it in u_reg5_len and
+// hands it to the stream with every start).
 //
 // Protocol, start_i high in cycle s while idle (writes in cycle s apply to this line),
 // L = specular_pkg::unit_latency (per configuration: docs/pipeline.md#stage-counts):
