@@ -186,12 +186,11 @@ std::vector<fs::path> git_files(const fs::path& root, const std::string& pathspe
   return out;
 }
 
-std::vector<fs::path> source_files(const fs::path& root) {
-  const std::string specs =
-      "'*.cpp' '*.hpp' '*.inl' '*.sv' '*.svh' '*.py' '*.sh' '*.cmake' '*CMakeLists.txt' 'Makefile' '*.f'";
-  if (fs::exists(root / ".git")) return git_files(root, specs);
+// The files of the tree: in a git checkout those git_files lists, elsewhere every file whose
+// name matches `name` outside .git and build* folders.
+std::vector<fs::path> tree_files(const fs::path& root, const std::string& pathspecs, const std::regex& name) {
+  if (fs::exists(root / ".git")) return git_files(root, pathspecs);
   std::vector<fs::path> out;
-  static const std::regex name(R"(.*\.(cpp|hpp|inl|sv|svh|py|sh|cmake|f)$|CMakeLists\.txt|Makefile)");
   for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator(); ++it) {
     const std::string n = it->path().filename().string();
     if (it->is_directory() && (n == ".git" || n.rfind("build", 0) == 0)) {
@@ -203,32 +202,15 @@ std::vector<fs::path> source_files(const fs::path& root) {
   return out;
 }
 
+std::vector<fs::path> source_files(const fs::path& root) {
+  static const std::regex name(R"(.*\.(cpp|hpp|inl|sv|svh|py|sh|cmake|f)$|CMakeLists\.txt|Makefile)");
+  return tree_files(root, "'*.cpp' '*.hpp' '*.inl' '*.sv' '*.svh' '*.py' '*.sh' '*.cmake' '*CMakeLists.txt' 'Makefile' '*.f'",
+                    name);
+}
+
 std::vector<fs::path> markdown_files(const fs::path& root) {
-  std::vector<fs::path> out;
-  if (fs::exists(root / ".git")) {
-    const std::string cmd = "git -C '" + root.string() + "' ls-files --cached --others --exclude-standard -- '*.md'";
-    if (FILE* p = popen(cmd.c_str(), "r")) {
-      char buf[4096];
-      std::string all;
-      while (size_t n = fread(buf, 1, sizeof buf, p)) all.append(buf, n);
-      if (pclose(p) == 0) {
-        std::istringstream in(all);
-        std::string line;
-        while (std::getline(in, line))
-          if (!line.empty() && fs::exists(root / line)) out.push_back(root / line);
-        return out;
-      }
-    }
-  }
-  for (auto it = fs::recursive_directory_iterator(root); it != fs::recursive_directory_iterator(); ++it) {
-    const std::string name = it->path().filename().string();
-    if (it->is_directory() && (name == ".git" || name.rfind("build", 0) == 0)) {
-      it.disable_recursion_pending();
-      continue;
-    }
-    if (it->is_regular_file() && it->path().extension() == ".md") out.push_back(it->path());
-  }
-  return out;
+  static const std::regex name(R"(.*\.md)");
+  return tree_files(root, "'*.md'", name);
 }
 
 int check_tree(const fs::path& root, std::vector<std::string>* found) {
@@ -297,5 +279,10 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (std::string(argv[1]) == "--self-test") return self_test();
+  // No README found means the file listing failed (git error, wrong ROOT): nothing was checked.
+  if (markdown_files(fs::path(argv[1])).empty()) {
+    std::cerr << "check_md_links: " << argv[1] << ": no Markdown files found (not the repository root, or git failed)\n";
+    return 1;
+  }
   return check_tree(fs::path(argv[1]), nullptr) ? 1 : 0;
 }
