@@ -62,33 +62,16 @@
 // A push when the FIFO holds FifoDepth spans is dropped and sets ERR.PUSH_FULL.
 // irq_o: registered, high while (ERR & IRQ_EN) != 0 (level; cleared through ERR or IRQ_EN).
 //
-// Parameters: those of specular_stream (same names and defaults, passed through), AddrWidth
+// Parameters: those of specular_stream (rtl/specular_params.svh and TagBits, passed
+// through), AddrWidth
 // (>= 8) and FifoDepth (1 .. 255). The interface widths CBits, AngleBits, NBits, LenBits and
 // TagBits must not exceed 32 (one register each).
 
 `include "specular_assert.svh"
+`include "specular_params.svh"
 
 module specular_axil #(
-  parameter int CBits /*verilator public*/       = 16,
-  parameter int CFrac /*verilator public*/       = 15,
-  parameter int AngleBits /*verilator public*/   = 32,
-  parameter int AngleFrac /*verilator public*/   = 28,
-  parameter int AccBits /*verilator public*/     = 44,
-  parameter int NBits /*verilator public*/       = 10,
-  parameter int LenBits /*verilator public*/     = 11,
-  parameter int CoefBits /*verilator public*/    = 21,
-  parameter int CoefFrac /*verilator public*/    = 18,
-  parameter int PsiMulFrac /*verilator public*/  = 20,
-  parameter bit CosInterp /*verilator public*/   = 1'b1,
-  parameter int CosAddrBits /*verilator public*/ = 8,
-  parameter int CosDataBits /*verilator public*/ = 18,
-  parameter int CosDeltaBits /*verilator public*/ = 12,
-  parameter int CosFracBits /*verilator public*/ = 12,
-  parameter int NumBanks /*verilator public*/    = 8,
-  parameter logic [NumBanks*NBits-1:0] BankMaxN /*verilator public*/ =
-      {10'd1000, 10'd13, 10'd9, 10'd6, 10'd4, 10'd3, 10'd2, 10'd1},
-  parameter     CoefRomFile = "roms/coef_minimax.hex",
-  parameter     CosRomFile  = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex",
+  `SPECULAR_CORE_PARAMS,
   parameter int TagBits /*verilator public*/     = 16,
   parameter int AddrWidth /*verilator public*/   = 8,
   parameter int FifoDepth /*verilator public*/   = 4
@@ -448,25 +431,7 @@ module specular_axil #(
   assign core_span_tdata = SpanDataBits'(fifo_head[SpanBits-1:0]);  // zero pad
 
   specular_axis #(
-    .CBits        (CBits),
-    .CFrac        (CFrac),
-    .AngleBits    (AngleBits),
-    .AngleFrac    (AngleFrac),
-    .AccBits      (AccBits),
-    .NBits        (NBits),
-    .LenBits      (LenBits),
-    .CoefBits     (CoefBits),
-    .CoefFrac     (CoefFrac),
-    .PsiMulFrac   (PsiMulFrac),
-    .CosInterp    (CosInterp),
-    .CosAddrBits  (CosAddrBits),
-    .CosDataBits  (CosDataBits),
-    .CosDeltaBits (CosDeltaBits),
-    .CosFracBits  (CosFracBits),
-    .NumBanks     (NumBanks),
-    .BankMaxN     (BankMaxN),
-    .CoefRomFile  (CoefRomFile),
-    .CosRomFile   (CosRomFile),
+    `SPECULAR_CORE_PARAM_MAP,
     .TagBits      (TagBits)
   ) u_axis (
     .clk_i              (clk_i),

@@ -24,31 +24,14 @@
 //   m_axis_px_tvalid, m_axis_px_tready
 // No TKEEP/TSTRB (every byte is a data byte), TID or TDEST.
 //
-// Parameters: those of specular_stream, same names and defaults, passed through; the TDATA
-// widths follow from them. s_axis_span_tready depends on registers only (never on
+// Parameters: those of specular_stream (the core's list, rtl/specular_params.svh, and
+// TagBits), passed through; the TDATA widths follow from them. s_axis_span_tready depends on registers only (never on
 // s_axis_span_tvalid or m_axis_px_tready), as specular_stream's span_ready_o.
 
+`include "specular_params.svh"
+
 module specular_axis #(
-  parameter int CBits /*verilator public*/       = 16,
-  parameter int CFrac /*verilator public*/       = 15,
-  parameter int AngleBits /*verilator public*/   = 32,
-  parameter int AngleFrac /*verilator public*/   = 28,
-  parameter int AccBits /*verilator public*/     = 44,
-  parameter int NBits /*verilator public*/       = 10,
-  parameter int LenBits /*verilator public*/     = 11,
-  parameter int CoefBits /*verilator public*/    = 21,
-  parameter int CoefFrac /*verilator public*/    = 18,
-  parameter int PsiMulFrac /*verilator public*/  = 20,
-  parameter bit CosInterp /*verilator public*/   = 1'b1,
-  parameter int CosAddrBits /*verilator public*/ = 8,
-  parameter int CosDataBits /*verilator public*/ = 18,
-  parameter int CosDeltaBits /*verilator public*/ = 12,
-  parameter int CosFracBits /*verilator public*/ = 12,
-  parameter int NumBanks /*verilator public*/    = 8,
-  parameter logic [NumBanks*NBits-1:0] BankMaxN /*verilator public*/ =
-      {10'd1000, 10'd13, 10'd9, 10'd6, 10'd4, 10'd3, 10'd2, 10'd1},
-  parameter     CoefRomFile = "roms/coef_minimax.hex",
-  parameter     CosRomFile  = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex",
+  `SPECULAR_CORE_PARAMS,
   parameter int TagBits /*verilator public*/     = 16
 ) (
   input  logic clk_i,
@@ -93,25 +76,7 @@ module specular_axis #(
   end
 
   specular_stream #(
-    .CBits        (CBits),
-    .CFrac        (CFrac),
-    .AngleBits    (AngleBits),
-    .AngleFrac    (AngleFrac),
-    .AccBits      (AccBits),
-    .NBits        (NBits),
-    .LenBits      (LenBits),
-    .CoefBits     (CoefBits),
-    .CoefFrac     (CoefFrac),
-    .PsiMulFrac   (PsiMulFrac),
-    .CosInterp    (CosInterp),
-    .CosAddrBits  (CosAddrBits),
-    .CosDataBits  (CosDataBits),
-    .CosDeltaBits (CosDeltaBits),
-    .CosFracBits  (CosFracBits),
-    .NumBanks     (NumBanks),
-    .BankMaxN     (BankMaxN),
-    .CoefRomFile  (CoefRomFile),
-    .CosRomFile   (CosRomFile),
+    `SPECULAR_CORE_PARAM_MAP,
     .TagBits      (TagBits)
   ) u_stream (
     .clk_i          (clk_i),

@@ -60,34 +60,14 @@
 // unscaled -lambda and gamma/l (multiplier 11 applies a(n)); ROM 12 covers only [0, pi/2),
 // |zeta| addresses it and zeta >= pi/2 outputs 0.
 //
-// ROM files ($readmemh, paths relative to the working directory) and the numeric
-// parameters are those of specular_unit (see its header and roms/README.md); the numeric
-// parameters are /*verilator public*/ here too, so a testbench of the stream alone can
-// check them against specular::device::Format.
+// Parameters: the core's list, written once in rtl/specular_params.svh (widths, ROM
+// files, decoder banks; defaults those of specular::device::Format), and TagBits.
 
 `include "specular_assert.svh"
+`include "specular_params.svh"
 
 module specular_stream #(
-  parameter int CBits /*verilator public*/       = 16,
-  parameter int CFrac /*verilator public*/       = 15,
-  parameter int AngleBits /*verilator public*/   = 32,
-  parameter int AngleFrac /*verilator public*/   = 28,
-  parameter int AccBits /*verilator public*/     = 44,
-  parameter int NBits /*verilator public*/       = 10,
-  parameter int LenBits /*verilator public*/     = 11,
-  parameter int CoefBits /*verilator public*/    = 21,
-  parameter int CoefFrac /*verilator public*/    = 18,
-  parameter int PsiMulFrac /*verilator public*/  = 20,
-  parameter bit CosInterp /*verilator public*/   = 1'b1,
-  parameter int CosAddrBits /*verilator public*/ = 8,
-  parameter int CosDataBits /*verilator public*/ = 18,
-  parameter int CosDeltaBits /*verilator public*/ = 12,
-  parameter int CosFracBits /*verilator public*/ = 12,
-  parameter int NumBanks /*verilator public*/    = 8,
-  parameter logic [NumBanks*NBits-1:0] BankMaxN /*verilator public*/ =
-      {10'd1000, 10'd13, 10'd9, 10'd6, 10'd4, 10'd3, 10'd2, 10'd1},
-  parameter     CoefRomFile = "roms/coef_minimax.hex",
-  parameter     CosRomFile  = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex",
+  `SPECULAR_CORE_PARAMS,
   parameter int TagBits     = 16
 ) (
   input  logic                 clk_i,

@@ -56,37 +56,17 @@
 //                in CosDataBits + 1 bits, d = v - v(i + 1) in CosDeltaBits bits;
 //                direct (CosInterp = 0, the patent): min(round(cos^k(i h) * 2^CosDataBits),
 //                2^CosDataBits - 1) in CosDataBits bits (specular_cos_k_rom.sv)
-// The numeric parameter defaults equal struct specular::device::Format; the k of each ROM 12
-// bank (default 1, 2, 3, 4, 6, 8, 12, 16) lives only in CosRomFile, the hardware does not
-// need it.
-// The numeric parameters are /*verilator public*/: a Verilator testbench reads them as
-// static constants V<prefix>_specular_unit::CBits, ... (header V<prefix>_specular_unit.h),
-// e.g. to refuse to run when they differ from Format.
+// Parameters: the core's list (rtl/specular_params.svh: defaults equal struct
+// specular::device::Format, the numeric ones /*verilator public*/, e.g. read as
+// V<prefix>_specular_unit::CBits by a testbench that refuses to run when they differ from
+// Format). The k of each ROM 12 bank (default 1, 2, 3, 4, 6, 8, 12, 16) lives only in
+// CosRomFile, the hardware does not need it.
 
 `include "specular_assert.svh"
+`include "specular_params.svh"
 
 module specular_unit #(
-  parameter int CBits       /*verilator public*/ = 16,  // Format::c_bits
-  parameter int CFrac       /*verilator public*/ = 15,  // Format::c_frac (documentary)
-  parameter int AngleBits   /*verilator public*/ = 32,  // Format::angle_bits
-  parameter int AngleFrac   /*verilator public*/ = 28,  // Format::angle_frac
-  parameter int AccBits     /*verilator public*/ = 44,  // Format::acc_bits
-  parameter int NBits       /*verilator public*/ = 10,  // Format::n_bits
-  parameter int LenBits     /*verilator public*/ = 11,  // Format::len_bits
-  parameter int CoefBits    /*verilator public*/ = 21,  // Format::coef_bits
-  parameter int CoefFrac    /*verilator public*/ = 18,  // Format::coef_frac
-  parameter int PsiMulFrac  /*verilator public*/ = 20,  // Format::psi_mul_frac
-  parameter bit CosInterp   /*verilator public*/ = 1'b1,  // Format::cos_interp
-  parameter int CosAddrBits /*verilator public*/ = 8,   // Format::cos_addr_bits
-  parameter int CosDataBits /*verilator public*/ = 18,  // Format::cos_data_bits
-  parameter int CosDeltaBits /*verilator public*/ = 12, // Format::cos_delta_bits
-  parameter int CosFracBits /*verilator public*/ = 12,  // Format::cos_frac_bits
-  parameter int NumBanks    /*verilator public*/ = 8,   // Format::banks.size()
-  // Format::bank_max_n, NBits bits per bank, bank 0 in the least significant bits.
-  parameter logic [NumBanks*NBits-1:0] BankMaxN /*verilator public*/ =
-      {10'd1000, 10'd13, 10'd9, 10'd6, 10'd4, 10'd3, 10'd2, 10'd1},
-  parameter     CoefRomFile  = "roms/coef_minimax.hex",
-  parameter     CosRomFile   = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex"
+  `SPECULAR_CORE_PARAMS
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
@@ -199,25 +179,7 @@ module specular_unit #(
   assign idle   = ~start_q;
 
   specular_stream #(
-    .CBits       (CBits),
-    .CFrac       (CFrac),
-    .AngleBits   (AngleBits),
-    .AngleFrac   (AngleFrac),
-    .AccBits     (AccBits),
-    .NBits       (NBits),
-    .LenBits     (LenBits),
-    .CoefBits    (CoefBits),
-    .CoefFrac    (CoefFrac),
-    .PsiMulFrac  (PsiMulFrac),
-    .CosInterp   (CosInterp),
-    .CosAddrBits (CosAddrBits),
-    .CosDataBits (CosDataBits),
-    .CosDeltaBits (CosDeltaBits),
-    .CosFracBits (CosFracBits),
-    .NumBanks    (NumBanks),
-    .BankMaxN    (BankMaxN),
-    .CoefRomFile (CoefRomFile),
-    .CosRomFile  (CosRomFile),
+    `SPECULAR_CORE_PARAM_MAP,
     .TagBits     (1)
   ) u_stream (
     .clk_i          (clk_i),

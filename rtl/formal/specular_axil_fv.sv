@@ -7,8 +7,9 @@
 // whatever the core does), Yosys sat -tempinduct: base case from reset plus induction, an
 // unbounded proof. Overview and figures: rtl/formal/README.md.
 //
-// Reduced parameters: the stream core's are those of specular_stream_fv.sv (it is cut out
-// anyway; they only keep elaboration small), TagBits 2, AddrWidth 9 (so that addresses at
+// Reduced parameters: the stream core's and TagBits are those of specular_stream_fv.sv
+// (rtl/formal/specular_fv_params.svh; the core is cut out anyway, they only keep
+// elaboration small), AddrWidth 9 (so that addresses at
 // and above 0x100 exist and must answer SLVERR), FifoDepth 2. The AXI4-Lite side keeps
 // its 32-bit data path.
 //
@@ -41,27 +42,11 @@
 //   p_aw_full = u_dut.aw_full_q   p_w_full = u_dut.w_full_q   p_awaddr = u_dut.awaddr_q
 // With FV_PROPERTIES_ONLY defined (the mutant runs) the invariants and probes are left out.
 
+`include "specular_params.svh"
+`include "formal/specular_fv_params.svh"
+
 module specular_axil_fv #(
-  parameter int CBits        = 4,
-  parameter int CFrac        = 3,
-  parameter int AngleBits    = 8,
-  parameter int AngleFrac    = 4,
-  parameter int AccBits      = 12,
-  parameter int NBits        = 4,
-  parameter int LenBits      = 3,
-  parameter int CoefBits     = 4,
-  parameter int CoefFrac     = 2,
-  parameter int PsiMulFrac   = 2,
-  parameter bit CosInterp    = 1'b0,
-  parameter int CosAddrBits  = 2,
-  parameter int CosDataBits  = 4,
-  parameter int CosDeltaBits = 4,
-  parameter int CosFracBits  = 1,
-  parameter int NumBanks     = 2,
-  parameter logic [NumBanks*NBits-1:0] BankMaxN = {4'd15, 4'd1},
-  parameter     CoefRomFile  = "rtl/formal/coef_fv.hex",
-  parameter     CosRomFile   = "rtl/formal/cos_k_fv.hex",
-  parameter int TagBits      = 2,
+  `SPECULAR_FV_PARAMS,
   parameter int AddrWidth    = 9,
   parameter int FifoDepth    = 2
 ) (
@@ -95,25 +80,7 @@ module specular_axil_fv #(
 );
 
   specular_axil #(
-    .CBits        (CBits),
-    .CFrac        (CFrac),
-    .AngleBits    (AngleBits),
-    .AngleFrac    (AngleFrac),
-    .AccBits      (AccBits),
-    .NBits        (NBits),
-    .LenBits      (LenBits),
-    .CoefBits     (CoefBits),
-    .CoefFrac     (CoefFrac),
-    .PsiMulFrac   (PsiMulFrac),
-    .CosInterp    (CosInterp),
-    .CosAddrBits  (CosAddrBits),
-    .CosDataBits  (CosDataBits),
-    .CosDeltaBits (CosDeltaBits),
-    .CosFracBits  (CosFracBits),
-    .NumBanks     (NumBanks),
-    .BankMaxN     (BankMaxN),
-    .CoefRomFile  (CoefRomFile),
-    .CosRomFile   (CosRomFile),
+    `SPECULAR_CORE_PARAM_MAP,
     .TagBits      (TagBits),
     .AddrWidth    (AddrWidth),
     .FifoDepth    (FifoDepth)

@@ -55,29 +55,13 @@
 // Latency (the core's PipeDepth + 1, the output buffer's clock) is a parameter set by
 // scripts/formal.sh.
 
+`include "specular_params.svh"
+`include "formal/specular_fv_params.svh"
+
 module specular_stream_fv #(
-  parameter int CBits       = 4,
-  parameter int CFrac       = 3,
-  parameter int AngleBits   = 8,
-  parameter int AngleFrac   = 4,
-  parameter int AccBits     = 12,
-  parameter int NBits       = 4,
-  parameter int LenBits     = 3,
-  parameter int CoefBits    = 4,
-  parameter int CoefFrac    = 2,
-  parameter int PsiMulFrac  = 2,
-  parameter bit CosInterp   = 1'b0,
-  parameter int CosAddrBits = 2,
-  parameter int CosDataBits = 4,
-  parameter int CosDeltaBits = 4,
-  parameter int CosFracBits = 1,
-  parameter int NumBanks    = 2,
-  parameter logic [NumBanks*NBits-1:0] BankMaxN = {4'd15, 4'd1},
-  parameter     CoefRomFile = "rtl/formal/coef_fv.hex",
-  parameter     CosRomFile  = "rtl/formal/cos_k_fv.hex",
-  parameter int TagBits     = 2,
+  `SPECULAR_FV_PARAMS,
   // Cycles from the accept edge to pixel 0 on the output: the core's PipeDepth + 1 (15 with
-  // the widths above). scripts/formal.sh sets it from the core's tag delay line (depth
+  // the reduced widths). scripts/formal.sh sets it from the core's tag delay line (depth
   // PipeDepth - 1, so Latency = its length + 2); a wrong value fails on the probe widths.
   parameter int Latency     = 15
 ) (
@@ -99,25 +83,7 @@ module specular_stream_fv #(
 );
 
   specular_stream #(
-    .CBits       (CBits),
-    .CFrac       (CFrac),
-    .AngleBits   (AngleBits),
-    .AngleFrac   (AngleFrac),
-    .AccBits     (AccBits),
-    .NBits       (NBits),
-    .LenBits     (LenBits),
-    .CoefBits    (CoefBits),
-    .CoefFrac    (CoefFrac),
-    .PsiMulFrac  (PsiMulFrac),
-    .CosInterp   (CosInterp),
-    .CosAddrBits (CosAddrBits),
-    .CosDataBits (CosDataBits),
-    .CosDeltaBits (CosDeltaBits),
-    .CosFracBits (CosFracBits),
-    .NumBanks    (NumBanks),
-    .BankMaxN    (BankMaxN),
-    .CoefRomFile (CoefRomFile),
-    .CosRomFile  (CosRomFile),
+    `SPECULAR_CORE_PARAM_MAP,
     .TagBits     (TagBits)
   ) u_dut (
     .clk_i          (clk_i),

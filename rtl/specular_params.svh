@@ -1,0 +1,77 @@
+// SPDX-License-Identifier: Apache-2.0
+//
+// The parameter list of the core, written once. specular_stream, specular_unit,
+// specular_axis and specular_axil declare it with `SPECULAR_CORE_PARAMS and hand it on to
+// the core they wrap with `SPECULAR_CORE_PARAM_MAP; the formal harnesses hand their reduced
+// values on with the same map. A parameter added here reaches every top level at once.
+//
+// Defaults: those of struct specular::device::Format (model/device/device_model.hpp), the
+// configuration "default" of roms/build_configs.cmake. What each parameter is:
+//   CBits, CFrac           C and the intensity: bits, fraction bits (CFrac documentary)
+//                          (Format::c_bits, c_frac)
+//   AngleBits, AngleFrac   psi0 and dpsi: bits, fraction bits (angle_bits, angle_frac)
+//   AccBits                register 8, the angle accumulator (acc_bits)
+//   NBits, LenBits         n and l (n_bits, len_bits)
+//   CoefBits, CoefFrac     a(n) in ROM 9 (coef_bits, coef_frac)
+//   PsiMulFrac             fraction bits of |psi| into multiplier 11 (psi_mul_frac)
+//   CosInterp              ROM 12 interpolated (1) or direct, as in the patent (0)
+//                          (cos_interp)
+//   CosAddrBits, CosDataBits, CosDeltaBits, CosFracBits
+//                          ROM 12: address bits per bank, bits of cos^k, of the step d and
+//                          of the interpolation weight (cos_addr_bits, ...)
+//   NumBanks, BankMaxN     decoder 10: the banks, and the largest n of each (NBits bits per
+//                          bank, bank 0 in the least significant bits) (banks, bank_max_n)
+//   CoefRomFile, CosRomFile  the ROM files, read with $readmemh at elaboration, paths
+//                          relative to the working directory (formats: roms/README.md)
+// The numeric parameters are /*verilator public*/ (Verilator keeps the metacomment in a
+// macro body): a Verilator testbench reads them as static constants of the model's root
+// class, e.g. to refuse to run when they differ from Format.
+// The list ends without a comma, so a module adds its own parameters after `,`.
+
+`ifndef SPECULAR_PARAMS_SVH
+`define SPECULAR_PARAMS_SVH
+
+`define SPECULAR_CORE_PARAMS \
+  parameter int CBits        /*verilator public*/ = 16, \
+  parameter int CFrac        /*verilator public*/ = 15, \
+  parameter int AngleBits    /*verilator public*/ = 32, \
+  parameter int AngleFrac    /*verilator public*/ = 28, \
+  parameter int AccBits      /*verilator public*/ = 44, \
+  parameter int NBits        /*verilator public*/ = 10, \
+  parameter int LenBits      /*verilator public*/ = 11, \
+  parameter int CoefBits     /*verilator public*/ = 21, \
+  parameter int CoefFrac     /*verilator public*/ = 18, \
+  parameter int PsiMulFrac   /*verilator public*/ = 20, \
+  parameter bit CosInterp    /*verilator public*/ = 1'b1, \
+  parameter int CosAddrBits  /*verilator public*/ = 8, \
+  parameter int CosDataBits  /*verilator public*/ = 18, \
+  parameter int CosDeltaBits /*verilator public*/ = 12, \
+  parameter int CosFracBits  /*verilator public*/ = 12, \
+  parameter int NumBanks     /*verilator public*/ = 8, \
+  parameter logic [NumBanks*NBits-1:0] BankMaxN /*verilator public*/ = \
+      {10'd1000, 10'd13, 10'd9, 10'd6, 10'd4, 10'd3, 10'd2, 10'd1}, \
+  parameter     CoefRomFile = "roms/coef_minimax.hex", \
+  parameter     CosRomFile  = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex"
+
+`define SPECULAR_CORE_PARAM_MAP \
+  .CBits        (CBits), \
+  .CFrac        (CFrac), \
+  .AngleBits    (AngleBits), \
+  .AngleFrac    (AngleFrac), \
+  .AccBits      (AccBits), \
+  .NBits        (NBits), \
+  .LenBits      (LenBits), \
+  .CoefBits     (CoefBits), \
+  .CoefFrac     (CoefFrac), \
+  .PsiMulFrac   (PsiMulFrac), \
+  .CosInterp    (CosInterp), \
+  .CosAddrBits  (CosAddrBits), \
+  .CosDataBits  (CosDataBits), \
+  .CosDeltaBits (CosDeltaBits), \
+  .CosFracBits  (CosFracBits), \
+  .NumBanks     (NumBanks), \
+  .BankMaxN     (BankMaxN), \
+  .CoefRomFile  (CoefRomFile), \
+  .CosRomFile   (CosRomFile)
+
+`endif  // SPECULAR_PARAMS_SVH
