@@ -18,6 +18,7 @@ rtl/specular_pkg.sv
 // helpers
 rtl/specular_delay.sv
 rtl/specular_pipe_mul.sv
+rtl/specular_rom.sv
 // patent blocks 1-14 and the output buffer
 rtl/specular_reg.sv
 rtl/specular_down_counter.sv

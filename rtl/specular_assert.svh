@@ -41,6 +41,11 @@
 //   `SPEC_PARAM_ERROR(msg)                         inside a generate `if` on parameters:
 //                                                  elaboration error ($error); Icarus 11 has
 //                                                  no elaboration-time tasks: $fatal at time 0
+//   `SPEC_PRIMED(name, clk, en)                    declares the flag `name`: 0 from power-up,
+//                                                  1 from the first clk edge with en high; the
+//                                                  rst_n of a block without a reset whose
+//                                                  registers must be loaded first (simulation
+//                                                  only: use it under `ifndef SYNTHESIS)
 //
 // Every block has `include "specular_assert.svh"` (the guard below makes repeats harmless);
 // the include directory is rtl/: the `+incdir+rtl` line of rtl/specular.f, or -I rtl.
@@ -107,5 +112,13 @@
 `define SPEC_PARAM_ERROR(msg) $error(msg);
 
 `endif
+
+`define SPEC_PRIMED(name, clk, en) \
+  logic name = 1'b0;               \
+  always_ff @(posedge (clk)) begin \
+    if (en) begin                  \
+      name <= 1'b1;                \
+    end                            \
+  end
 
 `endif  // SPECULAR_ASSERT_SVH

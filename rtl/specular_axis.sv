@@ -25,8 +25,9 @@
 // No TKEEP/TSTRB (every byte is a data byte), TID or TDEST.
 //
 // Parameters: those of specular_stream (the core's list, rtl/specular_params.svh, and
-// TagBits), passed through; the TDATA widths follow from them. s_axis_span_tready depends on registers only (never on
-// s_axis_span_tvalid or m_axis_px_tready), as specular_stream's span_ready_o.
+// TagBits), passed through; the TDATA widths follow from them. s_axis_span_tready
+// depends on registers only (never on s_axis_span_tvalid or m_axis_px_tready), as
+// specular_stream's span_ready_o.
 
 `include "specular_params.svh"
 

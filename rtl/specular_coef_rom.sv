@@ -9,9 +9,9 @@
 //
 // Contents: $readmemh(CoefRomFile): one hex word per line, no comments, no @ addresses,
 // word 0 first (format documented in roms/README.md). Synchronous read with read enable
-// (registered output, no reset) so synthesis maps it to block RAM. The stream reads it
-// with the span's n in the cycle the span is accepted, so the word sits beside register 4
-// while the span's pixels leave register 8.
+// (registered output, no reset; specular_rom) so synthesis maps it to block RAM. The
+// stream reads it with the span's n in the cycle the span is accepted, so the word sits
+// beside register 4 while the span's pixels leave register 8.
 
 `include "specular_assert.svh"
 
@@ -26,32 +26,16 @@ module specular_coef_rom #(
   output logic [CoefBits-1:0] coef_o
 );
 
-  localparam int Depth = 1 << NBits;
-
-  logic [CoefBits-1:0] mem [Depth];
-  logic [CoefBits-1:0] coef_q;
-
-`ifndef SYNTHESIS
-  int unsigned unloaded;   // words the file left X (a four-state simulator sees them)
-`endif
-  initial begin
-    $readmemh(CoefRomFile, mem, 0, Depth - 1);
-`ifndef SYNTHESIS
-    unloaded = 0;
-    for (int i = 0; i < Depth; i++) begin
-      unloaded += `SPEC_KNOWN(mem[i]) ? 0 : 1;
-    end
-    `SPEC_ASSERT_I(AllWordsLoaded_A, unloaded == 0)
-`endif
-  end
-
-  always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      coef_q <= mem[n_i];
-    end
-  end
-
-  assign coef_o = coef_q;
+  specular_rom #(
+    .Width    (CoefBits),
+    .AddrBits (NBits),
+    .File     (CoefRomFile)
+  ) u_rom (
+    .clk_i  (clk_i),
+    .en_i   (en_i),
+    .addr_i (n_i),
+    .data_o (coef_o)
+  );
 
   // Assertions (rtl/specular_assert.svh; no reset here: an X strobe is vacuous): a read
   // has a known address.

@@ -19,8 +19,8 @@
 // Erratum (docs/device.md#errata-of-the-patent-and-how-each-is-resolved): only [0, pi/2) is stored; multiplier 11 feeds |zeta| (cos is even)
 // and flags zeta >= pi/2 as zero, so no address outside a bank is ever needed.
 //
-// Contents: $readmemh(CosRomFile, mem, 0, Depth - 1): one hex word per line, no comments,
-// no @ addresses, bank 0 first (roms/README.md). The testbenches check the file's length
+// Contents: $readmemh(CosRomFile) in specular_rom, words 0 .. Depth - 1: one hex word per
+// line, no comments, no @ addresses, bank 0 first (roms/README.md). The testbenches check the file's length
 // against the parameters before elaborating (a short file would load silently here).
 // Synchronous read with read enable (block RAM, RE of SB_RAM40_4K), no reset.
 //
@@ -75,7 +75,6 @@ module specular_cos_k_rom #(
 
   localparam int AddrBits = (NumBanks > 1) ? BankBits + CosAddrBits : CosAddrBits;
 
-  logic [WordBits-1:0] mem [Depth];
   logic [WordBits-1:0] word_q;
   logic [AddrBits-1:0] addr;
 
@@ -87,25 +86,17 @@ module specular_cos_k_rom #(
     assign addr = addr_i;
   end
 
-`ifndef SYNTHESIS
-  int unsigned unloaded;   // words the file left X (a four-state simulator sees them)
-`endif
-  initial begin
-    $readmemh(CosRomFile, mem, 0, Depth - 1);
-`ifndef SYNTHESIS
-    unloaded = 0;
-    for (int i = 0; i < Depth; i++) begin
-      unloaded += `SPEC_KNOWN(mem[i]) ? 0 : 1;
-    end
-    `SPEC_ASSERT_I(AllWordsLoaded_A, unloaded == 0)
-`endif
-  end
-
-  always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      word_q <= mem[addr];
-    end
-  end
+  specular_rom #(
+    .Width    (WordBits),
+    .AddrBits (AddrBits),
+    .Depth    (Depth),
+    .File     (CosRomFile)
+  ) u_rom (
+    .clk_i  (clk_i),
+    .en_i   (en_i),
+    .addr_i (addr),
+    .data_o (word_q)
+  );
 
   logic [CosFracBits-1:0] frac_q;
   logic [CosFracBits+1:0] frac3_q;   // 3 t, beside the block RAM read
@@ -156,12 +147,7 @@ module specular_cos_k_rom #(
     // Every word read has v <= 1.0 and d <= v, so v - d t cannot wrap below 0. No reset
     // here: checked from the first read on (before it word_q holds its power-up value),
     // on known words (a bubble's address may be X).
-    logic primed_q = 1'b0;
-    always_ff @(posedge clk_i) begin
-      if (en_i) begin
-        primed_q <= 1'b1;
-      end
-    end
+    `SPEC_PRIMED(primed_q, clk_i, en_i)
     logic word_known;
     assign word_known = `SPEC_KNOWN(word_q);
     `SPEC_ASSERT_IF(WordInRange_A, en_i && word_known, v <= (CosDataBits + 1)'(1 << CosDataBits), clk_i, primed_q)

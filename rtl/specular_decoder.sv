@@ -88,12 +88,7 @@ module specular_decoder #(
 `ifndef SYNTHESIS
   logic primed;
   if (Registered) begin : gen_primed_reg
-    logic primed_q = 1'b0;
-    always_ff @(posedge clk_i) begin
-      if (en_i) begin
-        primed_q <= 1'b1;
-      end
-    end
+    `SPEC_PRIMED(primed_q, clk_i, en_i)
     assign primed = primed_q;
   end else begin : gen_primed_comb
     assign primed = 1'b1;

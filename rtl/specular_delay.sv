@@ -31,18 +31,19 @@ module specular_delay #(
     assign unused_clk = clk_i ^ rst_ni ^ en_i;
     assign q_o = d_i;
   end else begin : gen_regs
-    logic [Width-1:0] pipe_q [Depth];
+    // Stage j (1 .. Depth) is line_q[j*Width-1 -: Width]; d_i enters at the bottom.
+    logic [Depth*Width-1:0] line_d, line_q;
+    if (Depth == 1) begin : gen_one
+      assign line_d = d_i;
+    end else begin : gen_shift
+      assign line_d = {line_q[(Depth-1)*Width-1:0], d_i};
+    end
     if (Reset) begin : gen_reset
       always_ff @(posedge clk_i or negedge rst_ni) begin
         if (!rst_ni) begin
-          for (int i = 0; i < Depth; i++) begin
-            pipe_q[i] <= '0;
-          end
+          line_q <= '0;
         end else if (en_i) begin
-          pipe_q[0] <= d_i;
-          for (int i = 1; i < Depth; i++) begin
-            pipe_q[i] <= pipe_q[i-1];
-          end
+          line_q <= line_d;
         end
       end
     end else begin : gen_no_reset
@@ -50,14 +51,11 @@ module specular_delay #(
       assign unused_rst = rst_ni;
       always_ff @(posedge clk_i) begin
         if (en_i) begin
-          pipe_q[0] <= d_i;
-          for (int i = 1; i < Depth; i++) begin
-            pipe_q[i] <= pipe_q[i-1];
-          end
+          line_q <= line_d;
         end
       end
     end
-    assign q_o = pipe_q[Depth-1];
+    assign q_o = line_q[Depth*Width-1 -: Width];
   end
 
   // Assertions (rtl/specular_assert.svh): the enable of a line with reset is never X (an

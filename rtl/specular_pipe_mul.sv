@@ -99,12 +99,7 @@ module specular_pipe_mul #(
   // on (before it the caller's registers hold power-up values) and on known operands (a
   // bubble's may be X).
 `ifndef SYNTHESIS
-  logic primed_q = 1'b0;
-  always_ff @(posedge clk_i) begin
-    if (en_i) begin
-      primed_q <= 1'b1;
-    end
-  end
+  `SPEC_PRIMED(primed_q, clk_i, en_i)
   logic a_known;
   assign a_known = `SPEC_KNOWN({a_i, a3_i});
   `SPEC_ASSERT_IF(A3IsThreeA_A, en_i && a_known, a3_i == (ABits + 2)'(a_i) * (ABits + 2)'(3), clk_i, primed_q)

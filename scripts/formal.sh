@@ -107,19 +107,20 @@ if [ -n "$mutant" ]; then
   defines+=" -DFV_PROPERTIES_ONLY"
 fi
 read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/formal/specular_stream_fv.sv"
-# The tag delay line's registers (stages 1 .. PipeDepth - 1), one wire per stage after
-# flatten (Yosys turns specular_delay's array into registers). Latency = PipeDepth + 1
+# The tag delay line: one register of Depth * TagBits bits (stages 1 .. PipeDepth - 1,
+# stage j in bits [j*TagBits-1 -: TagBits]; rtl/specular_delay.sv). Latency = PipeDepth + 1
 # (the output buffer) = tag line length + 2.
 yosys -q -p "
   ${read_cmd}
   hierarchy -check -top specular_stream_fv
   proc
   flatten
-  tee -q -o $out/tagline_${tag}.txt select -list w:u_dut.u_tag_line.gen_regs.pipe_q*
+  tee -q -o $out/tagline_${tag}.txt dump w:u_dut.u_tag_line.gen_regs.line_q
 " > /dev/null
-ntag=$(grep -c 'pipe_q\[' "$out/tagline_${tag}.txt" || true)
+tag_width=$(sed -n 's/^ *wire width \([0-9]*\) .*u_tag_line.gen_regs.line_q$/\1/p' "$out/tagline_${tag}.txt" | head -1)
+ntag=$(( ${tag_width:-0} / tag_bits ))
 if [ "$ntag" -lt 1 ]; then
-  echo "formal.sh: no tag line registers u_dut.u_tag_line.gen_regs.pipe_q[*] (RTL changed?)" >&2
+  echo "formal.sh: no tag line register u_dut.u_tag_line.gen_regs.line_q (RTL changed?)" >&2
   exit 1
 fi
 # Probe wire -> state of the flattened core (see the harness header). The mutant runs
@@ -137,9 +138,7 @@ if [ -z "$mutant" ]; then
   connect -nounset -set p_tail  u_dut.u_out_buf.tail_q
   connect -nounset -set p_adv   u_dut.u_out_buf.adv_q
 "
-  for ((i = 0; i < ntag; i++)); do
-    probes+="  connect -nounset -set p_tagline[$(( (i + 1) * tag_bits - 1 )):$(( i * tag_bits ))] u_dut.u_tag_line.gen_regs.pipe_q[$i]"$'\n'
-  done
+  probes+="  connect -nounset -set p_tagline u_dut.u_tag_line.gen_regs.line_q"$'\n'
   # The proof cuts the datapath where it enters the output buffer: the intensity of the
   # last stage becomes a free value every clock ($anyseq), and multiplier 11, ROM 12,
   # multiplier 13 and register 8's data drop out of the model. This over-approximates the

@@ -10,8 +10,9 @@
 #                   [--param NAME=VALUE]... [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ]
 #                   [--strict] [--fresh] [--elaborate-only]
 #
-#   --top         harness: unit (fpga_ooc_unit), stream (fpga_ooc_stream), axil
-#                 (fpga_ooc_axil: the AXI4-Lite core) or all (default)
+#   --top         the core in the harness fpga_ooc (its parameter Top): unit
+#                 (specular_unit), stream (specular_stream), axil (specular_axil: the
+#                 AXI4-Lite core) or all (default)
 #   --device      hx8k (iCE40-HX8K, package ct256, LUT multipliers), up5k (iCE40-UP5K,
 #                 package sg48, synth_ice40 -dsp: SB_MAC16 multipliers) or all (default)
 #   --out         output directory (default build/fpga); one folder per run, TOP_DEVICE/,
@@ -19,7 +20,7 @@
 #   --param       a core parameter by name, e.g. --param CosAddrBits=9
 #                 --param CosRomFile=build/roms9/cos_k_1_2_4_16.hex (repeatable; paths
 #                 relative to the repository root). Interface widths (CBits, AngleBits,
-#                 NBits, LenBits, TagBits, and AddrWidth of the axil harness only) go to
+#                 NBits, LenBits, TagBits, AddrWidth) go to
 #                 the harness, every other name to the core
 #                 module (chparam before elaboration), so any parameter the core has can be
 #                 set and the core's own defaults apply to the rest. Integers and Verilog
@@ -130,9 +131,11 @@ rtl_filelist || exit 1
 sources=("${RTL_SOURCES[@]}")
 incflags=""
 for d in "${RTL_INCDIRS[@]+"${RTL_INCDIRS[@]}"}"; do incflags+=" -I$d"; done
-sources+=(rtl/fpga/fpga_ooc_io.sv rtl/fpga/fpga_ooc_unit.sv rtl/fpga/fpga_ooc_stream.sv rtl/fpga/fpga_ooc_axil.sv)
+sources+=(rtl/fpga/fpga_ooc_io.sv rtl/fpga/fpga_ooc.sv)
 
-harness_of() { case "$1" in unit) echo fpga_ooc_unit ;; stream) echo fpga_ooc_stream ;; axil) echo fpga_ooc_axil ;; esac; }
+harness=fpga_ooc
+# fpga_ooc's parameter Top for each --top (rtl/fpga/fpga_ooc.sv).
+top_id_of()  { case "$1" in unit) echo 0 ;; stream) echo 1 ;; axil) echo 2 ;; esac; }
 core_of()    { case "$1" in unit) echo specular_unit ;; stream) echo specular_stream ;; axil) echo specular_axil ;; esac; }
 
 # Everything a run's result depends on: sources, ROM files (the defaults in roms/ and any
@@ -153,7 +156,7 @@ run_key() {
 failed=0
 run_dirs=()
 for top in "${tops[@]}"; do
-  harness=$(harness_of "$top")
+  top_id=$(top_id_of "$top")
   core=$(core_of "$top")
   for dev in "${devices[@]}"; do
     dir="$out/${top}_${dev}"
@@ -165,6 +168,7 @@ for top in "${tops[@]}"; do
     {
       echo "read_verilog -sv -defer${incflags} ${sources[*]}"
       for a in "${core_chparam[@]+"${core_chparam[@]}"}"; do echo "chparam $a $core"; done
+      echo "chparam -set Top $top_id $harness"
       for a in "${harness_chparam[@]+"${harness_chparam[@]}"}"; do echo "chparam $a $harness"; done
       echo "hierarchy -check -top $harness"
       if [ "$elab_only" = 1 ]; then

@@ -8,7 +8,7 @@
 // unbounded proof. Overview and figures: rtl/formal/README.md.
 //
 // Reduced parameters: the stream core's and TagBits are those of specular_stream_fv.sv
-// (rtl/formal/specular_fv_params.svh; the core is cut out anyway, they only keep
+// (rtl/formal/specular_fv.svh; the core is cut out anyway, they only keep
 // elaboration small), AddrWidth 9 (so that addresses at
 // and above 0x100 exist and must answer SLVERR), FifoDepth 2. The AXI4-Lite side keeps
 // its 32-bit data path.
@@ -43,7 +43,7 @@
 // With FV_PROPERTIES_ONLY defined (the mutant runs) the invariants and probes are left out.
 
 `include "specular_params.svh"
-`include "formal/specular_fv_params.svh"
+`include "formal/specular_fv.svh"
 
 module specular_axil_fv #(
   `SPECULAR_FV_PARAMS,
@@ -144,15 +144,7 @@ module specular_axil_fv #(
   // ---------------------------------------------------------------------------------
   // Assumptions: start in reset; an AXI4-Lite master
   // ---------------------------------------------------------------------------------
-  logic f_started_q = 1'b0;
-  always_ff @(posedge clk_i) begin
-    f_started_q <= 1'b1;
-  end
-  always_comb begin
-    if (!f_started_q) begin
-      assume (!rst_ni);
-    end
-  end
+  `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
 
   logic                 aw_pend_q, w_pend_q, ar_pend_q;
   logic [AddrWidth+2:0] aw_held_q, ar_held_q;

@@ -48,7 +48,7 @@
 //   p_vld   = u_dut.u_control14.vld_q    p_last = u_dut.u_control14.last_q
 //   p_cnt   = u_dut.cnt0                 p_tag0 = u_dut.tag0
 //   p_zero  = u_dut.u_counter5.zero_q
-//   p_tagline[j-1] = u_dut.u_tag_line.gen_regs.pipe_q[j-1], the tag of stage j >= 1
+//   p_tagline = u_dut.u_tag_line.gen_regs.line_q, the tags of stages 1 .. Depth - 1
 //   p_count = u_dut.u_out_buf.count_q    p_adv  = u_dut.u_out_buf.adv_q
 //   p_head  = u_dut.u_out_buf.head_q     p_tail = u_dut.u_out_buf.tail_q
 // With FV_PROPERTIES_ONLY defined (the mutant runs) the invariants and probes are left out.
@@ -56,7 +56,7 @@
 // scripts/formal.sh.
 
 `include "specular_params.svh"
-`include "formal/specular_fv_params.svh"
+`include "formal/specular_fv.svh"
 
 module specular_stream_fv #(
   `SPECULAR_FV_PARAMS,
@@ -125,15 +125,7 @@ module specular_stream_fv #(
   // ---------------------------------------------------------------------------------
   // Assumptions: start in reset; AXI4-Stream source on the span side
   // ---------------------------------------------------------------------------------
-  logic f_started_q = 1'b0;
-  always_ff @(posedge clk_i) begin
-    f_started_q <= 1'b1;
-  end
-  always_comb begin
-    if (!f_started_q) begin
-      assume (!rst_ni);
-    end
-  end
+  `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
 
   logic [SpanBits-1:0] span_bus, span_held_q;
   logic                span_pend_q;

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
-// fpga_ooc_io: the registered IO shared by the out-of-context place-and-route harnesses
-// (fpga_ooc_unit, fpga_ooc_stream; see rtl/fpga/README.md). Not part of the device.
+// fpga_ooc_io: the registered IO of the out-of-context place-and-route harness fpga_ooc
+// (rtl/fpga/README.md). Not part of the device.
 //
 // A core under test has far more input and output bits than an iCE40 package has pins
 // (about 110 to 120 inputs against 39 IO on a UP5K sg48), and timing measured out of

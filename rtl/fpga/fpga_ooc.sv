@@ -1,0 +1,205 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// fpga_ooc: the out-of-context place-and-route harness (registered IO, five pins: clk_i,
+// rst_ni, sdi_i, load_i, xor_o) around one top level of the core, chosen by Top (0 unit,
+// 1 stream, 2 axil). See
+// fpga_ooc_io.sv for the pins and rtl/fpga/README.md for the flow (scripts/fpga.sh). Not
+// part of the device.
+//
+// Input word (InBits bits, shifted in msb first, applied on load_i), from the msb down;
+// the loaded word stays applied until the next load (strobes, valids and readies are
+// levels here):
+//   unit    c_we, c[CBits], dpsi_we, dpsi[AngleBits], psi0_we, psi0[AngleBits], n_we,
+//           n[NBits], len_we, len[LenBits], start
+//   stream  span_valid, c[CBits], psi0[AngleBits], dpsi[AngleBits], n[NBits],
+//           len[LenBits], tag[TagBits], px_ready
+//   axil    awvalid, awaddr[AddrWidth], awprot[3], wvalid, wdata[32], wstrb[4], bready,
+//           arvalid, araddr[AddrWidth], arprot[3], rready, m_axis_px_tready
+// Output parity, over:
+//   unit    intensity_o, valid_o, busy_o
+//   stream  span_ready_o, px_valid_o, px_intensity_o, px_last_o, px_tag_o
+//   axil    awready, wready, bresp, bvalid, arready, rdata, rresp, rvalid,
+//           m_axis_px_tdata, m_axis_px_tvalid, m_axis_px_tlast, m_axis_px_tuser, irq_o
+//
+// Parameters: the interface widths are passed through to the core (TagBits to the stream
+// and the AXI4-Lite core, AddrWidth to the latter only; specular_axil's registers are 32
+// bits wide whatever AngleBits, NBits and LenBits). Every other core parameter (ROM files,
+// CosAddrBits, ...) keeps the core's own default unless scripts/fpga.sh sets it on the
+// core module by name (chparam), so a changed default in rtl/ is never shadowed by a stale
+// copy here.
+
+`include "specular_assert.svh"
+
+module fpga_ooc #(
+  parameter int Top       = 1,   // the core: 0 specular_unit, 1 specular_stream, 2 specular_axil
+  parameter int CBits     = 16,
+  parameter int AngleBits = 32,
+  parameter int NBits     = 10,
+  parameter int LenBits   = 11,
+  parameter int TagBits   = 16,
+  parameter int AddrWidth = 8
+) (
+  input  logic clk_i,
+  input  logic rst_ni,
+  input  logic sdi_i,
+  input  logic load_i,
+  output logic xor_o
+);
+
+  localparam int TopUnit   = 0;
+  localparam int TopStream = 1;
+  localparam int TopAxil   = 2;
+
+  localparam int PxBits  = ((CBits + 7) / 8) * 8;   // AXI4-Stream TDATA: whole bytes
+  localparam int InBits  = (Top == TopUnit)   ? 5 + CBits + 2 * AngleBits + NBits + LenBits + 1
+                         : (Top == TopStream) ? 2 + CBits + 2 * AngleBits + NBits + LenBits + TagBits
+                         :                     2 * AddrWidth + 48;
+  localparam int OutBits = (Top == TopUnit)   ? CBits + 2
+                         : (Top == TopStream) ? 3 + CBits + TagBits
+                         :                     41 + PxBits + 3 + TagBits;
+
+  logic               core_rst_n;
+  logic [InBits-1:0]  core_in;
+  logic [OutBits-1:0] core_out;
+
+  fpga_ooc_io #(
+    .InBits  (InBits),
+    .OutBits (OutBits)
+  ) u_io (
+    .clk_i       (clk_i),
+    .rst_ni      (rst_ni),
+    .sdi_i       (sdi_i),
+    .load_i      (load_i),
+    .xor_o       (xor_o),
+    .core_rst_no (core_rst_n),
+    .core_in_o   (core_in),
+    .core_out_i  (core_out)
+  );
+
+  if (Top == TopUnit) begin : gen_unit
+    logic                 c_we, dpsi_we, psi0_we, n_we, len_we, start;
+    logic [CBits-1:0]     c, intensity;
+    logic [AngleBits-1:0] dpsi, psi0;
+    logic [NBits-1:0]     n;
+    logic [LenBits-1:0]   len;
+    logic                 valid, busy;
+
+    assign {c_we, c, dpsi_we, dpsi, psi0_we, psi0, n_we, n, len_we, len, start} = core_in;
+    assign core_out = {intensity, valid, busy};
+
+    specular_unit #(
+      .CBits     (CBits),
+      .AngleBits (AngleBits),
+      .NBits     (NBits),
+      .LenBits   (LenBits)
+    ) u_core (
+      .clk_i       (clk_i),
+      .rst_ni      (core_rst_n),
+      .c_we_i      (c_we),
+      .c_i         (c),
+      .dpsi_we_i   (dpsi_we),
+      .dpsi_i      (dpsi),
+      .psi0_we_i   (psi0_we),
+      .psi0_i      (psi0),
+      .n_we_i      (n_we),
+      .n_i         (n),
+      .len_we_i    (len_we),
+      .len_i       (len),
+      .start_i     (start),
+      .intensity_o (intensity),
+      .valid_o     (valid),
+      .busy_o      (busy)
+    );
+  end else if (Top == TopStream) begin : gen_stream
+    logic                 span_valid, span_ready, px_valid, px_ready, px_last;
+    logic [CBits-1:0]     c, px_intensity;
+    logic [AngleBits-1:0] psi0, dpsi;
+    logic [NBits-1:0]     n;
+    logic [LenBits-1:0]   len;
+    logic [TagBits-1:0]   tag, px_tag;
+
+    assign {span_valid, c, psi0, dpsi, n, len, tag, px_ready} = core_in;
+    assign core_out = {span_ready, px_valid, px_intensity, px_last, px_tag};
+
+    specular_stream #(
+      .CBits     (CBits),
+      .AngleBits (AngleBits),
+      .NBits     (NBits),
+      .LenBits   (LenBits),
+      .TagBits   (TagBits)
+    ) u_core (
+      .clk_i          (clk_i),
+      .rst_ni         (core_rst_n),
+      .span_valid_i   (span_valid),
+      .span_ready_o   (span_ready),
+      .span_c_i       (c),
+      .span_psi0_i    (psi0),
+      .span_dpsi_i    (dpsi),
+      .span_n_i       (n),
+      .span_len_i     (len),
+      .span_tag_i     (tag),
+      .px_valid_o     (px_valid),
+      .px_ready_i     (px_ready),
+      .px_intensity_o (px_intensity),
+      .px_last_o      (px_last),
+      .px_tag_o       (px_tag)
+    );
+  end else if (Top == TopAxil) begin : gen_axil
+    logic                 awvalid, awready, wvalid, wready, bvalid, bready;
+    logic                 arvalid, arready, rvalid, rready;
+    logic [AddrWidth-1:0] awaddr, araddr;
+    logic [2:0]           awprot, arprot;
+    logic [31:0]          wdata, rdata;
+    logic [3:0]           wstrb;
+    logic [1:0]           bresp, rresp;
+    logic [PxBits-1:0]    px_tdata;
+    logic                 px_tvalid, px_tready, px_tlast, irq;
+    logic [TagBits-1:0]   px_tuser;
+
+    assign {awvalid, awaddr, awprot, wvalid, wdata, wstrb, bready,
+            arvalid, araddr, arprot, rready, px_tready} = core_in;
+    assign core_out = {awready, wready, bresp, bvalid, arready, rdata, rresp, rvalid,
+                       px_tdata, px_tvalid, px_tlast, px_tuser, irq};
+
+    specular_axil #(
+      .CBits     (CBits),
+      .AngleBits (AngleBits),
+      .NBits     (NBits),
+      .LenBits   (LenBits),
+      .TagBits   (TagBits),
+      .AddrWidth (AddrWidth)
+    ) u_core (
+      .clk_i            (clk_i),
+      .rst_ni           (core_rst_n),
+      .s_axil_awaddr    (awaddr),
+      .s_axil_awprot    (awprot),
+      .s_axil_awvalid   (awvalid),
+      .s_axil_awready   (awready),
+      .s_axil_wdata     (wdata),
+      .s_axil_wstrb     (wstrb),
+      .s_axil_wvalid    (wvalid),
+      .s_axil_wready    (wready),
+      .s_axil_bresp     (bresp),
+      .s_axil_bvalid    (bvalid),
+      .s_axil_bready    (bready),
+      .s_axil_araddr    (araddr),
+      .s_axil_arprot    (arprot),
+      .s_axil_arvalid   (arvalid),
+      .s_axil_arready   (arready),
+      .s_axil_rdata     (rdata),
+      .s_axil_rresp     (rresp),
+      .s_axil_rvalid    (rvalid),
+      .s_axil_rready    (rready),
+      .m_axis_px_tdata  (px_tdata),
+      .m_axis_px_tvalid (px_tvalid),
+      .m_axis_px_tready (px_tready),
+      .m_axis_px_tlast  (px_tlast),
+      .m_axis_px_tuser  (px_tuser),
+      .irq_o            (irq)
+    );
+  end else begin : gen_top_check
+    `SPEC_PARAM_ERROR("fpga_ooc: Top must be 0 (unit), 1 (stream) or 2 (axil)")
+  end
+
+endmodule
