@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
-// Harness around one verilated specular_unit: owns the VerilatedContext, the model of the
-// same configuration (golden model), and an on-demand VCD writer. A template over the
+// Harness around one verilated specular_unit: owns the Verilator model (its context and an
+// on-demand VCD writer, verilated_model.hpp) and the golden model of the same configuration. A template over the
 // Verilator class so that the two policy builds (different --prefix) share one harness.
 //
 // Cycle convention: in cycle c the harness drives the inputs, evaluates with clk low and
@@ -10,13 +10,7 @@
 
 #include "device_model.hpp"
 
-// Verilator's own headers are not warning-clean under -Wextra.
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include <verilated.h>
-#include <verilated_vcd_c.h>
-#pragma GCC diagnostic pop
-#include "verilator_runtime.hpp"
+#include "verilated_model.hpp"
 
 #include <cstdint>
 #include <memory>
@@ -44,28 +38,10 @@ template <class V>
 class Harness {
  public:
   Harness(std::string name, device::DeviceModel model)
-      : name_(std::move(name)), model_(std::move(model)), ctx_(std::make_unique<VerilatedContext>()) {
-    ctx_->traceEverOn(true);
-    configure_context(*ctx_);
-    top_ = std::make_unique<V>(ctx_.get(), name_.c_str());
-    digest_slot_ = new_digest(top_->modelName());
+      : name_(std::move(name)), model_(std::move(model)), vm_(name_) {
     clear_inputs();
-    // Settle once with rst_ni high so that the reset below is a falling edge: Verilator takes
-    // the values before its first eval as the previous ones (no edge at time 0), and without
-    // an edge the asynchronous reset would wait for the first clock while the outputs show the
-    // registers' initial values (random under +verilator+rand+reset+2). The RTL's assertions
-    // are off for this one evaluation: before the first reset the state is undefined.
-    top_->rst_ni = 1;
-    top_->clk_i = 0;
-    ctx_->assertOn(false);
-    top_->eval();
-    ctx_->assertOn(true);
+    vm_.power_up();
     reset();
-  }
-  ~Harness() {
-    close_vcd();
-    top_->final();
-    write_coverage(*ctx_, top_->modelName());
   }
   Harness(const Harness&) = delete;
   Harness& operator=(const Harness&) = delete;
@@ -74,19 +50,8 @@ class Harness {
   const std::string& name() const { return name_; }
   uint64_t cycle() const { return cycle_; }
 
-  void open_vcd(const std::string& path) {
-    close_vcd();
-    vcd_ = std::make_unique<VerilatedVcdC>();
-    top_->trace(vcd_.get(), 99);
-    vcd_->open(path.c_str());
-    vcd_base_ = cycle_;  // the file starts at time 0
-  }
-  void close_vcd() {
-    if (vcd_) {
-      vcd_->close();
-      vcd_.reset();
-    }
-  }
+  void open_vcd(const std::string& path) { vm_.open_vcd(path, cycle_); }
+  void close_vcd() { vm_.close_vcd(); }
 
   // Asynchronous reset for two cycles, then one idle cycle.
   void reset() {
@@ -226,24 +191,19 @@ class Harness {
     sampled_busy_ = top_->busy_o;
     sampled_valid_ = top_->valid_o;
     sampled_intensity_ = top_->intensity_o;
-    digest_add(digest_slot_, uint64_t{sampled_intensity_} | uint64_t{sampled_valid_} << 32 | uint64_t{sampled_busy_} << 33);
-    dump(10 * (cycle_ - vcd_base_));
+    digest_add(vm_.digest_slot(), uint64_t{sampled_intensity_} | uint64_t{sampled_valid_} << 32 | uint64_t{sampled_busy_} << 33);
+    vm_.dump(cycle_, false);
     top_->clk_i = 1;
     top_->eval();
-    dump(10 * (cycle_ - vcd_base_) + 5);
+    vm_.dump(cycle_, true);
     ++cycle_;
-  }
-  void dump(uint64_t t) {
-    if (vcd_) vcd_->dump(t);
   }
 
   std::string name_;
   device::DeviceModel model_;
-  std::unique_ptr<VerilatedContext> ctx_;
-  size_t digest_slot_ = 0;
-  std::unique_ptr<V> top_;
-  std::unique_ptr<VerilatedVcdC> vcd_;
-  uint64_t cycle_ = 0, vcd_base_ = 0;
+  VerilatedModel<V> vm_;
+  V* const top_ = vm_.top();
+  uint64_t cycle_ = 0;
   bool sampled_busy_ = false, sampled_valid_ = false;
   uint32_t sampled_intensity_ = 0;
 };

@@ -1,6 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
-// Harness around one verilated specular_stream: owns the VerilatedContext, the golden model
-// of the same configuration, an on-demand VCD writer and a scoreboard.
+// Harness around one verilated specular_stream: owns the Verilator model (its context and
+// an on-demand VCD writer, verilated_model.hpp), the golden model of the same configuration
+// and a scoreboard.
 //
 // Cycle convention (as harness.hpp): in cycle c the harness drives the inputs, evaluates
 // with clk low and samples the outputs, then raises clk. A transfer happens in cycle c when
@@ -19,12 +20,7 @@
 
 #include "device_model.hpp"
 
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wunused-parameter"
-#include <verilated.h>
-#include <verilated_vcd_c.h>
-#pragma GCC diagnostic pop
-#include "verilator_runtime.hpp"
+#include "verilated_model.hpp"
 
 #include <algorithm>
 #include <atomic>
@@ -76,34 +72,11 @@ template <class V>
 class StreamHarness {
  public:
   StreamHarness(std::string name, device::DeviceModel model, int tag_bits)
-      : name_(std::move(name)), model_(std::move(model)), tag_mask_((1ULL << tag_bits) - 1),
-        ctx_(std::make_unique<VerilatedContext>()) {
-    ctx_->traceEverOn(true);
-    configure_context(*ctx_);
-    top_ = std::make_unique<V>(ctx_.get(), name_.c_str());
-    digest_slot_ = new_digest(top_->modelName());
+      : name_(std::move(name)), model_(std::move(model)), tag_mask_((1ULL << tag_bits) - 1), vm_(name_) {
     top_->span_valid_i = 0;
     top_->px_ready_i = 0;
-    // Settle once with rst_ni high so that the reset below is a falling edge: Verilator takes
-    // the values before its first eval as the previous ones (no edge at time 0), and without
-    // an edge the asynchronous reset would wait for the first clock while the outputs show the
-    // registers' initial values (random under +verilator+rand+reset+2). The RTL's assertions
-    // are off for this one evaluation: before the first reset the state is undefined.
-    top_->rst_ni = 1;
-    top_->clk_i = 0;
-    ctx_->assertOn(false);
-    top_->eval();
-    ctx_->assertOn(true);
+    vm_.power_up();
     reset(2);
-  }
-  ~StreamHarness() {
-    // Verilator 5.006 erases the model's scopes from the thread's current context, which is
-    // the last one constructed: make it ours. A harness of another model must not outlive
-    // this one on the same thread (its destructor would meet a deleted context).
-    Verilated::threadContextp(ctx_.get());
-    close_vcd();
-    top_->final();
-    write_coverage(*ctx_, top_->modelName());
   }
   StreamHarness(const StreamHarness&) = delete;
   StreamHarness& operator=(const StreamHarness&) = delete;
@@ -113,19 +86,8 @@ class StreamHarness {
   bool empty() const { return expect_.empty(); }
   size_t owed() const { return expect_.size(); }
 
-  void open_vcd(const std::string& path) {
-    close_vcd();
-    vcd_ = std::make_unique<VerilatedVcdC>();
-    top_->trace(vcd_.get(), 99);
-    vcd_->open(path.c_str());
-    vcd_base_ = cycle_;
-  }
-  void close_vcd() {
-    if (vcd_) {
-      vcd_->close();
-      vcd_.reset();
-    }
-  }
+  void open_vcd(const std::string& path) { vm_.open_vcd(path, cycle_); }
+  void close_vcd() { vm_.close_vcd(); }
 
   // Asynchronous reset held for `cycles` clocks: drops everything in flight. While in
   // reset the core must show no valid pixel.
@@ -167,13 +129,13 @@ class StreamHarness {
     if (!pv && (top_->px_intensity_o != 0 || top_->px_last_o)) error("px_intensity_o/px_last_o not 0 while px_valid_o is low");
     const bool span_fire = offer && top_->span_ready_o;
     // Every output port, every cycle (the tag included while px_valid_o is low).
-    digest_add(digest_slot_, uint64_t{top_->px_intensity_o} | uint64_t{top_->px_tag_o} << 16 | uint64_t{top_->px_last_o} << 48 |
+    digest_add(vm_.digest_slot(), uint64_t{top_->px_intensity_o} | uint64_t{top_->px_tag_o} << 16 | uint64_t{top_->px_last_o} << 48 |
                uint64_t{pv} << 49 | uint64_t{top_->span_ready_o} << 50);
     const bool px_fire = pv && ready;
     if (px_fire) check_pixel(px);
     stalled_ = pv && !ready;
     held_ = px;
-    dump(10 * (cycle_ - vcd_base_));
+    vm_.dump(cycle_, false);
     edge();
     if (span_fire) {
       ++cnt_.spans_accepted;
@@ -228,7 +190,7 @@ class StreamHarness {
       const bool pv = top_->px_valid_o;
       const uint32_t intensity = top_->px_intensity_o, tag = top_->px_tag_o;
       const bool last = top_->px_last_o;
-      digest_add(digest_slot_, uint64_t{intensity} | uint64_t{tag} << 16 | uint64_t{last} << 48 | uint64_t{pv} << 49 |
+      digest_add(vm_.digest_slot(), uint64_t{intensity} | uint64_t{tag} << 16 | uint64_t{last} << 48 | uint64_t{pv} << 49 |
                                    uint64_t{top_->span_ready_o} << 50);
       if (pv) {
         if (got < pixels) {
@@ -247,7 +209,7 @@ class StreamHarness {
     while ((next < n || got < pixels) && cycle_ < limit) {
       sample();
       const bool fire = next < n && top_->span_ready_o;
-      dump(10 * (cycle_ - vcd_base_));
+      vm_.dump(cycle_, false);
       edge();
       if (fire) {
         run.accept_cycle[next] = cycle_ - 1;
@@ -266,7 +228,7 @@ class StreamHarness {
     top_->span_valid_i = 0;
     for (int i = 0; i < 8; ++i) {
       if (sample()) error("pixel after the last span's last pixel");
-      dump(10 * (cycle_ - vcd_base_));
+      vm_.dump(cycle_, false);
       edge();
     }
     if (got > pixels) error(std::to_string(got - pixels) + " pixels more than the spans hold");
@@ -323,23 +285,18 @@ class StreamHarness {
   void edge() {
     top_->clk_i = 1;
     top_->eval();
-    dump(10 * (cycle_ - vcd_base_) + 5);
+    vm_.dump(cycle_, true);
     top_->clk_i = 0;
     ++cycle_;
     ++cnt_.cycles;
-  }
-  void dump(uint64_t t) {
-    if (vcd_) vcd_->dump(t);
   }
 
   std::string name_;
   device::DeviceModel model_;
   uint64_t tag_mask_;
-  std::unique_ptr<VerilatedContext> ctx_;
-  size_t digest_slot_ = 0;
-  std::unique_ptr<V> top_;
-  std::unique_ptr<VerilatedVcdC> vcd_;
-  uint64_t cycle_ = 0, vcd_base_ = 0;
+  VerilatedModel<V> vm_;
+  V* const top_ = vm_.top();
+  uint64_t cycle_ = 0;
   std::deque<device::StreamPixel> expect_;
   StreamCounters cnt_;
   bool stalled_ = false;

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Settings shared by every VerilatedContext the harnesses create, and what the run
-// accumulates across them (issue 10 items 4 and 5):
+// accumulates across them:
 //   - Verilator runtime arguments (+verilator+seed+N, +verilator+rand+reset+2, ...): each
 //     harness owns its own context, so sim_regression keeps the arguments here and every
 //     harness applies them to its context before it constructs the model. With the models

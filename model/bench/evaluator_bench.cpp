@@ -11,7 +11,7 @@
 // coefficient a, the ROMs) is built once outside the loop, as per material in a renderer;
 // `lut256_build` times the table rebuild separately.
 //
-// Whole-span evaluators (model/reference/span_shade.hpp, issue 9) shade the same line from its span
+// Whole-span evaluators (model/reference/span_shade.hpp) shade the same line from its span
 // parameters, with nothing precomputed per pixel:
 //   pow_cos        scalar double std::pow(std::cos(psi0 + i dpsi), n)
 //   phong_scalar   per-pixel Phong in float: lerp N between the line's end normals (at the

@@ -140,7 +140,9 @@ std::vector<std::string> check_source(const fs::path& src, const fs::path& root)
   static const std::regex md_ref(R"(((?:\.\./|[A-Za-z0-9_-]+/)*[A-Za-z0-9_.-]+\.md)(#[A-Za-z0-9_-]+)?)");
   // Assembled from pieces so that this file does not cite what it forbids.
   static const std::string spec = std::string("SP") + "EC";
-  static const std::regex outside(spec + " section|" + spec + " §|\\b[Ii]ssue [0-9]+ it" + "em [0-9]+|\\([Ii]ssue [0-9]+\\)");
+  // Any "issue N" / "issues N": the tracker is not in the clone (an upstream bug is cited by
+  // its URL or as "#N").
+  static const std::regex outside(spec + " section|" + spec + " §|\\b[Ii]ss" + "ues? [0-9]+");
   const auto lines = read_lines(src);
   for (size_t ln = 0; ln < lines.size(); ++ln) {
     const std::string where = fs::relative(src, root).string() + ":" + std::to_string(ln + 1) + ": ";
@@ -255,19 +257,20 @@ int self_test() {
                                            "[BROKEN3](../README.md#nowhere) [BROKEN4](../code.txt.bak)\n";
   std::ofstream(root / "docs" / "tool.cpp") << "// see docs/a.md#second-part-x and ../README.md#top (ok), writes OUT/x.md\n"
                                                "// BROKEN5 docs/gone.md, BROKEN6 docs/a.md#nope\n"
-                                               "// BROKEN7: as SP" "EC sec" "tion 4 says\n";
+                                               "// BROKEN7: as SP" "EC sec" "tion 4 says\n"
+                                               "// BROKEN8: (see iss" "ue 12, items 3 and 4); fine: verilator#123\n";
   std::vector<std::string> found;
   check_tree(root, &found);
   fs::remove_all(root);
   int bad = 0;
   const std::vector<std::string> expected{"docs/missing.md", "#repeat-2",   "../README.md#nowhere", "../code.txt.bak",
-                                         "docs/gone.md",    "docs/a.md#nope", "SP" "EC sec" "tion"};
+                                         "docs/gone.md",    "docs/a.md#nope", "SP" "EC sec" "tion", "iss" "ue 12"};
   if (found.size() != expected.size()) ++bad;
   for (const auto& e : expected)
     if (std::none_of(found.begin(), found.end(), [&](const std::string& f) { return f.find("'" + e + "'") != std::string::npos; }))
       ++bad;
   for (const auto& f : found) std::cout << "found: " << f << "\n";
-  std::cout << (bad ? "self-test FAILED\n" : "self-test passed: exactly the 7 broken links and references found\n");
+  std::cout << (bad ? "self-test FAILED\n" : "self-test passed: exactly the 8 broken links and references found\n");
   return bad ? 1 : 0;
 }
 
