@@ -117,6 +117,13 @@ yosys -q -l "$out/yosys_${tag}.log" -p "
   check -assert
   write_rtlil $out/model_${tag}.il
 " > /dev/null
+# The harness declares the core's ports again (rtl/formal/README.md): a width that differs
+# from the core's fails here instead of being resized in silence.
+if grep -q "Resizing cell port" "$out/yosys_${tag}.log"; then
+  grep "Resizing cell port" "$out/yosys_${tag}.log" | head -5 >&2
+  echo "formal_axil.sh: a port of the harness differs in width from the core's (above)" >&2
+  exit 1
+fi
 
 log="$out/sat_${tag}.log"
 if [ -z "$mutant" ]; then
