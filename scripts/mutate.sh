@@ -3,8 +3,11 @@
 #
 # Mutation campaign of the RTL against `make sim` (sim/README.md#mutation-campaign).
 #
-#   scripts/mutate.sh [--list] [--only NAME[,NAME...]] [--jobs N] [OUT_DIR]
+#   scripts/mutate.sh [--list] [--check] [--only NAME[,NAME...]] [--jobs N] [OUT_DIR]
 #
+# --check builds and runs nothing: it applies every mutant's sed expression to a temporary
+# copy of its file and exits 1 unless each changes exactly one line (the ctest
+# mutate_patterns, so that an RTL edit cannot silently retire a mutant).
 # Copies the repository's files (tracked and untracked, not ignored) into OUT_DIR/src,
 # builds sim_regression there once with only the default configuration
 # (-DSPECULAR_SIM_CONFIGS=default), then for every mutant below: applies its one-line sed
@@ -39,21 +42,41 @@ mutants=(
 )
 
 list=0
+check=0
 only=""
 jobs=$(nproc 2>/dev/null || echo 2)
 while [ $# -gt 0 ]; do
   case "$1" in
     --list) list=1; shift ;;
+    --check) check=1; shift ;;
     --only) only=${2:?"--only needs mutant names"}; shift 2 ;;
     --jobs) jobs=${2:?"--jobs needs a number"}; shift 2 ;;
-    -h|--help) sed -n '4,17p' "${BASH_SOURCE[0]}"; exit 0 ;;
-    -*) echo "mutate.sh: unknown option '$1' (--list, --only NAMES, --jobs N)" >&2; exit 2 ;;
+    -h|--help) sed -n '4,21p' "${BASH_SOURCE[0]}"; exit 0 ;;
+    -*) echo "mutate.sh: unknown option '$1' (--list, --check, --only NAMES, --jobs N)" >&2; exit 2 ;;
     *) break ;;
   esac
 done
 if [ "$list" = 1 ]; then
   for m in "${mutants[@]}"; do IFS='#' read -r name file _ what <<< "$m"; printf '%-24s %-28s %s\n' "$name" "$file" "$what"; done
   exit 0
+fi
+if [ "$check" = 1 ]; then
+  tmp=$(mktemp)
+  trap 'rm -f "$tmp"' EXIT
+  bad=0
+  for m in "${mutants[@]}"; do
+    IFS='#' read -r name file expr _ <<< "$m"
+    cp "$root/rtl/$file" "$tmp"
+    sed -i "$expr" "$tmp"
+    changed=$(diff "$root/rtl/$file" "$tmp" | grep -c '^>' || true)
+    if [ "$changed" != 1 ]; then
+      echo "mutate.sh: mutant '$name' changes $changed lines of rtl/$file (want 1): update its sed expression" >&2
+      bad=1
+    else
+      echo "ok: $name ($file)"
+    fi
+  done
+  exit $bad
 fi
 out=${1:-$root/build/mutate}
 mkdir -p "$out"
