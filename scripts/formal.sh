@@ -59,6 +59,8 @@ rtl_filelist || exit 1
 # more than 26, over the ctest's 600 s). The order means nothing to Yosys otherwise, so
 # this proof reads the filelist's sources in path order and leaves out the AXI wrappers
 # (not part of specular_stream, added after the proof was timed): the model it was timed on.
+# (Those times are of the earlier invariants, which walked the whole pipeline; the local
+# ones of today's harness take about a minute whatever the order, rtl/formal/README.md#run-time.)
 # The package goes first (every module refers to it), the modules follow in path order.
 mapfile -t files < <(printf '%s\n' "${RTL_SOURCES[@]}" | grep '_pkg\.sv$'
                      printf '%s\n' "${RTL_SOURCES[@]}" | grep -v '/specular_axi[ls]\.sv$' | grep -v '_pkg\.sv$' | LC_ALL=C sort)

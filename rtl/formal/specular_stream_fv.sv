@@ -51,6 +51,11 @@
 //   p_tagline = u_dut.u_tag_line.gen_regs.line_q, the tags of stages 1 .. Depth - 1
 //   p_count = u_dut.u_out_buf.count_q    p_adv  = u_dut.u_out_buf.adv_q
 //   p_head  = u_dut.u_out_buf.head_q     p_tail = u_dut.u_out_buf.tail_q
+// The invariants are local: ghost registers shifted with the pipeline carry each stage's
+// FIFO slot and pixel index and running counts of valid and last pixels, so every invariant
+// relates two neighbouring stages (or a stage before and after one edge) and none is a sum
+// or a walk over the whole pipeline; that takes the induction step from 6 to 20 CPU
+// minutes down to about a minute (rtl/formal/README.md#run-time).
 // With FV_PROPERTIES_ONLY defined (the mutant runs) the invariants and probes are left out.
 // Latency (the core's PipeDepth + 1, the output buffer's clock) is a parameter set by
 // scripts/formal.sh.
@@ -295,9 +300,8 @@ module specular_stream_fv #(
   assign tail_last = p_tail[TagBits];
   assign tail_tag  = p_tail[TagBits-1:0];
 
-  // Walk from the output down, buffer head, buffer tail, then stages Depth - 1 .. 0: the
-  // FIFO slot and the pixel index each entry's pixel must have. A last flag moves to the
-  // next slot; pixels of a span are contiguous.
+  // The slot and pixel index the buffer's entries and the last stage must have: the head
+  // entry's pixel is (q_head_q, q_idx_q); a last flag moves to the next slot.
   logic [SlotBits-1:0] t_slot, s_slot;     // slot of the tail, of stage Depth - 1
   logic [IdxBits-1:0]  t_idx, s_idx, t_len;
   assign t_slot = q_head_q + SlotBits'(b_head && head_last);
@@ -306,45 +310,61 @@ module specular_stream_fv #(
   assign s_slot = t_slot + SlotBits'(b_tail && tail_last);
   assign s_idx  = !b_tail ? t_idx : tail_last ? '0 : t_idx + 1'b1;
 
-  logic [Depth*SlotBits-1:0] e_slot;
-  logic [Depth*IdxBits-1:0]  e_idx;
-  logic [SlotBits:0]         n_last;   // spans whose last pixel is in the buffer or stages 1..
-
-  assign e_slot[(Depth-1)*SlotBits +: SlotBits] = s_slot;
-  assign e_idx[(Depth-1)*IdxBits +: IdxBits]    = s_idx;
-  for (genvar j = Depth - 1; j >= 1; j--) begin : gen_walk
-    assign e_slot[(j-1)*SlotBits +: SlotBits] =
-        e_slot[j*SlotBits +: SlotBits] + SlotBits'(p_vld[j] && p_last[j]);
-    assign e_idx[(j-1)*IdxBits +: IdxBits] =
-        !p_vld[j] ? e_idx[j*IdxBits +: IdxBits] :
-        p_last[j] ? '0 : e_idx[j*IdxBits +: IdxBits] + 1'b1;
+  // Ghosts, shifted with the pipeline (every edge with p_adv high, as the core's stages), so
+  // that each invariant below relates two neighbouring stages, or one stage before and after
+  // an edge, and the induction needs no sum over the whole pipeline:
+  //   g_slot, g_idx  per stage j: the FIFO slot and pixel index of stage j's pixel; for an
+  //                  empty stage, those of the next pixel to come below the pixels above it
+  //   g_nv, g_nl     per stage j >= 1: valid pixels, and valid last pixels, in stages 1 .. j
+  localparam int CntBits = SlotBits + 1;
+  logic [Depth-1:0]          lastf;    // stage j holds its span's last pixel
+  logic [Depth*SlotBits-1:0] g_slot_q, n_slot;
+  logic [Depth*IdxBits-1:0]  g_idx_q, n_idx;
+  logic [Depth*CntBits-1:0]  g_nv_q, g_nl_q;   // field 0 unused (0)
+  assign lastf = {p_last, p_zero} & p_vld;
+  // n_*: the slot and index of the pixel after stage j's (stage j's own when it is empty).
+  for (genvar j = 0; j < Depth; j++) begin : gen_next
+    assign n_slot[j*SlotBits +: SlotBits] = g_slot_q[j*SlotBits +: SlotBits] + SlotBits'(lastf[j]);
+    assign n_idx[j*IdxBits +: IdxBits] =
+        !p_vld[j] ? g_idx_q[j*IdxBits +: IdxBits] :
+        lastf[j]  ? '0 : g_idx_q[j*IdxBits +: IdxBits] + 1'b1;
   end
-
-  always_comb begin
-    n_last = (SlotBits + 1)'(b_head && head_last) + (SlotBits + 1)'(b_tail && tail_last);
-    for (int j = 1; j < Depth; j++) begin
-      n_last = n_last + (SlotBits + 1)'(p_vld[j] && p_last[j]);
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      g_slot_q <= '0;
+      g_idx_q  <= '0;
+      g_nv_q   <= '0;
+      g_nl_q   <= '0;
+    end else if (p_adv) begin
+      g_slot_q <= {g_slot_q[(Depth-1)*SlotBits-1:0], n_slot[SlotBits-1:0]};
+      g_idx_q  <= {g_idx_q[(Depth-1)*IdxBits-1:0], n_idx[IdxBits-1:0]};
+      for (int j = 1; j < Depth; j++) begin
+        g_nv_q[j*CntBits +: CntBits] <=
+            (j == 1 ? '0 : g_nv_q[(j-1)*CntBits +: CntBits]) + CntBits'(p_vld[0]);
+        g_nl_q[j*CntBits +: CntBits] <=
+            (j == 1 ? '0 : g_nl_q[(j-1)*CntBits +: CntBits]) + CntBits'(lastf[0]);
+      end
     end
   end
 
+  logic [SlotBits:0] n_last;   // spans whose last pixel is in the buffer or stages 1 ..
+  assign n_last = (SlotBits + 1)'(b_head && head_last) + (SlotBits + 1)'(b_tail && tail_last)
+                  + g_nl_q[(Depth-1)*CntBits +: CntBits];
   logic [OweBits-1:0] owed_exp;
-  always_comb begin
-    owed_exp = OweBits'(p_count) + (p_vld[0] ? OweBits'(p_cnt) + OweBits'(1) : '0);
-    for (int j = 1; j < Depth; j++) begin
-      owed_exp = owed_exp + OweBits'(p_vld[j]);
-    end
-  end
+  assign owed_exp = OweBits'(p_count) + (p_vld[0] ? OweBits'(p_cnt) + OweBits'(1) : '0)
+                    + OweBits'(g_nv_q[(Depth-1)*CntBits +: CntBits]);
 
   for (genvar j = 0; j < Depth; j++) begin : gen_inv
     logic [SlotBits-1:0] slot;
     logic [IdxBits-1:0]  idx, len;
-    assign slot = e_slot[j*SlotBits +: SlotBits];
-    assign idx  = e_idx[j*IdxBits +: IdxBits];
+    assign slot = g_slot_q[j*SlotBits +: SlotBits];
+    assign idx  = g_idx_q[j*IdxBits +: IdxBits];
     assign len  = IdxBits'(q_len_q[slot]);
     always_comb begin
       if (rst_ni && p_vld[j]) begin
         assert (p_tag[j*TagBits +: TagBits] == q_tag_q[slot]);
         assert (idx <= len);
+        assert (lastf[j] == (idx == len));
       end
     end
     if (j >= 1) begin : gen_stage
@@ -352,17 +372,31 @@ module specular_stream_fv #(
         if (rst_ni) begin
           assert (!p_last[j] || p_vld[j]);
           assert (!p_vld[j] || p_last[j] || p_vld[j-1]);
-          if (p_vld[j]) begin
-            assert (p_last[j] == (idx == len));
-          end
+          assert (g_slot_q[(j-1)*SlotBits +: SlotBits] == n_slot[j*SlotBits +: SlotBits]);
+          assert (g_idx_q[(j-1)*IdxBits +: IdxBits] == n_idx[j*IdxBits +: IdxBits]);
+          assert (g_nv_q[j*CntBits +: CntBits] ==
+                  (j == 1 ? '0 : g_nv_q[(j-1)*CntBits +: CntBits]) + CntBits'(p_vld[j]));
+          assert (g_nl_q[j*CntBits +: CntBits] ==
+                  (j == 1 ? '0 : g_nl_q[(j-1)*CntBits +: CntBits]) + CntBits'(lastf[j]));
         end
       end
     end else begin : gen_reg8
       always_comb begin
-        if (rst_ni && p_vld[0]) begin
-          assert (IdxBits'(p_cnt) == len - idx);
+        if (rst_ni) begin
+          if (p_vld[0]) begin
+            assert (IdxBits'(p_cnt) == len - idx);
+            assert (slot + 1'b1 == q_tail);
+          end else begin
+            assert (slot == q_tail && idx == '0);
+          end
         end
       end
+    end
+  end
+  always_comb begin
+    if (rst_ni) begin
+      assert (g_slot_q[(Depth-1)*SlotBits +: SlotBits] == s_slot);
+      assert (g_idx_q[(Depth-1)*IdxBits +: IdxBits] == s_idx);
     end
   end
 
