@@ -99,6 +99,38 @@ def fmt_err(v, pct=True):
     return f"{100 * v:.3g} %" if pct else f"{v:.3g}"
 
 
+def bench_args(out_path, min_time=0.05, repetitions=3, filt=None):
+    """evaluator_bench's command-line options: JSON to out_path, median of the repetitions."""
+    args = ["--benchmark_format=json", f"--benchmark_out={out_path}", "--benchmark_out_format=json",
+            f"--benchmark_min_time={min_time}", f"--benchmark_repetitions={repetitions}",
+            "--benchmark_report_aggregates_only=true"]
+    return args + ([f"--benchmark_filter={filt}"] if filt else [])
+
+
+def parse_bench(data):
+    """evaluator_bench's Google Benchmark JSON to (per_pixel, per_span): per_pixel[evaluator][n]
+    is ns per pixel for the benchmarks named "<evaluator>/<n>", per_span[name] ns per span for
+    the scanline-setup benchmarks named without "/<n>" (items are spans there). Medians only.
+    Raises ValueError on a name of any other form, naming it, so that a new benchmark name
+    fails loudly instead of breaking the report later (tests/report/check_bench_parse.py)."""
+    per_pixel, per_span = {}, {}
+    for b in data.get("benchmarks", []):
+        if b.get("aggregate_name") != "median":
+            continue
+        name = b.get("run_name", "")
+        ips = b.get("items_per_second")
+        if not ips or ips <= 0:
+            raise ValueError(f"benchmark '{name}' has no positive items_per_second")
+        parts = name.split("/")
+        if len(parts) == 1 and parts[0]:
+            per_span[name] = 1e9 / ips
+        elif len(parts) == 2 and parts[0] and parts[1].isdigit():
+            per_pixel.setdefault(parts[0], {})[int(parts[1])] = 1e9 / ips
+        else:
+            raise ValueError(f"benchmark name '{name}' is neither '<evaluator>/<n>' nor a plain setup name")
+    return per_pixel, per_span
+
+
 def run(cmd, log, timeout=600, cwd=ROOT):
     t0 = time.time()
     with open(log, "w") as lf:
@@ -117,6 +149,7 @@ class Report:
         self.logs = os.path.join(self.out, "logs")
         os.makedirs(self.logs, exist_ok=True)
         self.missing = []  # what could not be measured, quoted in the report
+        self.setup_ns = {}  # evaluator_bench's setup benchmarks, ns per span (parse_bench)
         self.timings = {}
 
     def exe(self, name):
@@ -130,21 +163,18 @@ class Report:
             self.missing.append("evaluator_bench was not built: no timings")
             return {}
         path = os.path.join(self.out, "bench.json")
-        rc, secs = run([exe, "--benchmark_format=json", f"--benchmark_out={path}", "--benchmark_out_format=json",
-                        "--benchmark_min_time=0.05", "--benchmark_repetitions=3",
-                        "--benchmark_report_aggregates_only=true"], os.path.join(self.logs, "bench.log"))
+        rc, secs = run([exe] + bench_args(path), os.path.join(self.logs, "bench.log"))
         self.timings["evaluator_bench"] = secs
         if rc != 0:
             self.missing.append(f"evaluator_bench failed (exit {rc}), see logs/bench.log")
             return {}
         data = json.load(open(path))
         self.bench_context = data.get("context", {})
-        ns = {}
-        for b in data["benchmarks"]:
-            if b.get("aggregate_name") != "median":
-                continue
-            name, n = b["run_name"].split("/")
-            ns.setdefault(name, {})[int(n)] = 1e9 / b["items_per_second"]
+        try:
+            ns, self.setup_ns = parse_bench(data)
+        except ValueError as e:
+            self.missing.append(f"evaluator_bench's JSON could not be read: {e}")
+            return {}
         return ns
 
     def model_data(self):
@@ -605,6 +635,16 @@ class Report:
                 w(f"| {n} | " + " | ".join(f"{c:.3f}" if c else "n/a" for c in bcells) + f" | {ps[n] / ds[n]:.1f} | {pc[n] / ds[n]:.1f} |")
             w("")
         w("![speed against error](plane.png)\n")
+        if self.setup_ns:
+            ref = self.setup_ns.get("setup_scalar")
+            w("The scanline setup, per span, in the same `evaluator_bench` run (4096 synthetic spans, "
+              "docs/scanline_setup.md#batched-setup; `setup_scalar` is the scalar double reference):\n")
+            w("| setup | ns per span | x setup_scalar |")
+            w("|---|---|---|")
+            for name in sorted(self.setup_ns):
+                t = self.setup_ns[name]
+                w(f"| {name} | {t:.2f} | " + (f"{ref / t:.2f}" if ref else "n/a") + " |")
+            w("")
         w("![error against n](error_vs_n.png)\n")
         w("![error against angle](error_vs_angle.png)\n")
 
