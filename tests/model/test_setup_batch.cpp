@@ -21,6 +21,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -386,4 +387,27 @@ TEST_CASE("the device fed by the batched setup stays within its budget end to en
   CHECK(over == 0);
   WARN("device fed by the batch: " << pixels << " epicenter pixels, worst (|error| - 1 LSB) / reference = "
                                    << worst_rel);
+}
+
+TEST_CASE("register quantization is std::round of x * 2^frac, clamped", "[setup_batch]") {
+  // device::quantize_* round inline (the scalar setup's cost); the reference here is
+  // std::round(std::ldexp(x, frac)) clamped to the register, on ties, near-ties and random values.
+  const device::Format f;
+  const double c_top = std::ldexp(1.0, f.c_bits) - 1.0, a_half = std::ldexp(1.0, f.angle_bits - 1);
+  auto want_c = [&](double x) { return std::clamp(std::round(std::ldexp(x, f.c_frac)), 0.0, c_top); };
+  auto want_a = [&](double x) { return std::clamp(std::round(std::ldexp(x, f.angle_frac)), -a_half, a_half - 1.0); };
+  std::vector<double> codes{0.5, 1.5, 2.5, 0.49999999999999994, 65534.5, 65535.5, 1e15 + 0.5, 0x1p51 + 0.5, 0x1p52 + 1.0};
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-3e9, 3e9);
+  for (int i = 0; i < 1000; ++i) codes.push_back(u(rng));
+  for (double q : codes)
+    for (double s : {1.0, -1.0}) {
+      const double xc = s * std::ldexp(q, -f.c_frac), xa = s * std::ldexp(q, -f.angle_frac);
+      INFO("code " << s * q);
+      CHECK(static_cast<double>(device::quantize_c(xc, f)) == want_c(xc));
+      CHECK(static_cast<double>(device::quantize_angle(xa, f)) == want_a(xa));
+    }
+  bool sat = false;
+  CHECK(device::quantize_c(std::numeric_limits<double>::quiet_NaN(), f, &sat) == 0u);
+  CHECK(sat);
 }
