@@ -490,7 +490,7 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
 // lambda = atan2(0, cos t1): C = scale |cos t1|^n, psi0 = 0 (or -pi where cos t1 < 0),
 // dpsi = 0, found here from one dot product. Vectors farther than kNearUnitBound from unit
 // length, and everything setup_block would leave to the scalar setup, are special here too.
-inline void flat_block(const double* __restrict n1x, const double* __restrict n1y, const double* __restrict n1z,
+inline void flat_block_double(const double* __restrict n1x, const double* __restrict n1y, const double* __restrict n1z,
                        const double* __restrict h1x, const double* __restrict h1y, const double* __restrict h1z,
                        const double* __restrict nexp, const double* __restrict scale, const int32_t* __restrict len,
                        int count, const KernelFormat& kf, const BlockOut& o) {
@@ -536,6 +536,88 @@ inline void flat_block(const double* __restrict n1x, const double* __restrict n1
     ofl[i] = take ? c_flag + pflag : 0.0;
     osp[i] = 1.0 - ordinary;
   }
+}
+
+
+// Flat spans with C in float (docs/scanline_setup.md#single-precision-short-spans): psi0 and
+// dpsi need no precision here (0 or -pi, and 0), and C = scale |cos t1|^n takes the float
+// log2 with s = 1 - cos^2 t1 from double, as single_tail does. A C within the float error of
+// the saturation boundary, or a scale above 2^20, is left to the scalar setup.
+inline void flat_block_single(const double* __restrict n1x, const double* __restrict n1y,
+                              const double* __restrict n1z, const double* __restrict h1x,
+                              const double* __restrict h1y, const double* __restrict h1z,
+                              const double* __restrict nexp, const double* __restrict scale,
+                              const int32_t* __restrict len, int count, const KernelFormat& kf, const BlockOut& o) {
+  constexpr double kPi = 3.14159265358979323846;
+  const double max_len = kf.max_len;
+  const double pi_code = round_away(-kPi * kf.angle_scale);
+  const double psi_neg = pi_code < kf.angle_lo ? kf.angle_lo : pi_code;
+  const double psi_neg_flag = pi_code < kf.angle_lo ? 2.0 : 0.0;
+  const float c_scale = static_cast<float>(kf.c_scale), c_top = static_cast<float>(kf.c_top);
+  alignas(64) double b_ord[kBlock], b_cos[kBlock], b_s[kBlock];
+  alignas(64) float fc[kBlock], fsp[kBlock];
+#pragma GCC ivdep
+  for (int i = 0; i < count; ++i) {
+    const double nn = nexp[i], sc = scale[i], l = static_cast<double>(len[i]);
+    const double d_n1 = n1x[i] * n1x[i] + n1y[i] * n1y[i] + n1z[i] * n1z[i];
+    const double d_h1 = h1x[i] * h1x[i] + h1y[i] * h1y[i] + h1z[i] * h1z[i];
+    const double e1 = d_n1 - 1.0, e3 = d_h1 - 1.0;
+    double ordinary = std::fabs(e1) <= kNearUnitBound ? 1.0 : 0.0;  // NaN: not ordinary
+    ordinary = std::fabs(e3) <= kNearUnitBound ? ordinary : 0.0;
+    ordinary = nn >= 1.0 ? ordinary : 0.0;
+    ordinary = nn <= kMaxN ? ordinary : 0.0;
+    ordinary = l >= 0.0 ? ordinary : 0.0;
+    ordinary = l <= max_len ? ordinary : 0.0;
+    ordinary = sc >= 0.0 ? ordinary : 0.0;
+    ordinary = sc <= 0x1p20 ? ordinary : 0.0;  // also false for NaN
+    const double r1 = 1.0 + e1 * (-0.5 + 0.375 * e1), rh = 1.0 + e3 * (-0.5 + 0.375 * e3);
+    const double cos_t1 = (n1x[i] * h1x[i] + n1y[i] * h1y[i] + n1z[i] * h1z[i]) * (r1 * rh);
+    b_ord[i] = ordinary;
+    b_cos[i] = ordinary > 0.0 ? cos_t1 : 1.0;
+    b_s[i] = ordinary > 0.0 ? (1.0 - cos_t1) * (1.0 + cos_t1) : 0.0;
+  }
+#pragma GCC ivdep
+  for (int i = 0; i < count; ++i) {
+    const float cs = static_cast<float>(b_cos[i]), sf = static_cast<float>(b_s[i]);
+    const float nn = static_cast<float>(nexp[i]), sc = static_cast<float>(b_ord[i] > 0.0 ? scale[i] : 0.0);
+    const float a2 = cs * cs;
+    const float x = 0.5f * nn * log2_f(a2 > 0x1p-100f ? a2 : 0x1p-100f, sf);
+    const float v = sc * exp2_f(x > -100.0f ? x : -100.0f) * c_scale;
+    fc[i] = round_away_f(v);
+    fsp[i] = std::fabs(v - (c_top + 0.5f)) <= 1e-4f * v + 1.0f ? 1.0f : 0.0f;
+  }
+  double* __restrict oc = o.c;
+  double* __restrict op = o.psi0;
+  double* __restrict od = o.dpsi;
+  double* __restrict on = o.n;
+  double* __restrict ofl = o.flags;
+  double* __restrict osp = o.special;
+  const double c_top_d = kf.c_top;
+#pragma GCC ivdep
+  for (int i = 0; i < count; ++i) {
+    const double cq = static_cast<double>(fc[i]), cos_t1 = b_cos[i];
+    const double c_flag = cq <= c_top_d ? 0.0 : 1.0;
+    const double ordinary = static_cast<double>(fsp[i]) > 0.0 ? 0.0 : b_ord[i];
+    const bool take = ordinary > 0.0;
+    const double pq = cos_t1 < 0.0 ? psi_neg : 0.0, pflag = cos_t1 < 0.0 ? psi_neg_flag : 0.0;
+    oc[i] = take ? (cq <= c_top_d ? cq : c_top_d) : 0.0;
+    op[i] = take ? pq : 0.0;
+    od[i] = 0.0;
+    on[i] = take ? round_away(nexp[i]) : 0.0;
+    ofl[i] = take ? c_flag + pflag : 0.0;
+    osp[i] = 1.0 - ordinary;
+  }
+}
+
+// The flat kernel the driver calls: C in float where the format allows it.
+inline void flat_block(const double* __restrict n1x, const double* __restrict n1y, const double* __restrict n1z,
+                       const double* __restrict h1x, const double* __restrict h1y, const double* __restrict h1z,
+                       const double* __restrict nexp, const double* __restrict scale, const int32_t* __restrict len,
+                       int count, const KernelFormat& kf, const BlockOut& o) {
+  if (kf.single)
+    flat_block_single(n1x, n1y, n1z, h1x, h1y, h1z, nexp, scale, len, count, kf, o);
+  else
+    flat_block_double(n1x, n1y, n1z, h1x, h1y, h1z, nexp, scale, len, count, kf, o);
 }
 
 }  // namespace specular::host::SETUP_KERNEL_NS
