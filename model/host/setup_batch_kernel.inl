@@ -179,24 +179,30 @@ inline float round_away_f(float x) {
 
 // The single-precision tail of short spans: stages 2 to 4 of setup_block in float from the
 // double geometry of stage 1 (converted on load), rounded to codes (as floats: exact
-// integers). Inputs, per span: |c| = |G| sin gamma, |G| cos gamma, t = |c| (N1.u), cos t1,
+// integers). Inputs, per span: |c|^2 = |G|^2 sin^2 gamma, |G| cos gamma, t = |c| (N1.u), cos t1,
 // tc = N1.c (or 1 - cos^2 t1 in the noise case), the noise flag (w = |c|, or 1 where gamma
 // is below the noise floor), n, scale, l. `special` = 1 where C lies within the float error
 // of the saturation boundary: the scalar setup decides those, so the flag is the scalar's.
 // Spans the caller does not take from here may hold anything (their results are ignored).
-inline void single_tail(const double* __restrict b_sinr, const double* __restrict b_cosr,
+inline void single_tail(const double* __restrict b_c2, const double* __restrict b_cosr,
                         const double* __restrict b_t, const double* __restrict b_cos, const double* __restrict b_tc,
                         const double* __restrict b_noise, const double* __restrict nexp,
                         const double* __restrict scale, const int32_t* __restrict len, int count, const KernelFormat& kf,
-                        float* __restrict oc, float* __restrict op, float* __restrict od, float* __restrict on,
-                        float* __restrict ofl, float* __restrict osp) {
+                        const BlockOut& o) {
+  double* __restrict oc = o.c;
+  double* __restrict op = o.psi0;
+  double* __restrict od = o.dpsi;
+  double* __restrict on = o.n;
+  double* __restrict ofl = o.flags;
+  double* __restrict osp = o.special;
   const float c_scale = static_cast<float>(kf.c_scale), c_top = static_cast<float>(kf.c_top);
   const float angle_scale = static_cast<float>(kf.angle_scale);
 #pragma GCC ivdep
   for (int i = 0; i < count; ++i) {
     const float nz = static_cast<float>(b_noise[i]);
     const bool noise = nz != 0.0f;
-    const float sinr = static_cast<float>(b_sinr[i]), cosr = static_cast<float>(b_cosr[i]);
+    // |c| from |c|^2 here (a float square root: half the cost of stage 1's double one).
+    const float sinr = std::sqrt(static_cast<float>(b_c2[i])), cosr = static_cast<float>(b_cosr[i]);
     const float t = static_cast<float>(b_t[i]), cs = static_cast<float>(b_cos[i]), tc = static_cast<float>(b_tc[i]);
     const float nn = static_cast<float>(nexp[i]), sc = static_cast<float>(scale[i]);
     const float l = static_cast<float>(len[i]);
@@ -224,18 +230,19 @@ inline void single_tail(const double* __restrict b_sinr, const double* __restric
     float cq = round_away_f(v);
     const float c_flag = cq <= c_top ? 0.0f : 1.0f;
     cq = cq <= c_top ? cq : c_top;
-    osp[i] = std::fabs(v - (c_top + 0.5f)) <= 1e-4f * v + 1.0f ? 1.0f : 0.0f;
-    oc[i] = cq;
-    op[i] = round_away_f(-lambda * angle_scale) + 0.0f;
-    od[i] = l > 0.0f ? round_away_f(gamma * angle_scale * rl) : 0.0f;
-    on[i] = round_away_f(nn);
-    ofl[i] = c_flag;
+    // Written as doubles (the driver's block format), converted here in the float loop.
+    osp[i] = static_cast<double>(std::fabs(v - (c_top + 0.5f)) <= 1e-4f * v + 1.0f ? 1.0f : 0.0f);
+    oc[i] = static_cast<double>(cq);
+    op[i] = static_cast<double>(round_away_f(-lambda * angle_scale) + 0.0f);
+    od[i] = static_cast<double>(l > 0.0f ? round_away_f(gamma * angle_scale * rl) : 0.0f);
+    on[i] = static_cast<double>(round_away_f(nn));
+    ofl[i] = static_cast<double>(c_flag);
   }
 }
 
 // Stages 2 to 4 of setup_block in double (the spans the single-precision tail does not take),
 // from stage 1's arrays.
-inline void double_tail(const double* __restrict b_ord, const double* __restrict b_sinr,
+inline void double_tail(const double* __restrict b_ord, const double* __restrict b_c2,
                         const double* __restrict b_cosr, const double* __restrict b_t, const double* __restrict b_cos,
                         const double* __restrict b_noise, const double* __restrict nexp,
                         const double* __restrict scale, const int32_t* __restrict len, int count, const KernelFormat& kf,
@@ -255,7 +262,7 @@ inline void double_tail(const double* __restrict b_ord, const double* __restrict
 #pragma GCC ivdep
   for (int i = 0; i < count; ++i) {
     const bool noise = b_noise[i] != 0.0;
-    const double sinr = b_sinr[i], cosr = b_cosr[i], t = b_t[i], cos_t1 = b_cos[i];
+    const double sinr = std::sqrt(b_c2[i]), cosr = b_cosr[i], t = b_t[i], cos_t1 = b_cos[i];
     const double w = noise ? 1.0 : sinr;
     const double dg = atan2_divisor(sinr, cosr), dl = atan2_divisor(t, w * cos_t1), w2 = w * w;
     const double lden = len[i] > 0 ? static_cast<double>(len[i]) : 1.0;
@@ -322,7 +329,7 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
   // The work is split into three loops over the block (geometry; the two atan2 and A^2; C and
   // the codes) with block-local arrays between them. One loop body would be one long
   // dependency chain; shorter bodies let the CPU overlap many spans (loop fission).
-  alignas(64) double b_ord[kBlock], b_sinr[kBlock], b_cosr[kBlock], b_t[kBlock], b_cos[kBlock];
+  alignas(64) double b_ord[kBlock], b_c2[kBlock], b_cosr[kBlock], b_t[kBlock], b_cos[kBlock];
   alignas(64) double b_noise[kBlock], b_tc[kBlock], b_k2[kBlock], b_wide[kBlock];
   // Stage 1, the geometry. Vectors from a rasterizer are unit to rounding, and then
   // 1/sqrt(d) = 1 - e/2 + 3e^2/8 with e = d - 1 (the next term, 5e^3/16, is below 3e-19 for
@@ -403,7 +410,7 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
     // 3. t = (c x H1).N1 = |c| (N1.u) for the unit u of docs/scanline_setup.md step 3.
     const double ux = cy * hz - cz * hy, uy = cz * hx - cx * hz, uz = cx * hy - cy * hx;
     b_ord[i] = ordinary;
-    b_sinr[i] = std::sqrt(c2);  // |G| sin gamma
+    b_c2[i] = c2;  // |c|^2 = |G|^2 sin^2 gamma (the tails take the square root)
     b_cosr[i] = cosr;
     b_cos[i] = ax * hx + ay * hy + az * hz;  // cos t1
     b_t[i] = noise ? 0.0 : ux * ax + uy * ay + uz * az;
@@ -441,20 +448,10 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
   }
   const int n_single = static_cast<int>(singles);
   if (n_single == 0) {
-    double_tail(b_ord, b_sinr, b_cosr, b_t, b_cos, b_noise, nexp, scale, len, count, kf, o);
+    double_tail(b_ord, b_c2, b_cosr, b_t, b_cos, b_noise, nexp, scale, len, count, kf, o);
     return;
   }
-  alignas(64) float fc[kBlock], fp[kBlock], fd[kBlock], fn[kBlock], ffl[kBlock], fsp[kBlock];
-  single_tail(b_sinr, b_cosr, b_t, b_cos, b_tc, b_noise, nexp, scale, len, count, kf, fc, fp, fd, fn, ffl, fsp);
-#pragma GCC ivdep
-  for (int i = 0; i < count; ++i) {
-    o.c[i] = static_cast<double>(fc[i]);
-    o.psi0[i] = static_cast<double>(fp[i]);
-    o.dpsi[i] = static_cast<double>(fd[i]);
-    o.n[i] = static_cast<double>(fn[i]);
-    o.flags[i] = static_cast<double>(ffl[i]);
-    o.special[i] = static_cast<double>(fsp[i]);
-  }
+  single_tail(b_c2, b_cosr, b_t, b_cos, b_tc, b_noise, nexp, scale, len, count, kf, o);
   if (n_single == count) return;
   // The others through the double tail, gathered, and their results scattered.
   alignas(64) int idx[kBlock];
@@ -467,7 +464,7 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
   alignas(64) int32_t gl[kBlock];
   for (int j = 0; j < ng; ++j) {
     const int i = idx[j];
-    g[0][j] = b_ord[i], g[1][j] = b_sinr[i], g[2][j] = b_cosr[i], g[3][j] = b_t[i], g[4][j] = b_cos[i];
+    g[0][j] = b_ord[i], g[1][j] = b_c2[i], g[2][j] = b_cosr[i], g[3][j] = b_t[i], g[4][j] = b_cos[i];
     g[5][j] = b_noise[i], g[6][j] = nexp[i], g[7][j] = scale[i], gl[j] = len[i];
   }
   alignas(64) double tc[kBlock], tp[kBlock], td[kBlock], tn[kBlock], tfl[kBlock], tsp[kBlock];
