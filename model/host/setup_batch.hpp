@@ -4,8 +4,9 @@
 // The scalar double `scanline_setup` (model/setup/scanline_setup.hpp) is the reference
 // and the documentation of the mathematics (docs/scanline_setup.md). This is the same
 // computation reorganized for throughput: structure-of-arrays in, register codes out, no
-// per-span allocation or branch, vectorized over spans (AVX2 when the CPU has it, portable
-// code otherwise; docs/scanline_setup.md#batched-setup says how and how accurate).
+// per-span allocation or branch, vectorized over spans (AVX-512 or AVX2 when the CPU has it,
+// portable code otherwise; single precision after the geometry for spans of l <= 255;
+// docs/scanline_setup.md#batched-setup says how and how accurate).
 //
 // Contract: for every span, the status equals scanline_setup's, and the pixels
 // C cos^n(psi_i) computed from these registers agree with those from
