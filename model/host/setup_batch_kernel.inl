@@ -178,14 +178,14 @@ inline float round_away_f(float x) {
 }
 
 // The single-precision tail of short spans: stages 2 to 4 of setup_block in float from the
-// double geometry of stage 1 (converted on load), rounded to codes (as floats: exact
-// integers). Inputs, per span: |c|^2 = |G|^2 sin^2 gamma, |G| cos gamma, t = |c| (N1.u), cos t1,
-// tc = N1.c (or 1 - cos^2 t1 in the noise case), the noise flag (w = |c|, or 1 where gamma
-// is below the noise floor), n, scale, l. `special` = 1 where C lies within the float error
+// double geometry of stage 1 (converted on load), rounded to codes in float and written to
+// the block's (double) output. Inputs, per span: |c|^2 = |G|^2 sin^2 gamma, |G| cos gamma,
+// t = |c| (N1.u), cos t1, sin^2 t1, the noise flag (w = |c|, or 1 where gamma is below the
+// noise floor), n, scale, l. `special` = 1 where C lies within the float error
 // of the saturation boundary: the scalar setup decides those, so the flag is the scalar's.
 // Spans the caller does not take from here may hold anything (their results are ignored).
 inline void single_tail(const double* __restrict b_c2, const double* __restrict b_cosr,
-                        const double* __restrict b_t, const double* __restrict b_cos, const double* __restrict b_tc,
+                        const double* __restrict b_t, const double* __restrict b_cos, const double* __restrict b_sin2,
                         const double* __restrict b_noise, const double* __restrict nexp,
                         const double* __restrict scale, const int32_t* __restrict len, int count, const KernelFormat& kf,
                         const BlockOut& o) {
@@ -203,7 +203,7 @@ inline void single_tail(const double* __restrict b_c2, const double* __restrict 
     const bool noise = nz != 0.0f;
     // |c| from |c|^2 here (a float square root: half the cost of stage 1's double one).
     const float sinr = std::sqrt(static_cast<float>(b_c2[i])), cosr = static_cast<float>(b_cosr[i]);
-    const float t = static_cast<float>(b_t[i]), cs = static_cast<float>(b_cos[i]), tc = static_cast<float>(b_tc[i]);
+    const float t = static_cast<float>(b_t[i]), cs = static_cast<float>(b_cos[i]), sin2 = static_cast<float>(b_sin2[i]);
     const float nn = static_cast<float>(nexp[i]), sc = static_cast<float>(scale[i]);
     const float l = static_cast<float>(len[i]);
     const float w = noise ? 1.0f : sinr;
@@ -213,7 +213,7 @@ inline void single_tail(const double* __restrict b_c2, const double* __restrict 
     const float mg = as < ac ? ac : as, lden = l > 0.0f ? l : 1.0f;
     const float wm = w * mg, r3 = 1.0f / (wm * lden);
     const float rs = r3 * mg * lden, rg = r3 * w * lden, rl = r3 * wm;
-    const float qu = t * rs, qc = tc * rs;  // N1.u, N1.c / |c|
+    const float qu = t * rs;  // N1.u
     // lambda = atan2(t, w cos t1) = atan2(N1.u, cos t1). Below 2^-40 for both, A < 2^-40 and
     // C = 0: the clamp only keeps the reciprocal finite.
     const float aq = std::fabs(qu), acs = std::fabs(cs);
@@ -221,8 +221,9 @@ inline void single_tail(const double* __restrict b_c2, const double* __restrict 
     ml = ml > 0x1p-40f ? ml : 0x1p-40f;
     const float gamma = noise ? 0.0f : atan2_f(sinr, cosr, rg);
     const float lambda = atan2_f(qu, cs, 1.0f / ml);
-    // A^2 = cos^2 t1 + (N1.u)^2 = 1 - s with s = (N1.c)^2 / |c|^2.
-    const float s = noise ? tc : qc * qc;
+    // A^2 = cos^2 t1 + (N1.u)^2 = 1 - s with s = sin^2 t1 - (N1.u)^2: sin^2 t1 from double,
+    // and (N1.u)^2 <= sin^2 t1 so that its float error is small where s is (A near 1).
+    const float s = sin2 - qu * qu;
     const float a2 = cs * cs + qu * qu;
     const float lg = log2_f(a2 > 0x1p-100f ? a2 : 0x1p-100f, s);
     const float x = 0.5f * nn * lg;
@@ -330,7 +331,7 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
   // the codes) with block-local arrays between them. One loop body would be one long
   // dependency chain; shorter bodies let the CPU overlap many spans (loop fission).
   alignas(64) double b_ord[kBlock], b_c2[kBlock], b_cosr[kBlock], b_t[kBlock], b_cos[kBlock];
-  alignas(64) double b_noise[kBlock], b_tc[kBlock], b_k2[kBlock], b_wide[kBlock];
+  alignas(64) double b_noise[kBlock], b_sin2[kBlock], b_k2[kBlock], b_wide[kBlock];
   // Stage 1, the geometry. Vectors from a rasterizer are unit to rounding, and then
   // 1/sqrt(d) = 1 - e/2 + 3e^2/8 with e = d - 1 (the next term, 5e^3/16, is below 3e-19 for
   // |e| <= 2^-20) replaces three square roots and a division. kNearUnit = true assumes that
@@ -415,14 +416,12 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
     b_cos[i] = ax * hx + ay * hy + az * hz;  // cos t1
     b_t[i] = noise ? 0.0 : ux * ax + uy * ay + uz * az;
     b_noise[i] = noise ? 1.0 : 0.0;
-    // For the single-precision tail: N1.c (the component of N1 off the plane of H1 and u,
-    // times |c|), or 1 - cos^2 t1 where gamma is noise; and |G|^2 for its range check.
+    // For the single-precision tail: sin^2 t1 = 1 - cos^2 t1 (accurate near t1 = 0), |G|^2
+    // for its range check, and whether |c|^2 is a normal float (or gamma below the noise floor).
     const double ct = b_cos[i];
-    b_tc[i] = noise ? (1.0 - ct) * (1.0 + ct) : cx * ax + cy * ay + cz * az;
+    b_sin2[i] = (1.0 - ct) * (1.0 + ct);
     b_k2[i] = k2;
-    // gamma of at least 2^-25 (or below the noise floor): below, N1.c and t carry a relative
-    // error of 1e-16 / sin gamma, and 1 - s and A^2 would disagree in float.
-    b_wide[i] = noise || c2 >= 0x1p-50 * k2 ? 1.0 : 0.0;
+    b_wide[i] = noise || c2 >= 0x1p-120 ? 1.0 : 0.0;
   }
   return far != 0;
   };
@@ -451,7 +450,7 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
     double_tail(b_ord, b_c2, b_cosr, b_t, b_cos, b_noise, nexp, scale, len, count, kf, o);
     return;
   }
-  single_tail(b_c2, b_cosr, b_t, b_cos, b_tc, b_noise, nexp, scale, len, count, kf, o);
+  single_tail(b_c2, b_cosr, b_t, b_cos, b_sin2, b_noise, nexp, scale, len, count, kf, o);
   if (n_single == count) return;
   // The others through the double tail, gathered, and their results scattered.
   alignas(64) int idx[kBlock];
