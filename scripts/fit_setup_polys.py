@@ -18,22 +18,26 @@ from numpy.polynomial import chebyshev as C
 from numpy.polynomial import polynomial as P
 
 
-def fit(f, lo, hi, target, max_deg=40):
-    """Smallest-degree power series q(u), u = (2x - lo - hi)/(hi - lo), with max |q(u) - f(x)| < target."""
-    grid = np.linspace(lo, hi, 20001)
-    ug = (2 * grid - lo - hi) / (hi - lo)
-    ref = np.array([f(x) for x in grid])
+def fit(f, lo, hi, target, ctype="double", max_deg=40):
+    """Smallest-degree power series q(u), u = (2x - lo - hi)/(hi - lo), with max |q(u) - f(x)| < target.
+
+    ctype "float": the coefficients rounded to float and Horner's rule run in float32, as the
+    single-precision kernel evaluates them."""
+    dt = np.float32 if ctype == "float" else np.float64
+    ug = np.linspace(-1.0, 1.0, 20001).astype(dt)
+    # The reference at the argument the (rounded) u stands for.
+    ref = np.array([f((float(u) * (hi - lo) + lo + hi) / 2) for u in ug])
     for deg in range(4, max_deg + 1):
         k = np.arange(deg + 1)
         nodes = np.cos(np.pi * (k + 0.5) / (deg + 1))
         xs = (nodes * (hi - lo) + lo + hi) / 2
         cheb = C.chebfit(nodes, np.array([f(x) for x in xs]), deg)
-        mono = C.cheb2poly(cheb)
-        # Horner in double, as the C++ kernel does it.
+        mono = C.cheb2poly(cheb).astype(dt).astype(np.float64)
+        # Horner in the kernel's precision.
         val = np.zeros_like(ug)
         for c in mono[::-1]:
-            val = val * ug + c
-        err = np.max(np.abs(val - ref))
+            val = (val * ug + dt(c)).astype(dt)
+        err = np.max(np.abs(val.astype(np.float64) - ref))
         if err < target:
             return mono, err, deg
     raise SystemExit(f"no degree <= {max_deg} reaches {target}")
@@ -54,8 +58,9 @@ def log2_ratio(m):  # log2(m) / (m - 1) on [sqrt(1/2), sqrt(2)], 1/ln 2 at m = 1
 
 
 FITS = [
-    # name, function, interval, target absolute error, what it is for
-    # The accuracy each needs is worked out in docs/scanline_setup.md#batched-setup.
+    # name, function, interval, target absolute error, what it is for, coefficient type
+    # The accuracy each needs is worked out in docs/scanline_setup.md#batched-setup and
+    # docs/scanline_setup.md#single-precision-short-spans.
     ("kAtanRatio", atan_ratio, 0.0, 1.0, 5e-12,
      "gamma: atan(x) = x * q(2 x^2 - 1) for x in [0, 1]"),
     ("kAtanRatioLow", atan_ratio, 0.0, 1.0, 1e-9,
@@ -64,6 +69,14 @@ FITS = [
      "log2(m) = (m - 1) * q((2 m - sqrt(1/2) - sqrt(2)) / (sqrt(2) - sqrt(1/2))) for m in [sqrt(1/2), sqrt(2)]"),
     ("kExp2", lambda f: 2.0 ** f, -0.5, 0.5, 1e-10,
      "2^f = q(2 f) for f in [-1/2, 1/2]"),
+    # The single-precision kernel of short spans: float coefficients, float evaluation.
+    ("kAtanRatioF", atan_ratio, 0.0, 1.0, 1.5e-7,
+     "float: atan(x) = x * q(2 x^2 - 1) for x in [0, 1]", "float"),
+    ("kLog2RatioF", log2_ratio, math.sqrt(0.5), math.sqrt(2.0), 2e-7,
+     "float: log2(m) = (m - 1) * q((2 m - sqrt(1/2) - sqrt(2)) / (sqrt(2) - sqrt(1/2))) for m in [sqrt(1/2), sqrt(2)]",
+     "float"),
+    ("kExp2F", lambda f: 2.0 ** f, -0.5, 0.5, 1.5e-7,
+     "float: 2^f = q(2 f) for f in [-1/2, 1/2]", "float"),
 ]
 
 
@@ -80,12 +93,14 @@ def main():
         "namespace specular::host::poly {",
         "",
     ]
-    for name, f, lo, hi, target, what in FITS:
-        mono, err, deg = fit(f, lo, hi, target)
+    for name, f, lo, hi, target, what, *ctype in FITS:
+        ctype = ctype[0] if ctype else "double"
+        mono, err, deg = fit(f, lo, hi, target, ctype)
         lines.append(f"// {what}; degree {deg}, max error {err:.2e}.")
-        lines.append(f"inline constexpr double {name}[{deg + 1}] = {{")
+        lines.append(f"inline constexpr {ctype} {name}[{deg + 1}] = {{")
         for c in mono[::-1]:
-            lines.append(f"    {float(c).hex()},  // {c:.17g}")
+            suffix = "f" if ctype == "float" else ""
+            lines.append(f"    {float(c).hex()}{suffix},  // {c:.9g}" if ctype == "float" else f"    {float(c).hex()},  // {c:.17g}")
         lines.append("};")
         lines.append("")
     lines.append("}  // namespace specular::host::poly")

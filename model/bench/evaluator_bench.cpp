@@ -24,8 +24,11 @@
 //
 // The scanline setup (model/host/setup_batch.hpp), where items are SPANS, each from vectors to
 // register codes (quantization included), over 4096 synthetic spans (host::random_spans):
+//   scanline_setup scanline_setup alone per span (no quantization): what setup_scalar costs
+//                  without the rounding to codes
 //   setup_scalar   scanline_setup + load_registers per span (double, the reference)
-//   setup_batch    the batched setup, AVX2 when available
+//   setup_batch    the batched setup, the best instruction set of the CPU (AVX-512, else AVX2)
+//   setup_batch_avx2  the same held to AVX2
 //   setup_batch_sse2  the same forced to its x86-64 baseline build
 //
 // Benchmark names are "<evaluator>/<n>"; items_per_second counts pixels (spans for the
@@ -204,6 +207,17 @@ int main(int argc, char** argv) {
   // The setup: 4096 spans, items are spans.
   static host::SpanBatch spans;
   for (const ScanlineInput& in : host::random_spans(4096, 20261202)) spans.push_back(in);
+  benchmark::RegisterBenchmark("scanline_setup", [](benchmark::State& st) {
+    double sink = 0.0;
+    for (auto _ : st) {
+      for (size_t i = 0; i < spans.size(); ++i) {
+        const ScanlineSetup s = scanline_setup(spans.input(i));
+        sink += s.C + s.psi0 + s.dpsi;
+      }
+      benchmark::DoNotOptimize(sink);
+    }
+    st.SetItemsProcessed(st.iterations() * static_cast<int64_t>(spans.size()));
+  });
   benchmark::RegisterBenchmark("setup_scalar", [f](benchmark::State& st) {
     host::RegisterBatch out;
     for (auto _ : st) {

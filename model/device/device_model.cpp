@@ -4,6 +4,7 @@
 #include "device_model.hpp"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -24,6 +25,21 @@ void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("device::Format/ROM: " + what);
 }
 
+// 2^e for -1022 <= e <= 1023, exactly, without a library call (x * 2^e is then what
+// std::ldexp(x, e) gives: one correctly rounded multiplication).
+double pow2(int e) { return std::bit_cast<double>(static_cast<uint64_t>(1023 + e) << 52); }
+
+// std::round(x) (half away from zero) inline: below 2^51 by the 1.5 * 2^52 addition, which
+// rounds to nearest exactly; a - r is exact, and a tie taken to even is moved away from zero.
+// From 2^51 on a double is a multiple of 1/2 or an integer: std::round itself.
+double round_half_away(double x) {
+  constexpr double kMagic = 6755399441055744.0;  // 1.5 * 2^52
+  const double a = std::fabs(x);
+  if (!(a < 0x1p51)) return std::round(x);
+  const double r = (a + kMagic) - kMagic;
+  return std::copysign(a - r >= 0.5 ? r + 1.0 : r, x);
+}
+
 // x * 2^frac rounded to nearest (ties away from zero) and clamped to [lo, hi]; NaN gives 0.
 // *saturated (when given) says whether it was clamped or NaN.
 double quantize(double x, int frac, double lo, double hi, bool* saturated) {
@@ -32,7 +48,7 @@ double quantize(double x, int frac, double lo, double hi, bool* saturated) {
   if (std::isnan(x)) {
     sat = true;
   } else {
-    q = std::round(std::ldexp(x, frac));
+    q = round_half_away(x * pow2(frac));
     if (q < lo) { q = lo; sat = true; }
     if (q > hi) { q = hi; sat = true; }
   }
@@ -43,11 +59,11 @@ double quantize(double x, int frac, double lo, double hi, bool* saturated) {
 }  // namespace
 
 uint32_t quantize_c(double c, const Format& f, bool* saturated) {
-  return static_cast<uint32_t>(quantize(c, f.c_frac, 0.0, std::ldexp(1.0, f.c_bits) - 1.0, saturated));
+  return static_cast<uint32_t>(quantize(c, f.c_frac, 0.0, pow2(f.c_bits) - 1.0, saturated));
 }
 
 int64_t quantize_angle(double rad, const Format& f, bool* saturated) {
-  const double half = std::ldexp(1.0, f.angle_bits - 1);
+  const double half = pow2(f.angle_bits - 1);
   return static_cast<int64_t>(quantize(rad, f.angle_frac, -half, half - 1.0, saturated));
 }
 
@@ -60,8 +76,8 @@ RegisterLoad load_registers(const ScanlineSetup& s, double n, int l, const Forma
   out.reg.psi0 = quantize_angle(s.psi0, f, &psi0_sat);
   out.reg.dpsi = quantize_angle(s.dpsi, f, &dpsi_sat);
   out.angle_saturated = psi0_sat || dpsi_sat;
-  const double n_max = std::ldexp(1.0, f.n_bits) - 1.0;
-  out.reg.n = std::isfinite(n) ? static_cast<uint32_t>(std::clamp(std::round(n), 0.0, n_max)) : 0u;
+  const double n_max = pow2(f.n_bits) - 1.0;
+  out.reg.n = std::isfinite(n) ? static_cast<uint32_t>(std::clamp(round_half_away(n), 0.0, n_max)) : 0u;
   out.reg.len = static_cast<uint32_t>(std::clamp(l, 0, f.max_len()));
   return out;
 }

@@ -4,8 +4,9 @@
 // The scalar double `scanline_setup` (model/setup/scanline_setup.hpp) is the reference
 // and the documentation of the mathematics (docs/scanline_setup.md). This is the same
 // computation reorganized for throughput: structure-of-arrays in, register codes out, no
-// per-span allocation or branch, vectorized over spans (AVX2 when the CPU has it, portable
-// code otherwise; docs/scanline_setup.md#batched-setup says how and how accurate).
+// per-span allocation or branch, vectorized over spans (AVX-512 or AVX2 when the CPU has it,
+// portable code otherwise; single precision after the geometry for spans of l <= 255;
+// docs/scanline_setup.md#batched-setup says how and how accurate).
 //
 // Contract: for every span, the status equals scanline_setup's, and the pixels
 // C cos^n(psi_i) computed from these registers agree with those from
@@ -90,8 +91,9 @@ std::vector<ScanlineInput> random_spans_of_length(size_t count, uint64_t seed, i
 // `ref` is the reference (the scalar setup's registers); the test of the batch is
 //   |P_i - Pref_i| <= rel_tol * Pref_i + 1 LSB   where |psi_i(ref)| <= x_e(n) (the epicenter),
 //   |P_i - Pref_i| <= rel_tol * C_ref + 1 LSB    elsewhere,
-// with 1 LSB = 2^-c_frac. Pixels where both values are below 1 LSB pass without being
-// evaluated (the difference is below 1 LSB), which keeps long spans cheap.
+// with 1 LSB = 2^-c_frac. On spans longer than 15 pixels, pixels where both values are below
+// 1 LSB pass without being evaluated (the difference is below 1 LSB), which keeps long spans
+// cheap; shorter spans have every pixel evaluated.
 struct PixelAgreement {
   double worst = 0.0;              // max |P - Pref| / allowance over the pixels: <= 1 passes
   double max_rel_epicenter = 0.0;  // max |P - Pref| / Pref over epicenter pixels with Pref >= 2^-10

@@ -17,7 +17,15 @@ struct KernelFormat {
   double c_scale, c_top;                   // 2^c_frac, 2^c_bits - 1
   double angle_scale, angle_lo, angle_hi;  // 2^angle_frac, signed range of angle_bits
   double max_len;                          // counter maximum
+  // The single-precision path of short spans (docs/scanline_setup.md#single-precision-short-spans)
+  // serves this format: every angle code of |angle| <= 4 rad fits the register and an int32,
+  // and C codes up to 2^21 are exact in float.
+  bool single;
 };
+
+// Spans of l <= kSingleMaxLen go through the single-precision kernel; the bound follows from
+// the float error of gamma and lambda (docs/scanline_setup.md#single-precision-short-spans).
+inline constexpr int kSingleMaxLen = 255;
 
 // Internal linkage: each variant's translation unit gets its own copy, compiled with its own
 // ISA flags (a shared inline copy could be the AVX2 one).
@@ -29,7 +37,9 @@ KernelFormat kernel_format(const device::Format& f) {
           std::ldexp(1.0, f.angle_frac),
           -std::ldexp(1.0, f.angle_bits - 1),
           std::ldexp(1.0, f.angle_bits - 1) - 1.0,
-          static_cast<double>(std::min(f.max_len(), kMaxLen))};
+          static_cast<double>(std::min(f.max_len(), kMaxLen)),
+          f.angle_bits <= 32 && 4.0 * std::ldexp(1.0, f.angle_frac) < std::ldexp(1.0, f.angle_bits - 1) - 1.0 &&
+              f.c_bits <= 21};
 }
 
 }  // namespace

@@ -56,10 +56,18 @@ class Data:
     def scenes(self, names=None):
         return [x for x in self.sb["scenes"] if names is None or x["scene"] in names]
 
-    def speedups(self, x):
-        """device x phong_sleef as defined, AVX2 throughout, AVX-512 throughout."""
-        m = x.get("isa_matched", {})
-        return [x["speedup_vs_phong_sleef"]["device"], m["avx2"]["speedup"], m["avx512"]["speedup"]]
+    def best(self, x, key="speedup"):
+        """device x phong_sleef (or a method's ns per pixel) with both at the best instruction set."""
+        return x["best_isa"][key]
+
+    def break_even_row(self, key):
+        """The longest l of the break-even sweep: the device's or phong_sleef's ns per pixel at the
+        best instruction set (the row's names carry it; the baseline ones have none)."""
+        isa = self.sb["best_isa"]
+        row = self.sb["break_even"][-1]
+        if key == "device":
+            return row["device" if isa == "baseline" else "device_" + isa]
+        return row["phong_sleef_avx512" if isa == "avx512" else "phong_sleef"]
 
     # place and route
     def pnr(self, core, part):
@@ -119,10 +127,7 @@ F = "rtl/fpga/README.md"
 FIGURES = [
     # Headline
     ranged(R, r"device method with its scanline setup is (\S+)-(\S+) x as fast", "headline: device x phong_sleef",
-           lambda d, x: d.speedups(x)[0]),
-    ranged(R, r"but only (\S+)-(\S+) x when the setup, too, is held to AVX2", "headline: AVX2 throughout",
-           lambda d, x: d.speedups(x)[1]),
-    ranged(R, r"\((\S+)-(\S+) x with both on AVX-512\)", "headline: AVX-512 throughout", lambda d, x: d.speedups(x)[2]),
+           lambda d, x: d.best(x)),
     # The device
     (R, r"\((\S+) cycles per pixel at `l = 2047`, measured by `make sim`\)",
      [("register interface cycles per pixel at l = 2047", lambda d: d.cfg("default")["cycles_per_pixel_long_lines"])]),
@@ -176,65 +181,56 @@ FIGURES = [
       ("UP5K logic cells available", lambda d: d.pnr("specular_stream", "UP5K")["lcs_available"]),
       ("block RAMs", lambda d: max(r["brams"] for r in d.fpga["runs"] if r["core"] in ("specular_unit", "specular_stream")))]),
     # System speed
-    (R, r"2-vCPU AMD EPYC shared with other jobs, `--reps (\d+) --min-time (\S+)`\)",
+    (R, r"2-vCPU AMD EPYC without AVX-512 shared with other jobs, `--reps (\d+) --min-time (\S+)`\)",
      [("scene_bench rounds", lambda d: int(re.search(r"median of (\d+) ", d.sb["timer"]).group(1))),
       ("scene_bench min time (s)", lambda d: float(re.search(r">= (\S+) s", d.sb["timer"]).group(1)))]),
 ]
 
 
 def goals_figures():
-    """The goals and causes bullets under the System speed table."""
+    """The goals and causes bullets under the System speed table (both methods at the best
+    instruction set; the scenes the prose names are checked to be the ones that miss)."""
     out = []
-    out.append((R, r"met as defined \(lowest (\w+) (\S+) x, (\w+) (\S+) x, (\w+) (\S+) x\)", "NAMED3"))
-    out.append((R, r"missed at one instruction set on (\w+) \(AVX2 (\S+) x, AVX-512 (\S+) x\), (\w+) \((\S+) x, (\S+) x\) "
-                   r"and (\w+) \((\S+) x, (\S+) x\)", "MISSED"))
-    out.append((R, r"met in every configuration \((\S+)-(\S+) x\)",
-                [("5 x goal scenes, every configuration (lowest)",
-                  lambda d: min(min(d.speedups(x)) for x in d.scenes(LONG))),
-                 ("5 x goal scenes, every configuration (highest)",
-                  lambda d: max(max(d.speedups(x)) for x in d.scenes(LONG)))]))
-    out.append((R, r"the setup costs (\S+) \(dense_mesh, (\S+) % flat spans\) to (\S+) ns per span here with AVX-512",
-                [("setup ns per span, dense_mesh", lambda d: d.scene("dense_mesh")["device_setup_ns_per_span"]),
-                 ("dense_mesh flat spans (%)",
-                  lambda d: 100 * d.scene("dense_mesh")["spans_l0"] / d.scene("dense_mesh")["spans"]),
-                 ("setup ns per span (highest)", lambda d: max(x["device_setup_ns_per_span"] for x in d.scenes()))]))
-    out.append((R, r"per-pixel SLEEF Phong costs (\S+)-(\S+) ns per pixel with AVX2 \((\S+)-(\S+) with AVX-512\)",
-                [("phong_sleef ns per pixel AVX2 (lowest)",
-                  lambda d: min(x["isa_matched"]["avx2"]["phong_sleef"] for x in d.scenes())),
-                 ("phong_sleef ns per pixel AVX2 (highest)",
-                  lambda d: max(x["isa_matched"]["avx2"]["phong_sleef"] for x in d.scenes())),
-                 ("phong_sleef ns per pixel AVX-512 (lowest)",
-                  lambda d: min(x["isa_matched"]["avx512"]["phong_sleef"] for x in d.scenes())),
-                 ("phong_sleef ns per pixel AVX-512 (highest)",
-                  lambda d: max(x["isa_matched"]["avx512"]["phong_sleef"] for x in d.scenes()))]))
+    lowest = lambda d: min(d.sb["scenes"], key=d.best)["scene"]  # noqa: E731
+    mid = lambda d: [x for x in d.sb["scenes"] if 2.5 <= span_pixels(x) and x["scene"] != "spheres"]  # noqa: E731
+    feed = lambda name: (lambda d: d.scene(name)["setup_over_core_rate"])  # noqa: E731
+    out.append((R, r"on every scene:\s+missed on (\w+) \((\S+) x; bunny (\S+) x, spheres (\S+) x\)",
+                [("the scene of the lowest device x phong_sleef", lowest),
+                 ("lowest device x phong_sleef", lambda d: min(d.best(x) for x in d.sb["scenes"])),
+                 ("bunny: device x phong_sleef", lambda d: d.best(d.scene("bunny"))),
+                 ("spheres: device x phong_sleef", lambda d: d.best(d.scene("spheres")))]))
+    out.append((R, r"2\.5 or more pixels per span: missed on spheres \((\S+) x\), met on the others\s+\((\S+)-(\S+) x\)",
+                [("spheres: device x phong_sleef (2.5 or more pixels per span)",
+                  lambda d: d.best(d.scene("spheres")) if span_pixels(d.scene("spheres")) >= 2.5 else None),
+                 ("2.5 or more pixels per span, others: device x phong_sleef (lowest)",
+                  lambda d: min(d.best(x) for x in mid(d))),
+                 ("2.5 or more pixels per span, others: device x phong_sleef (highest)",
+                  lambda d: max(d.best(x) for x in mid(d)))]))
+    out.append(ranged(R, r"\(grazing_plane, wide_glint\):\s+met \((\S+)-(\S+) x\)", "8 or more pixels per span: device x",
+                      lambda d, x: d.best(x), LONG))
+    out.append((R, r"the span rate of the core at (\S+) MHz: missed on\s+bunny \((\S+) x\), dense_mesh \((\S+) x\) and "
+                   r"spheres \((\S+) x\); met on the other scenes",
+                [("scene_bench Fmax (docs/fpga_figures.json at the run)", lambda d: d.sb["fmax_mhz"]),
+                 ("bunny: setup rate / core rate", feed("bunny")),
+                 ("dense_mesh: setup rate / core rate", feed("dense_mesh")),
+                 ("spheres: setup rate / core rate", feed("spheres"))]))
+    out.append(ranged(R, r"on bunny, dense_mesh and spheres the setup costs (\S+)-(\S+) ns per span",
+                      "short-span scenes: setup ns per span", lambda d, x: x["device_setup_ns_per_span"], SHORT))
+    out.append((R, r"the least on\s+dense_mesh, (\S+) % of its spans flat",
+                [("dense_mesh flat spans (%)",
+                  lambda d: 100 * d.scene("dense_mesh")["spans_l0"] / d.scene("dense_mesh")["spans"])]))
+    out.append(ranged(R, r"per-pixel SLEEF Phong (\S+)-(\S+) ns per pixel\.", "short-span scenes: phong_sleef ns per pixel",
+                      lambda d, x: d.best(x, "phong_sleef"), SHORT))
     out.append(ranged(R, r"With (\S+)-(\S+) pixels per span the setup is paid", "short-span scenes: pixels per span",
                       lambda d, x: span_pixels(x), SHORT))
-    be = lambda d: d.sb["break_even"][-1]  # noqa: E731
-    out.append((R, r"the device is at or below phong_sleef from l = (\d+) \((\d+) pixels per span\); at one instruction "
-                   r"set from l = (\d+) \(AVX2 and AVX-512\)\. At l = (\d+): (\S+) against (\S+) ns per pixel",
-                [("break-even l", lambda d: d.sb["break_even_l"]),
-                 ("break-even pixels per span", lambda d: d.sb["break_even_l"] + 1),
-                 ("break-even l at one instruction set",
-                  lambda d: d.sb["break_even_l_isa"]["avx2"] if d.sb["break_even_l_isa"]["avx2"] ==
-                  d.sb["break_even_l_isa"]["avx512"] else math.nan),
-                 ("break-even sweep: longest l", lambda d: be(d)["l"]),
-                 ("break-even sweep: device ns per pixel at the longest l", lambda d: be(d)["device"]),
-                 ("break-even sweep: phong_sleef ns per pixel at the longest l", lambda d: be(d)["phong_sleef"])]))
-    out.append((R, r"the batched setup does (\S+)-(\S+) M spans/s on one host core",
-                [("setup M spans/s (lowest)", lambda d: min(x["setup_mspans_per_s"] for x in d.scenes())),
-                 ("setup M spans/s (highest)", lambda d: max(x["setup_mspans_per_s"] for x in d.scenes()))]))
-    feed = lambda name, key: (lambda d: d.scene(name)[key])  # noqa: E731
-    out.append((R, r"In this run, at (\S+) MHz, that is (\S+) M spans/s on dense_mesh \((\S+) host cores to feed one "
-                   r"core\), (\S+) on bunny \((\S+)\), (\S+) on spheres \((\S+)\), under (\S+) on the other scenes",
-                [("scene_bench Fmax (docs/fpga_figures.json at the run)", lambda d: d.sb["fmax_mhz"]),
-                 ("dense_mesh core M spans/s", feed("dense_mesh", "core_mspans_per_s_at_fmax")),
-                 ("dense_mesh host cores to feed", feed("dense_mesh", "host_cores_to_feed")),
-                 ("bunny core M spans/s", feed("bunny", "core_mspans_per_s_at_fmax")),
-                 ("bunny host cores to feed", feed("bunny", "host_cores_to_feed")),
-                 ("spheres core M spans/s", feed("spheres", "core_mspans_per_s_at_fmax")),
-                 ("spheres host cores to feed", feed("spheres", "host_cores_to_feed")),
-                 ("<host cores to feed, other scenes",
-                  lambda d: max(x["host_cores_to_feed"] for x in d.sb["scenes"] if x["scene"] not in SHORT))]))
+    out.append((R, r"device is at or below phong_sleef from l = (\d+) \((\d+) pixels per span\)\. At l = (\d+): (\S+) "
+                   r"against\s+(\S+) ns per pixel",
+                [("break-even l at the best instruction set", lambda d: d.sb["break_even_l_isa"][d.sb["best_isa"]]),
+                 ("break-even pixels per span", lambda d: d.sb["break_even_l_isa"][d.sb["best_isa"]] + 1),
+                 ("break-even sweep: longest l", lambda d: d.sb["break_even"][-1]["l"]),
+                 ("break-even sweep: device ns per pixel at the longest l", lambda d: d.break_even_row("device")),
+                 ("break-even sweep: phong_sleef ns per pixel at the longest l",
+                  lambda d: d.break_even_row("phong_sleef"))]))
     return out
 
 
@@ -246,13 +242,15 @@ TABLES = [
      {"spans": lambda d, k: d.scene(k)["spans"],
       "pixels per span": lambda d, k: span_pixels(d.scene(k)),
       "H": lambda d, k: lights(d.scene(k)),
-      "device": lambda d, k: d.scene(k)["ns_per_pixel"]["device"],
-      "phong_sleef": lambda d, k: d.scene(k)["ns_per_pixel"]["phong_sleef"],
+      "device": lambda d, k: d.best(d.scene(k), "device"),
+      "phong_sleef": lambda d, k: d.best(d.scene(k), "phong_sleef"),
       "phong_scalar": lambda d, k: d.scene(k)["ns_per_pixel"]["phong_scalar"],
       "pow_cos": lambda d, k: d.scene(k)["ns_per_pixel"]["pow_cos"],
-      "device x": lambda d, k: d.speedups(d.scene(k))[0],
-      "AVX2 throughout x": lambda d, k: d.speedups(d.scene(k))[1],
-      "AVX-512 throughout x": lambda d, k: d.speedups(d.scene(k))[2]}),
+      "x": lambda d, k: d.best(d.scene(k)),
+      "as defined x": lambda d, k: d.scene(k)["speedup_vs_phong_sleef"]["device"],
+      "setup ns/span": lambda d, k: d.scene(k)["device_setup_ns_per_span"],
+      "host cores": lambda d, k: d.scene(k)["host_cores_to_feed"],
+      "feed": lambda d, k: d.scene(k)["setup_over_core_rate"]}),
 ]
 
 
@@ -303,6 +301,8 @@ NOT_MEASURED = [
     r"\(256 Kbit, 64 block RAMs\)",              # the patent ROM's size, from its format
     r"2-vCPU",                                   # the machine
     r">= 1\.0 x",                                # goal
+    r">= 1\.5 x",                                # goal
+    r"2\.5 or more pixels per span",             # goal
     r">= 5 x on every\s+scene with 8 or more pixels per span",  # goal
     r"4 banks x 4096 x 16 bits = 256 Kbit, 64 block RAMs",
     r"8 banks x\s+256 x 31 bits",                # the configuration
@@ -391,8 +391,6 @@ def check(root, specular=None, listing=False):
             errors.append(f"{doc}: figure '{what}': its text /{pattern}/ is found {len(ms)} times, not once")
             continue
         m = ms[0]
-        if names == "NAMED3" or names == "MISSED":
-            names = named_figures(names, m)
         if len(names) != len(m.groups()):
             errors.append(f"{doc}: /{pattern}/ has {len(m.groups())} groups for {len(names)} figures")
             continue
@@ -430,33 +428,6 @@ def check(root, specular=None, listing=False):
             errors.append(f"{doc}:{line}: '{m.group(0)}' is in a measured section but is no figure of "
                           f"tests/docs/check_readme_figures.py (nobody measured it?): ...{ctx}...")
     return errors
-
-
-def named_figures(kind, m):
-    """Figures whose scene names are part of the text. NAMED3: the lowest device x phong_sleef
-    (the first name must be the scene with the lowest), then two more scenes; MISSED: the scenes
-    below 1.0 x at one instruction set (each name must be one), with both ratios."""
-    def exists(s):
-        return lambda d: s if any(x["scene"] == s for x in d.sb["scenes"]) else None
-
-    names = []
-    if kind == "NAMED3":
-        for i in (1, 3, 5):
-            scene = m.group(i)
-            if i == 1:
-                names.append(("lowest device x phong_sleef: the scene",
-                              lambda d: min(d.sb["scenes"], key=lambda x: d.speedups(x)[0])["scene"]))
-            else:
-                names.append((f"scene {scene}", exists(scene)))
-            names.append((f"{scene}: device x phong_sleef", lambda d, s=scene: d.speedups(d.scene(s))[0]))
-    else:
-        for i in (1, 4, 7):
-            scene = m.group(i)
-            names.append((f"scene {scene} below 1.0 x at one instruction set",
-                          lambda d, s=scene: s if min(d.speedups(d.scene(s))[1:]) < 1 else None))
-            names.append((f"{scene}: AVX2 throughout x", lambda d, s=scene: d.speedups(d.scene(s))[1]))
-            names.append((f"{scene}: AVX-512 throughout x", lambda d, s=scene: d.speedups(d.scene(s))[2]))
-    return names
 
 
 def check_table(doc, text, header, label, keys, columns, key_cols, compare, covered, errors, row_filter=None):
@@ -551,7 +522,7 @@ def self_test(root, specular):
              "0 protocol errors, every latency", "bit-exact mismatches, every configuration"),
         ]
         # The scene timing case: replace bunny's device ns/px with a different value.
-        bunny = d.scene("bunny")["ns_per_pixel"]["device"]
+        bunny = d.best(d.scene("bunny"), "device")
         cases[3] = ("a scene timing tampered", R, f"| {bunny:.2f} |", f"| {bunny + 1:.2f} |", "device of bunny")
         if specular:
             cases.append(("the float-model figure tampered", R, "measured 1.09%", "measured 1.01%",

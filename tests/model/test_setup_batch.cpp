@@ -21,6 +21,7 @@
 
 #include <glm/geometric.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <limits>
@@ -35,12 +36,36 @@ using specular::host::SpanBatch;
 
 namespace {
 
-// The baseline build, AVX2, and whatever `automatic` picks (AVX-512 where the CPU has it).
+// The baseline build, AVX2, and whatever `automatic` picks (AVX-512 where the CPU has it;
+// where it has not, automatic is the AVX2 path again and is not run twice).
 std::vector<SimdPath> paths() {
   std::vector<SimdPath> p{SimdPath::scalar};
   if (cpu_has_avx2()) p.push_back(SimdPath::avx2);
-  p.push_back(SimdPath::automatic);
+  if (cpu_has_avx512() || !cpu_has_avx2()) p.push_back(SimdPath::automatic);
   return p;
+}
+
+// Span lengths: as host::random_spans draws them, or as the repository's scenes have them
+// (docs/system.md: half the spans one pixel, most of the rest under 16; drawn here as 50 % l = 0,
+// 45 % 1..15, 3 % 16..63, 1.5 % 64..255, 0.5 % 256..2047), or uniform over 0..2047 (every l,
+// ~120 spans each in the default run): both sides of the single-precision bound
+// (docs/scanline_setup.md#single-precision-short-spans).
+enum class LengthMix { random_spans, scenes, uniform };
+
+void set_lengths(std::vector<ScanlineInput>& in, LengthMix mix, uint64_t seed) {
+  if (mix == LengthMix::random_spans) return;
+  std::mt19937_64 rng(seed);
+  std::uniform_real_distribution<double> u01(0.0, 1.0);
+  for (ScanlineInput& s : in) {
+    if (mix == LengthMix::uniform) {
+      s.l = static_cast<int>(rng() % (kMaxLen + 1));
+      continue;
+    }
+    const double r = u01(rng);
+    auto in_range = [&](int lo, int hi) { return lo + static_cast<int>(rng() % static_cast<uint64_t>(hi - lo + 1)); };
+    s.l = r < 0.5 ? 0 : r < 0.95 ? in_range(1, 15) : r < 0.98 ? in_range(16, 63) : r < 0.995 ? in_range(64, 255)
+                                                                                             : in_range(256, kMaxLen);
+  }
 }
 
 // The hard cases of docs/scanline_setup.md#hard-cases, named.
@@ -150,6 +175,48 @@ TEST_CASE("setup polynomials stay within their error bounds", "[setup_batch]") {
     CHECK(host::test_kernels::round_away(v) == std::round(v));
 }
 
+TEST_CASE("single-precision setup functions stay within their error bounds", "[setup_batch]") {
+  // The float kernel's functions (docs/scanline_setup.md#single-precision-short-spans)
+  // against long double libm, on float arguments.
+  namespace k = host::test_kernels;
+  double e_atan2 = 0, e_log_abs = 0, e_log_rel = 0, e_exp = 0;
+  for (int i = 0; i <= 200000; ++i) {
+    const double x = i / 200000.0;
+    // atan2 over the whole circle, at two radii.
+    const double t = 2.0 * std::numbers::pi * x - std::numbers::pi;
+    for (double r : {1.0, 3e-4}) {
+      const float y = static_cast<float>(r * std::sin(t)), c = static_cast<float>(r * std::cos(t));
+      const float mx = std::max(std::abs(y), std::abs(c));
+      e_atan2 = std::max(e_atan2, std::abs(static_cast<double>(k::atan2_f(y, c, 1.0f / mx) -
+                                                               std::atan2(static_cast<long double>(y), static_cast<long double>(c)))));
+    }
+    // log2(A^2) given s = 1 - A^2 exactly: A^2 over [2^-20, 1], and s down to 1e-12 (A near 1).
+    const double s_small = std::pow(10.0, -12.0 + 11.0 * x);  // 1e-12 .. 0.1
+    for (double s : {s_small, x}) {
+      const float sf = static_cast<float>(s), a2 = static_cast<float>(1.0 - static_cast<double>(sf));
+      if (!(a2 >= 0x1p-20f)) continue;
+      const long double want = std::log2(1.0L - static_cast<long double>(sf));
+      const double err = std::abs(static_cast<double>(k::log2_f(a2, sf) - want));
+      e_log_abs = std::max(e_log_abs, err);
+      e_log_rel = std::max(e_log_rel, err / std::abs(static_cast<double>(want)));
+    }
+    const float f = static_cast<float>(-100.0 + 101.0 * x);
+    e_exp = std::max(e_exp, std::abs(static_cast<double>(k::exp2_f(f) / std::exp2(static_cast<long double>(f)) - 1.0L)));
+  }
+  INFO("atan2 " << e_atan2 << ", log2 " << e_log_abs << " abs, " << e_log_rel << " rel, exp2 (relative) " << e_exp);
+  // The bounds the analysis of docs/scanline_setup.md#single-precision-short-spans uses.
+  CHECK(e_atan2 < 4e-7);
+  CHECK(e_log_rel < 4e-7);
+  CHECK(e_exp < 4e-7);
+  WARN("float functions: atan2 " << e_atan2 << " rad, log2 " << e_log_rel << " relative, exp2 " << e_exp << " relative");
+  CHECK(k::atan2_f(0.0f, 1.0f, 1.0f) == 0.0f);
+  CHECK(k::atan2_f(0.0f, 0.0f, 1.0f) == 0.0f);
+  CHECK(k::atan2_f(0.0f, -1.0f, 1.0f) == Approx(std::numbers::pi).epsilon(1e-7));
+  CHECK(k::log2_f(1.0f, 0.0f) == 0.0f);
+  for (float v : {0.49999997f, 0.5f, 1.5f, 2.5f, -0.5f, -2.5f, 3.0f, 4194303.5f})
+    CHECK(k::round_away_f(v) == std::round(v));
+}
+
 TEST_CASE("batched setup: every hard case gets the scalar setup's status and pixels", "[setup_batch]") {
   const device::Format f;
   // As listed, and flattened (N2 = N1, He = H1): a block of flat spans takes the flat path of
@@ -195,10 +262,16 @@ TEST_CASE("batched setup: every hard case gets the scalar setup's status and pix
 TEST_CASE("batched setup agrees with the scalar setup on random spans", "[setup_batch]") {
   const device::Format f;
   const char* env = std::getenv("SPECULAR_SETUP_SPANS");
-  const size_t total = env ? std::strtoull(env, nullptr, 10) : 1000000;
+  const size_t spans = env ? std::strtoull(env, nullptr, 10) : 1000000;
   // Mostly general spans, or with 80 % of them made flat (N2 = N1, He = H1) so that the
-  // kernel's flat path and its gathering of the other spans run too.
-  const bool flat_mix = GENERATE(false, true);
+  // kernel's flat path and its gathering of the other spans run too; with random_spans' span
+  // lengths, the scenes' or uniform ones.
+  const auto [flat_mix, mix] = GENERATE(std::pair{false, LengthMix::random_spans}, std::pair{true, LengthMix::random_spans},
+                                        std::pair{false, LengthMix::scenes}, std::pair{false, LengthMix::uniform});
+  const char* mix_name = mix == LengthMix::scenes ? "scene lengths, " : mix == LengthMix::uniform ? "uniform l, " : "";
+  // Uniform l: a quarter of the spans (their pixels cost the comparison 100 times those of
+  // the others; SPECULAR_SETUP_SPANS=N runs N / 4).
+  const size_t total = mix == LengthMix::uniform ? spans / 4 : spans;
   const size_t chunk = 1 << 16;
   SpanBatch b;
   std::vector<ScanlineInput> in;
@@ -210,6 +283,7 @@ TEST_CASE("batched setup agrees with the scalar setup on random spans", "[setup_
   std::vector<Worst> worst(paths().size());
   for (size_t done = 0; done < total; done += chunk) {
     in = host::random_spans(std::min(chunk, total - done), 20261202 + done);
+    set_lengths(in, mix, 77 + done);
     if (flat_mix)
       for (size_t i = 0; i < in.size(); ++i)
         if (i % 5 < 4) in[i].n2 = in[i].n1, in[i].he = in[i].h1;
@@ -234,13 +308,13 @@ TEST_CASE("batched setup agrees with the scalar setup on random spans", "[setup_
   }
   for (size_t p = 0; p < paths().size(); ++p) {
     const Worst& w = worst[p];
-    INFO((flat_mix ? "80 % flat, " : "") << to_string(paths()[p]) << ": " << w.spans << " spans, worst " << w.worst << " of the allowance, max rel "
+    INFO(mix_name << (flat_mix ? "80 % flat, " : "") << to_string(paths()[p]) << ": " << w.spans << " spans, worst " << w.worst << " of the allowance, max rel "
                                << w.rel << " in the epicenter, max " << w.lsb << " LSB");
     CHECK(w.spans == total);
     CHECK(w.status_diff == 0);
     CHECK(w.fails == 0);
     CHECK(w.worst <= 1.0);
-    WARN((flat_mix ? "80 % flat, " : "") << to_string(paths()[p]) << ": " << w.spans << " spans: worst " << w.worst << " of the allowance, max rel "
+    WARN(mix_name << (flat_mix ? "80 % flat, " : "") << to_string(paths()[p]) << ": " << w.spans << " spans: worst " << w.worst << " of the allowance, max rel "
                                << w.rel << " in the epicenter (Pref >= 2^-10), max " << w.lsb << " LSB");
   }
 }
@@ -313,4 +387,27 @@ TEST_CASE("the device fed by the batched setup stays within its budget end to en
   CHECK(over == 0);
   WARN("device fed by the batch: " << pixels << " epicenter pixels, worst (|error| - 1 LSB) / reference = "
                                    << worst_rel);
+}
+
+TEST_CASE("register quantization is std::round of x * 2^frac, clamped", "[setup_batch]") {
+  // device::quantize_* round inline (the scalar setup's cost); the reference here is
+  // std::round(std::ldexp(x, frac)) clamped to the register, on ties, near-ties and random values.
+  const device::Format f;
+  const double c_top = std::ldexp(1.0, f.c_bits) - 1.0, a_half = std::ldexp(1.0, f.angle_bits - 1);
+  auto want_c = [&](double x) { return std::clamp(std::round(std::ldexp(x, f.c_frac)), 0.0, c_top); };
+  auto want_a = [&](double x) { return std::clamp(std::round(std::ldexp(x, f.angle_frac)), -a_half, a_half - 1.0); };
+  std::vector<double> codes{0.5, 1.5, 2.5, 0.49999999999999994, 65534.5, 65535.5, 1e15 + 0.5, 0x1p51 + 0.5, 0x1p52 + 1.0};
+  std::mt19937_64 rng(5);
+  std::uniform_real_distribution<double> u(-3e9, 3e9);
+  for (int i = 0; i < 1000; ++i) codes.push_back(u(rng));
+  for (double q : codes)
+    for (double s : {1.0, -1.0}) {
+      const double xc = s * std::ldexp(q, -f.c_frac), xa = s * std::ldexp(q, -f.angle_frac);
+      INFO("code " << s * q);
+      CHECK(static_cast<double>(device::quantize_c(xc, f)) == want_c(xc));
+      CHECK(static_cast<double>(device::quantize_angle(xa, f)) == want_a(xa));
+    }
+  bool sat = false;
+  CHECK(device::quantize_c(std::numeric_limits<double>::quiet_NaN(), f, &sat) == 0u);
+  CHECK(sat);
 }
