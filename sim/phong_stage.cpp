@@ -9,6 +9,7 @@
 #include "verilated_model.hpp"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <deque>
@@ -43,6 +44,7 @@ std::vector<PhongSceneStats> run_phong_stage(const std::vector<LoadedScene>& sce
   const double lsb = std::ldexp(1.0, -f.c_frac);
   std::vector<PhongSceneStats> out;
   for (const LoadedScene& ls : scenes) {
+    const auto t0 = std::chrono::steady_clock::now();
     PhongSceneStats st;
     st.name = ls.scene.name;
     VerilatedModel<Vphong_scene> vm("phong_stream");
@@ -142,6 +144,7 @@ std::vector<PhongSceneStats> run_phong_stage(const std::vector<LoadedScene>& sce
     if (!expect.empty()) note(st, std::to_string(expect.size()) + " pixels never came out");
     if (st.pixels == 0) note(st, "no pixels");
     st.mismatches += expect.size();
+    st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.push_back(std::move(st));
   }
   return out;
@@ -152,14 +155,14 @@ void print_phong_table(const std::vector<PhongSceneStats>& stats) {
               "per-pixel Phong in double, (|err| - 1 LSB)^+ relative in the epicenter and absolute / C):\n",
               PhongFormat{}.describe().c_str());
   std::printf("| scene | spans | pixels | clocks | clocks/pixel | mismatches | epicenter px | max rel epi | max abs / C "
-              "| vs phong_truth rel / abs | over budget rel / abs |\n|---|---|---|---|---|---|---|---|---|---|---|\n");
+              "| vs phong_truth rel / abs | over budget rel / abs | wall s |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const auto& s : stats)
-    std::printf("| %s | %llu | %llu | %llu | %.4f | %llu | %llu | %.3e | %.3e | %.3e / %.3e | %llu / %llu |\n",
+    std::printf("| %s | %llu | %llu | %llu | %.4f | %llu | %llu | %.3e | %.3e | %.3e / %.3e | %llu / %llu | %.2f |\n",
                 s.name.c_str(), (unsigned long long)s.spans, (unsigned long long)s.pixels,
                 (unsigned long long)s.cycles, s.pixels ? double(s.cycles) / double(s.pixels) : 0.0,
                 (unsigned long long)s.mismatches, (unsigned long long)s.epicenter_pixels, s.rel_lsb, s.abs_lsb,
                 s.rel_lsb_truth, s.abs_lsb_truth, (unsigned long long)s.rel_violations,
-                (unsigned long long)s.abs_violations);
+                (unsigned long long)s.abs_violations, s.seconds);
 }
 
 }  // namespace specular::sim

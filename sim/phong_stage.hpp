@@ -25,6 +25,7 @@ struct PhongSceneStats {
   uint64_t rel_violations = 0, abs_violations = 0;
   double rel_lsb = 0.0, abs_lsb = 0.0;              // against phong_exact
   double rel_lsb_truth = 0.0, abs_lsb_truth = 0.0;  // against phong_truth
+  double seconds = 0.0;                             // wall time of the scene (RTL, golden, references)
   std::vector<std::string> failures;
   bool ok() const { return mismatches == 0 && rel_violations == 0 && abs_violations == 0 && pixels > 0; }
 };
