@@ -77,9 +77,12 @@ PhongFormat PhongFormat::preset(int n_max) {
     case 1000:
       return f;
     case 128:
+      // The search's result had rsqrt_addr_bits = 9, which misses the budget by 0.1 % of it
+      // on the sweep of seed 5 (1.001e-3 at n = 128); one more address bit holds on the
+      // sweeps of seeds 2, 3, 5, 6, 11 and 12 (docs/phong_hw.md#configuration-search).
       f.op_bits = 20;
       f.norm_bits = 20;
-      f.rsqrt_addr_bits = 9, f.newton = 1;
+      f.rsqrt_addr_bits = 10, f.newton = 1;
       f.cos_frac = 19;
       f.log_addr_bits = 7, f.log_frac_bits = 11, f.log_bits = 19;
       f.exp_addr_bits = 4, f.exp_frac_bits = 8, f.exp_bits = 16;
