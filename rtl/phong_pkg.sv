@@ -8,6 +8,9 @@
 
 package phong_pkg;
 
+  // Stage 0 of the pixel pipeline: the accumulators A_i, B_i (phong_stream).
+  localparam int AccStages = 1;
+
   // phong_mul over a b_bits-wide operand b.
   function automatic int mul_stages(input int b_bits);
     mul_stages = 1 + specular_pkg::pipe_mul_stages(b_bits);
@@ -42,6 +45,15 @@ package phong_pkg;
                                     input int exp_bits);
     pow_stages = 3 + mul_stages(log_frac_bits) + 3 + mul_stages(w_bits) + 1 + mul_stages(exp_frac_bits) + 3
                  + mul_stages(exp_bits + 1) + 1;
+  endfunction
+
+  // phong_stream's pixel pipeline, the accumulators to the last stage before the output
+  // buffer (its PipeDepth; the span pipe, setup_stages, runs ahead of it).
+  function automatic int pipe_depth(input int op_bits, input int norm_bits, input int newton,
+                                    input int log_frac_bits, input int w_bits, input int exp_frac_bits,
+                                    input int exp_bits);
+    pipe_depth = AccStages + dot_stages(op_bits) + norm_stages(norm_bits, newton)
+                 + pow_stages(log_frac_bits, w_bits, exp_frac_bits, exp_bits);
   endfunction
 
 endpackage

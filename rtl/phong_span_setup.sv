@@ -4,7 +4,7 @@
 // Per-span work of phong_stream (docs/phong_hw.md#design): the start value and the step of
 // the interpolated vectors, without a division (the cosine does not change when a vector is
 // scaled, so the core interpolates A_i = 2^k ((l - i) N1 + i N2) exactly):
-//   k  = LenBits - bit_width(l) (l >= 1), L = l << k;  l = 0: L = 2^(LenBits-1), k = 0
+//   k  = LenBits - bit_width(l) (l >= 1), L = l << k;  l = 0: k = 0 and L is 2^(LenBits-1)
 //   A0 = L * N1, EA = (N2 - N1) << k;  B0 = L * H1, EB = (He - H1) << k
 //   ConstH: B0 = H1 << (LenBits - 1), EB = 0 (He is not read, no H multiplier)
 // plus the span's flag `zero` (a zero N1, N2, H1 or He, or n outside 1..1000: every pixel 0).
@@ -161,7 +161,7 @@ module phong_span_setup #(
     end
   end
 
-  // ---- stages 3 .. 2 + MulDepth: L * |N1|, L * |H1|; the steps and span values beside ----
+  // ---- the multipliers L * |N1|, L * |H1| (MulDepth stages); the steps and span values beside ----
   logic [LenBits+VecBits-1:0] pn_m [3], ph_m [3];
   for (genvar c = 0; c < 3; c++) begin : gen_mul
     phong_mul #(.ABits (LenBits), .BBits (VecBits)) u_mul_n (

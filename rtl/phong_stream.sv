@@ -73,9 +73,11 @@ module phong_stream #(
   localparam int DotStages = phong_pkg::dot_stages(OpBits);
   localparam int NrmStages = phong_pkg::norm_stages(NormBits, Newton);
   localparam int PowStages = phong_pkg::pow_stages(LogFracBits, WBits, ExpFracBits, ExpBits);
-  localparam int PipeDepth = 1 + DotStages + NrmStages + PowStages;
+  localparam int PipeDepth = phong_pkg::pipe_depth(OpBits, NormBits, Newton, LogFracBits, WBits, ExpFracBits,
+                                                    ExpBits);
 
-  if (NBits != 10 || TagBits < 1 || OpBits > AccBits) begin : gen_param_check
+  if (NBits != 10 || TagBits < 1 || OpBits > AccBits ||
+      PipeDepth != phong_pkg::AccStages + DotStages + NrmStages + PowStages) begin : gen_param_check
     `SPEC_PARAM_ERROR("phong_stream: NBits must be 10, TagBits >= 1, OpBits <= VecBits + LenBits")
   end
 
