@@ -35,3 +35,11 @@ rtl/specular_stream.sv
 rtl/specular_unit.sv
 rtl/specular_axis.sv
 rtl/specular_axil.sv
+// the per-pixel Blinn-Phong competitor on the geometry span interface (docs/phong_hw.md)
+rtl/phong_pkg.sv
+rtl/phong_mul.sv
+rtl/phong_span_setup.sv
+rtl/phong_dot.sv
+rtl/phong_norm.sv
+rtl/phong_pow.sv
+rtl/phong_stream.sv

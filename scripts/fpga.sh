@@ -6,13 +6,15 @@
 # specular_unit, specular_stream and specular_axil), and a summary of LUTs, FFs, block RAMs, DSPs, Fmax
 # and pixels per second per harness and device. `make fpga` runs it; so does `make report`.
 #
-#   scripts/fpga.sh [--top unit|stream|axil|all] [--device hx8k|up5k|all] [--out DIR]
+#   scripts/fpga.sh [--top unit|stream|axil|phong|all] [--device hx8k|up5k|all] [--out DIR]
 #                   [--param NAME=VALUE]... [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ]
 #                   [--strict] [--fresh] [--elaborate-only]
 #
 #   --top         the core in the harness fpga_ooc (its parameter Top): unit
 #                 (specular_unit), stream (specular_stream), axil (specular_axil: the
-#                 AXI4-Lite core) or all (default)
+#                 AXI4-Lite core), all (default: those three) or phong (phong_stream, the
+#                 per-pixel Blinn-Phong competitor of docs/phong_hw.md; its configurations
+#                 by --param, roms/phong/phong_configs.cmake)
 #   --device      hx8k (iCE40-HX8K, package ct256, LUT multipliers), up5k (iCE40-UP5K,
 #                 package sg48, synth_ice40 -dsp: SB_MAC16 multipliers) or all (default)
 #   --out         output directory (default build/fpga); one folder per run, TOP_DEVICE/,
@@ -45,7 +47,7 @@ me=scripts/fpga.sh
 
 die_usage() {
   echo "$me: $*" >&2
-  echo "usage: $me [--top unit|stream|axil|all] [--device hx8k|up5k|all] [--out DIR] [--param NAME=VALUE]... [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--strict] [--fresh] [--elaborate-only]" >&2
+  echo "usage: $me [--top unit|stream|axil|phong|all] [--device hx8k|up5k|all] [--out DIR] [--param NAME=VALUE]... [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--strict] [--fresh] [--elaborate-only]" >&2
   exit 2
 }
 
@@ -80,9 +82,9 @@ while [ $# -gt 0 ]; do
 done
 
 case "$top_arg" in
-  unit|stream|axil) tops=("$top_arg") ;;
+  unit|stream|axil|phong) tops=("$top_arg") ;;
   all)         tops=(unit stream axil) ;;
-  *) die_usage "--top must be one of unit, stream, axil, all (got '$top_arg')" ;;
+  *) die_usage "--top must be one of unit, stream, axil, phong, all (got '$top_arg')" ;;
 esac
 case "$dev_arg" in
   hx8k|up5k) devices=("$dev_arg") ;;
@@ -97,7 +99,7 @@ done
 
 # Parameters: NAME=VALUE, NAME an identifier; numbers and sized literals as they are,
 # anything else a quoted string (no quotes, backslashes or spaces inside).
-harness_widths=" CBits AngleBits NBits LenBits TagBits AddrWidth "
+harness_widths=" CBits AngleBits NBits LenBits TagBits AddrWidth VecBits "
 core_chparam=()
 harness_chparam=()
 for p in "${params[@]+"${params[@]}"}"; do
@@ -135,8 +137,9 @@ sources+=(rtl/fpga/fpga_ooc_io.sv rtl/fpga/fpga_ooc.sv)
 
 harness=fpga_ooc
 # fpga_ooc's parameter Top for each --top (rtl/fpga/fpga_ooc.sv).
-top_id_of()  { case "$1" in unit) echo 0 ;; stream) echo 1 ;; axil) echo 2 ;; esac; }
-core_of()    { case "$1" in unit) echo specular_unit ;; stream) echo specular_stream ;; axil) echo specular_axil ;; esac; }
+top_id_of()  { case "$1" in unit) echo 0 ;; stream) echo 1 ;; axil) echo 2 ;; phong) echo 3 ;; esac; }
+core_of()    { case "$1" in unit) echo specular_unit ;; stream) echo specular_stream ;; axil) echo specular_axil ;;
+                            phong) echo phong_stream ;; esac; }
 
 # Everything a run's result depends on: sources, ROM files (the defaults in roms/ and any
 # file named by a parameter), parameters, options, this script and the tool versions.

@@ -30,6 +30,7 @@
 #include "rom_image.hpp"
 #include "scanline_setup.hpp"
 #include "scanlines.hpp"
+#include "phong_stage.hpp"
 #include "scene_stage.hpp"
 #include "stream_stage.hpp"
 
@@ -590,6 +591,13 @@ int main(int argc, char** argv) {
       stream = run_stream_stage(sh, seed, stream_spans);
     }
     if (stream_spans > 0 || !scene_streams.empty()) print_stream_summary(stream, scene_streams);
+    // Phong stage (docs/phong_hw.md): every scene through phong_stream, when every
+    // configuration runs.
+    std::vector<PhongSceneStats> phong_stats;
+    if (every && !scenes.empty()) {
+      phong_stats = run_phong_stage(scenes);
+      print_phong_table(phong_stats);
+    }
     const double run_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_run).count();
     double rtl_total = 0, golden_total = 0, ref_total = 0;
     for (const auto& s : all) {
@@ -642,6 +650,10 @@ int main(int argc, char** argv) {
       ok = ok && s.ok();
       if (!s.ok()) std::cout << "FAIL stream scene " << s.name << "\n";
     }
+    for (const auto& s : phong_stats) {
+      ok = ok && s.ok();
+      for (const auto& msg : s.failures) std::cout << "FAIL phong " << msg << "\n";
+    }
     if (!json_path.empty()) {
       nlohmann::json j = {{"seed", seed}, {"random_lines_per_config", random_lines}, {"ok", ok}};
       for (const auto& s : all) j["configs"][s.policy] = s.to_json();
@@ -657,6 +669,12 @@ int main(int argc, char** argv) {
       }
       if (stream_spans > 0) j["stream"] = stream.to_json();
       for (const auto& s : scene_streams) j["scenes_stream"][s.name] = s.to_json();
+      for (const auto& s : phong_stats)
+        j["phong"][s.name] = {{"spans", s.spans}, {"pixels", s.pixels}, {"cycles", s.cycles},
+                              {"mismatches", s.mismatches}, {"epicenter_pixels", s.epicenter_pixels},
+                              {"rel_lsb", s.rel_lsb}, {"abs_lsb", s.abs_lsb}, {"rel_lsb_truth", s.rel_lsb_truth},
+                              {"abs_lsb_truth", s.abs_lsb_truth}, {"rel_violations", s.rel_violations},
+                              {"abs_violations", s.abs_violations}};
       j["run_seconds"] = run_seconds;
       j["rtl_seconds"] = rtl_total;
       j["golden_seconds"] = golden_total;

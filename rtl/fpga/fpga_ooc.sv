@@ -3,7 +3,8 @@
 //
 // fpga_ooc: the out-of-context place-and-route harness (registered IO, five pins: clk_i,
 // rst_ni, sdi_i, load_i, xor_o) around one top level of the core, chosen by Top (0 unit,
-// 1 stream, 2 axil). See
+// 1 stream, 2 axil; 3 phong: phong_stream, the per-pixel Blinn-Phong competitor of
+// docs/phong_hw.md). See
 // fpga_ooc_io.sv for the pins and rtl/fpga/README.md for the flow (scripts/fpga.sh). Not
 // part of the device.
 //
@@ -16,11 +17,14 @@
 //           len[LenBits], tag[TagBits], px_ready
 //   axil    awvalid, awaddr[AddrWidth], awprot[3], wvalid, wdata[32], wstrb[4], bready,
 //           arvalid, araddr[AddrWidth], arprot[3], rready, m_axis_px_tready
+//   phong   geo_valid, n1, n2, h1, he [3*VecBits each], n[NBits], len[LenBits],
+//           scale[CBits], tag[TagBits], px_ready
 // Output parity, over:
 //   unit    intensity_o, valid_o, busy_o
 //   stream  span_ready_o, px_valid_o, px_intensity_o, px_last_o, px_tag_o
 //   axil    awready, wready, bresp, bvalid, arready, rdata, rresp, rvalid,
 //           m_axis_px_tdata, m_axis_px_tvalid, m_axis_px_tlast, m_axis_px_tuser, irq_o
+//   phong   geo_ready_o, px_valid_o, px_intensity_o, px_last_o, px_tag_o
 //
 // Parameters: the interface widths are passed through to the core (TagBits to the stream
 // and the AXI4-Lite core, AddrWidth to the latter only; specular_axil's registers are 32
@@ -32,13 +36,15 @@
 `include "specular_assert.svh"
 
 module fpga_ooc #(
-  parameter int Top       = 1,   // the core: 0 specular_unit, 1 specular_stream, 2 specular_axil
+  parameter int Top       = 1,   // the core: 0 specular_unit, 1 specular_stream, 2 specular_axil,
+                                 // 3 phong_stream
   parameter int CBits     = 16,
   parameter int AngleBits = 32,
   parameter int NBits     = 10,
   parameter int LenBits   = 11,
   parameter int TagBits   = 16,
-  parameter int AddrWidth = 8
+  parameter int AddrWidth = 8,
+  parameter int VecBits   = 18   // phong_stream's vector components
 ) (
   input  logic clk_i,
   input  logic rst_ni,
@@ -50,13 +56,15 @@ module fpga_ooc #(
   localparam int TopUnit   = 0;
   localparam int TopStream = 1;
   localparam int TopAxil   = 2;
+  localparam int TopPhong  = 3;
 
   localparam int PxBits  = ((CBits + 7) / 8) * 8;   // AXI4-Stream TDATA: whole bytes
   localparam int InBits  = (Top == TopUnit)   ? 5 + CBits + 2 * AngleBits + NBits + LenBits + 1
                          : (Top == TopStream) ? 2 + CBits + 2 * AngleBits + NBits + LenBits + TagBits
+                         : (Top == TopPhong)  ? 2 + 12 * VecBits + NBits + LenBits + CBits + TagBits
                          :                     2 * AddrWidth + 48;
   localparam int OutBits = (Top == TopUnit)   ? CBits + 2
-                         : (Top == TopStream) ? 3 + CBits + TagBits
+                         : (Top == TopStream || Top == TopPhong) ? 3 + CBits + TagBits
                          :                     41 + PxBits + 3 + TagBits;
 
   logic               core_rst_n;
@@ -198,8 +206,44 @@ module fpga_ooc #(
       .m_axis_px_tuser  (px_tuser),
       .irq_o            (irq)
     );
+  end else if (Top == TopPhong) begin : gen_phong
+    logic                 geo_valid, geo_ready, px_valid, px_ready, px_last;
+    logic [3*VecBits-1:0] n1, n2, h1, he;
+    logic [NBits-1:0]     n;
+    logic [LenBits-1:0]   len;
+    logic [CBits-1:0]     scale, px_intensity;
+    logic [TagBits-1:0]   tag, px_tag;
+
+    assign {geo_valid, n1, n2, h1, he, n, len, scale, tag, px_ready} = core_in;
+    assign core_out = {geo_ready, px_valid, px_intensity, px_last, px_tag};
+
+    phong_stream #(
+      .VecBits (VecBits),
+      .LenBits (LenBits),
+      .NBits   (NBits),
+      .CBits   (CBits),
+      .TagBits (TagBits)
+    ) u_core (
+      .clk_i          (clk_i),
+      .rst_ni         (core_rst_n),
+      .geo_valid_i    (geo_valid),
+      .geo_ready_o    (geo_ready),
+      .geo_n1_i       (n1),
+      .geo_n2_i       (n2),
+      .geo_h1_i       (h1),
+      .geo_he_i       (he),
+      .geo_n_i        (n),
+      .geo_len_i      (len),
+      .geo_scale_i    (scale),
+      .geo_tag_i      (tag),
+      .px_valid_o     (px_valid),
+      .px_ready_i     (px_ready),
+      .px_intensity_o (px_intensity),
+      .px_last_o      (px_last),
+      .px_tag_o       (px_tag)
+    );
   end else begin : gen_top_check
-    `SPEC_PARAM_ERROR("fpga_ooc: Top must be 0 (unit), 1 (stream) or 2 (axil)")
+    `SPEC_PARAM_ERROR("fpga_ooc: Top must be 0 (unit), 1 (stream), 2 (axil) or 3 (phong)")
   end
 
 endmodule

@@ -17,7 +17,7 @@ expect() {  # expect REGEX ARGS...: exit 2 and stderr matching REGEX
   fi
 }
 expect "--device must be one of hx8k, up5k, all \(got 'virtex7'\)" --device virtex7
-expect "--top must be one of unit, stream, axil, all \(got 'core'\)" --top core
+expect "--top must be one of unit, stream, axil, phong, all \(got 'core'\)" --top core
 expect "--param must be NAME=VALUE" --param CosAddrBits
 expect "--param name must be a Verilog identifier" --param 9x=1
 expect "string value must not contain quotes" --param 'CosRomFile=a"b'

@@ -1,0 +1,216 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// Per-span work of phong_stream (docs/phong_hw.md#design): the start value and the step of
+// the interpolated vectors, without a division (the cosine does not change when a vector is
+// scaled, so the core interpolates A_i = 2^k ((l - i) N1 + i N2) exactly):
+//   k  = LenBits - bit_width(l) (l >= 1), L = l << k;  l = 0: k = 0 and L is 2^(LenBits-1)
+//   A0 = L * N1, EA = (N2 - N1) << k;  B0 = L * H1, EB = (He - H1) << k
+//   ConstH: B0 = H1 << (LenBits - 1), EB = 0 (He is not read, no H multiplier)
+// plus the span's flag `zero` (a zero N1, N2, H1 or He, or n outside 1..1000: every pixel 0).
+// Bit-exact contract: model/device/phong_model.hpp.
+//
+// A pipeline of phong_pkg::setup_stages(VecBits) stages, all enabled by en_i (the span pipe
+// moves as a whole); valid_i is the span handshake of the stage-1 register. Stages:
+//   1            the span's ports registered
+//   2            N2 - N1, He - H1, |N1|, |H1| (parallel carry chains), k and L (priority
+//                encoder, shift), the zero flag
+//   3 ..         L * |N1| and L * |H1| (phong_mul), the steps shifted by k beside them
+//   last         the sign of N1, H1 applied (one carry chain)
+
+`include "specular_assert.svh"
+
+module phong_span_setup #(
+  parameter int VecBits = 18,
+  parameter int LenBits = 11,
+  parameter int NBits   = 10,
+  parameter int MaxN    = 1000,
+  parameter int CBits   = 16,
+  parameter int TagBits = 16,
+  parameter bit ConstH  = 1'b0
+) (
+  input  logic                          clk_i,
+  input  logic                          rst_ni,
+  input  logic                          en_i,
+  input  logic                          valid_i,
+  input  logic [3*VecBits-1:0]          n1_i,
+  input  logic [3*VecBits-1:0]          n2_i,
+  input  logic [3*VecBits-1:0]          h1_i,
+  input  logic [3*VecBits-1:0]          he_i,
+  input  logic [NBits-1:0]              n_i,
+  input  logic [LenBits-1:0]            len_i,
+  input  logic [CBits-1:0]              scale_i,
+  input  logic [TagBits-1:0]            tag_i,
+  output logic                          valid_o,
+  output logic [3*(VecBits+LenBits)-1:0] a0_o,
+  output logic [3*(VecBits+LenBits)-1:0] ea_o,
+  output logic [3*(VecBits+LenBits)-1:0] b0_o,
+  output logic [3*(VecBits+LenBits)-1:0] eb_o,
+  output logic [NBits-1:0]              n_o,
+  output logic [LenBits-1:0]            len_o,
+  output logic [CBits-1:0]              scale_o,
+  output logic [TagBits-1:0]            tag_o,
+  output logic                          zero_o
+);
+
+  localparam int AccBits  = VecBits + LenBits;
+  localparam int MulDepth = phong_pkg::mul_stages(VecBits);
+  localparam int Depth    = phong_pkg::setup_stages(VecBits);
+  localparam int KBits    = $clog2(LenBits + 1);
+
+  if (VecBits < 2 || LenBits < 2 || Depth != 3 + MulDepth) begin : gen_param_check
+    `SPEC_PARAM_ERROR("phong_span_setup: VecBits, LenBits >= 2; phong_pkg::setup_stages disagrees")
+  end
+
+  // ---- valid bits (reset: a reset drops every span in the pipe) ----
+  logic [Depth-1:0] vld_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      vld_q <= '0;
+    end else if (en_i) begin
+      vld_q <= {vld_q[Depth-2:0], valid_i};
+    end
+  end
+  assign valid_o = vld_q[Depth-1];
+
+  // ---- stage 1: the span's ports ----
+  logic [3*VecBits-1:0] n1_1, n2_1, h1_1, he_1;
+  logic [NBits-1:0]     n_1;
+  logic [LenBits-1:0]   len_1;
+  logic [CBits-1:0]     scale_1;
+  logic [TagBits-1:0]   tag_1;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      n1_1    <= n1_i;
+      n2_1    <= n2_i;
+      h1_1    <= h1_i;
+      he_1    <= ConstH ? h1_i : he_i;
+      n_1     <= n_i;
+      len_1   <= len_i;
+      scale_1 <= scale_i;
+      tag_1   <= tag_i;
+    end
+  end
+
+  // ---- stage 2: differences, magnitudes, k, L, the zero flag ----
+  logic [KBits-1:0]   k_c;
+  logic [LenBits-1:0] l_c;
+  always_comb begin
+    k_c = '0;
+    for (int b = 0; b < LenBits; b++) begin
+      if (len_1[b]) k_c = KBits'(LenBits - 1 - b);
+    end
+    l_c = (len_1 == '0) ? LenBits'(1) << (LenBits - 1) : len_1 << k_c;
+  end
+
+  logic zero_c;
+  always_comb begin
+    zero_c = (n_1 == '0) || (32'(n_1) > MaxN);
+    for (int v = 0; v < 4; v++) begin
+      logic [3*VecBits-1:0] vec;
+      unique case (v)
+        0:       vec = n1_1;
+        1:       vec = n2_1;
+        2:       vec = h1_1;
+        default: vec = he_1;
+      endcase
+      if (vec == '0) zero_c = 1'b1;
+    end
+  end
+
+  logic signed [VecBits:0] dn_2 [3], dh_2 [3];
+  logic [VecBits-1:0]      magn_2 [3], magh_2 [3];
+  logic [2:0]              sgnn_2, sgnh_2;
+  logic [KBits-1:0]        k_2;
+  logic [LenBits-1:0]      l_2;
+  logic                    zero_2;
+  logic [NBits-1:0]        n_2;
+  logic [LenBits-1:0]      len_2;
+  logic [CBits-1:0]        scale_2;
+  logic [TagBits-1:0]      tag_2;
+  logic signed [AccBits-1:0] hconst_2 [3];
+
+  for (genvar c = 0; c < 3; c++) begin : gen_comp2
+    logic signed [VecBits-1:0] n1c, n2c, h1c, hec;
+    assign n1c = n1_1[c*VecBits +: VecBits];
+    assign n2c = n2_1[c*VecBits +: VecBits];
+    assign h1c = h1_1[c*VecBits +: VecBits];
+    assign hec = he_1[c*VecBits +: VecBits];
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        dn_2[c]     <= (VecBits + 1)'(n2c) - (VecBits + 1)'(n1c);
+        dh_2[c]     <= (VecBits + 1)'(hec) - (VecBits + 1)'(h1c);
+        magn_2[c]   <= n1c[VecBits-1] ? VecBits'(-n1c) : VecBits'(n1c);
+        magh_2[c]   <= h1c[VecBits-1] ? VecBits'(-h1c) : VecBits'(h1c);
+        sgnn_2[c]   <= n1c[VecBits-1];
+        sgnh_2[c]   <= h1c[VecBits-1];
+        hconst_2[c] <= AccBits'(h1c) <<< (LenBits - 1);
+      end
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      k_2     <= k_c;
+      l_2     <= l_c;
+      zero_2  <= zero_c;
+      n_2     <= n_1;
+      len_2   <= len_1;
+      scale_2 <= scale_1;
+      tag_2   <= tag_1;
+    end
+  end
+
+  // ---- the multipliers L * |N1|, L * |H1| (MulDepth stages); the steps and span values beside ----
+  logic [LenBits+VecBits-1:0] pn_m [3], ph_m [3];
+  for (genvar c = 0; c < 3; c++) begin : gen_mul
+    phong_mul #(.ABits (LenBits), .BBits (VecBits)) u_mul_n (
+      .clk_i (clk_i), .en_i (en_i), .a_i (l_2), .b_i (magn_2[c]), .p_o (pn_m[c]));
+    if (ConstH) begin : gen_const_h
+      logic unused_magh;
+      assign unused_magh = ^magh_2[c];
+      assign ph_m[c] = '0;
+    end else begin : gen_var_h
+      phong_mul #(.ABits (LenBits), .BBits (VecBits)) u_mul_h (
+        .clk_i (clk_i), .en_i (en_i), .a_i (l_2), .b_i (magh_2[c]), .p_o (ph_m[c]));
+    end
+  end
+
+  // Steps: (N2 - N1) << k, sign-extended to AccBits (|N2 - N1| < 2^VecBits, k <= LenBits - 1).
+  logic [3*AccBits-1:0] ea_2, eb_2, hc_2, ea_m, eb_m, hc_m;
+  for (genvar c = 0; c < 3; c++) begin : gen_step
+    assign ea_2[c*AccBits +: AccBits] = (len_2 == '0) ? '0 : AccBits'(dn_2[c]) <<< k_2;
+    assign eb_2[c*AccBits +: AccBits] = (len_2 == '0 || ConstH) ? '0 : AccBits'(dh_2[c]) <<< k_2;
+    assign hc_2[c*AccBits +: AccBits] = hconst_2[c];
+  end
+  logic [2:0] sgnn_m, sgnh_m;
+  logic       zero_m;
+  logic [NBits-1:0]   n_m;
+  logic [LenBits-1:0] len_m;
+  logic [CBits-1:0]   scale_m;
+  logic [TagBits-1:0] tag_m;
+  specular_delay #(.Width (9 * AccBits + 6 + 1 + NBits + LenBits + CBits + TagBits), .Depth (MulDepth),
+                   .Reset (1'b0)) u_side (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (en_i),
+    .d_i   ({ea_2, eb_2, hc_2, sgnn_2, sgnh_2, zero_2, n_2, len_2, scale_2, tag_2}),
+    .q_o   ({ea_m, eb_m, hc_m, sgnn_m, sgnh_m, zero_m, n_m, len_m, scale_m, tag_m}));
+
+  // ---- last stage: signs ----
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      for (int c = 0; c < 3; c++) begin
+        a0_o[c*AccBits +: AccBits] <= sgnn_m[c] ? -(AccBits'(pn_m[c])) : AccBits'(pn_m[c]);
+        b0_o[c*AccBits +: AccBits] <= ConstH ? hc_m[c*AccBits +: AccBits]
+                                             : (sgnh_m[c] ? -(AccBits'(ph_m[c])) : AccBits'(ph_m[c]));
+      end
+      ea_o    <= ea_m;
+      eb_o    <= eb_m;
+      zero_o  <= zero_m;
+      n_o     <= n_m;
+      len_o   <= len_m;
+      scale_o <= scale_m;
+      tag_o   <= tag_m;
+    end
+  end
+
+endmodule

@@ -1,0 +1,31 @@
+# SPDX-License-Identifier: Apache-2.0
+# ctest phong_roms_up_to_date: regenerate phong_stream's ROMs and phong_configs.cmake
+# (phong_romgen) into TMP and compare with the committed SRC (roms/phong), both ways: a file
+# only one side has fails too.
+file(REMOVE_RECURSE ${TMP})
+execute_process(COMMAND ${ROMGEN} --out-dir ${TMP} RESULT_VARIABLE rc)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "phong_romgen failed (${rc})")
+endif()
+file(GLOB_RECURSE generated RELATIVE ${TMP} ${TMP}/*)
+file(GLOB_RECURSE committed RELATIVE ${SRC} ${SRC}/*)
+if(NOT generated)
+  message(FATAL_ERROR "phong_romgen wrote no file")
+endif()
+set(stale "")
+foreach(f ${generated})
+  execute_process(COMMAND ${CMAKE_COMMAND} -E compare_files ${TMP}/${f} ${SRC}/${f} RESULT_VARIABLE diff)
+  if(NOT diff EQUAL 0)
+    list(APPEND stale ${f})
+  endif()
+endforeach()
+foreach(f ${committed})
+  if(NOT EXISTS ${TMP}/${f})
+    list(APPEND stale ${f})
+  endif()
+endforeach()
+if(stale)
+  message(FATAL_ERROR "roms/phong is out of date (differs from phong_romgen output): ${stale}. "
+                      "Run `make roms` and commit.")
+endif()
+message(STATUS "roms/phong matches phong_romgen output: ${generated}")
