@@ -42,3 +42,4 @@ rtl/specular_unit.sv
 rtl/specular_axis.sv
 rtl/specular_axil.sv
 rtl/specular_setup.sv
+rtl/specular_system.sv

@@ -45,6 +45,9 @@
 module specular_setup #(
   parameter int VecBits       = 18,
   parameter int TagBits       = 16,
+  // 1: the end halfway vector equals the first (a directional light and a viewer at
+  // infinity): geo_he_i is ignored and its normalizer is not built.
+  parameter bit HeEqH1        = 1'b0,
   parameter     RsqrtSeedFile = "roms/setup/rsqrt_seed.hex",
   parameter     LogRecipFile  = "roms/setup/log_recip.hex",
   parameter     LogValueFile  = "roms/setup/log_value.hex",
@@ -145,7 +148,7 @@ module specular_setup #(
       n1_q    <= geo_n1_i;
       n2_q    <= geo_n2_i;
       h1_q    <= geo_h1_i;
-      he_q    <= geo_he_i;
+      he_q    <= HeEqH1 ? geo_h1_i : geo_he_i;
       n_q     <= geo_n_i;
       len_q   <= geo_len_i;
       scale_q <= geo_scale_i;
@@ -186,9 +189,15 @@ module specular_setup #(
   specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_h1 (
     .clk_i (clk_i), .en_i (adv), .x_i (c3.x), .y_i (c3.y), .z_i (c3.z), .x_o (h1u.x), .y_o (h1u.y), .z_o (h1u.z)
   );
-  specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_he (
-    .clk_i (clk_i), .en_i (adv), .x_i (c4.x), .y_i (c4.y), .z_i (c4.z), .x_o (heu.x), .y_o (heu.y), .z_o (heu.z)
-  );
+  if (HeEqH1) begin : gen_he_eq_h1
+    assign heu = h1u;
+    logic unused_c4;
+    assign unused_c4 = ^c4;
+  end else begin : gen_he
+    specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_he (
+      .clk_i (clk_i), .en_i (adv), .x_i (c4.x), .y_i (c4.y), .z_i (c4.z), .x_o (heu.x), .y_o (heu.y), .z_o (heu.z)
+    );
+  end
   // tau 9 -> 18: the bisector.
   specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_m (
     .clk_i (clk_i), .en_i (adv),
