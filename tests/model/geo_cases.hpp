@@ -99,7 +99,7 @@ inline std::vector<Hard> hard_cases() {
   });
   add("scale 0", [](GeoSpan& s) { s.scale = 0; });
   add("scale at the maximum, A = 1", [](GeoSpan& s) { s.n2 = s.n1, s.h1 = s.he = s.n1, s.scale = 65535; });
-  add("C saturates? scale maximum", [](GeoSpan& s) { s.scale = 65535, s.n = 1; });
+  add("scale at the maximum, n = 1", [](GeoSpan& s) { s.scale = 65535, s.n = 1; });
   return h;
 }
 
