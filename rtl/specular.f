@@ -30,6 +30,12 @@ rtl/specular_cos_k_rom.sv
 rtl/specular_intensity_mul.sv
 rtl/specular_control.sv
 rtl/specular_out_buf.sv
+// the setup in hardware (docs/setup_hw.md): its package and blocks
+rtl/specular_setup_pkg.sv
+rtl/specular_setup_norm.sv
+rtl/specular_setup_cordic.sv
+rtl/specular_setup_log2.sv
+rtl/specular_setup_exp2.sv
 // top levels: the streaming core, the register interface, the AXI wrappers
 rtl/specular_stream.sv
 rtl/specular_unit.sv
@@ -43,3 +49,5 @@ rtl/phong_dot.sv
 rtl/phong_norm.sv
 rtl/phong_pow.sv
 rtl/phong_stream.sv
+rtl/specular_setup.sv
+rtl/specular_system.sv

@@ -9,6 +9,8 @@
 //   sim_regression --vcd-dir DIR --vcd-only DIR/line_l3.vcd (l = 3) and DIR/line_long.vcd
 //   sim_regression --scenes-dir DIR --images-dir DIR   every DIR/*.json through specular_stream, PNGs
 //   sim_regression --no-scenes                         regression lines only
+//   sim_regression --system-spans N                    random geometry spans of the system stage (0: no
+//                                                      system stage; system_stage.hpp)
 //   sim_regression --scene-threads 1                   scene stage on one thread (default 2)
 //   sim_regression --corrupt-span SCENE:SPAN           test only: a wrong register must fail the scene stage
 //   sim_regression --stream-spans N                    random spans through specular_stream (0: skip)
@@ -33,6 +35,7 @@
 #include "phong_stage.hpp"
 #include "scene_stage.hpp"
 #include "stream_stage.hpp"
+#include "system_stage.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -426,6 +429,12 @@ int main(int argc, char** argv) {
   app.add_option("--stream-spans", stream_spans, "random spans through specular_stream (0: skip the stream stage)")
       ->check(CLI::Range(uint64_t{0}, uint64_t{100000000}))
       ->capture_default_str();
+  uint64_t system_spans = 5000;
+  app.add_option("--system-spans", system_spans,
+                 "random geometry spans through specular_system under backpressure and resets, after every scene "
+                 "(0: skip the system stage)")
+      ->check(CLI::Range(uint64_t{0}, uint64_t{100000000}))
+      ->capture_default_str();
   std::string digest_path, coverage_dir;
   app.add_option("--digest", digest_path,
                  "write the digest of every output of every model in every cycle to FILE (X-propagation runs: "
@@ -598,6 +607,12 @@ int main(int argc, char** argv) {
       phong_stats = run_phong_stage(scenes);
       print_phong_table(phong_stats);
     }
+    // System stage: geometry spans through specular_system (the setup in hardware).
+    SystemStats system;
+    if (system_spans > 0) {
+      system = run_system_stage(scenes, specular::build_config("default"), seed, system_spans);
+      print_system_summary(system);
+    }
     const double run_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t_run).count();
     double rtl_total = 0, golden_total = 0, ref_total = 0;
     for (const auto& s : all) {
@@ -654,6 +669,10 @@ int main(int argc, char** argv) {
       ok = ok && s.ok();
       for (const auto& msg : s.failures) std::cout << "FAIL phong " << msg << "\n";
     }
+    if (system_spans > 0) {
+      ok = ok && system.ok();
+      if (!system.ok()) std::cout << "FAIL system stage: see the system summary\n";
+    }
     if (!json_path.empty()) {
       nlohmann::json j = {{"seed", seed}, {"random_lines_per_config", random_lines}, {"ok", ok}};
       for (const auto& s : all) j["configs"][s.policy] = s.to_json();
@@ -675,6 +694,11 @@ int main(int argc, char** argv) {
                               {"rel_lsb", s.rel_lsb}, {"abs_lsb", s.abs_lsb}, {"rel_lsb_truth", s.rel_lsb_truth},
                               {"abs_lsb_truth", s.abs_lsb_truth}, {"rel_violations", s.rel_violations},
                               {"abs_violations", s.abs_violations}};
+      for (const auto& r : system.runs)
+        j["system"][r.name] = {{"spans", r.spans}, {"pixels", r.pixels}, {"mismatches", r.mismatches},
+                               {"px_per_clock_fill", r.px_per_clock_fill()}, {"px_per_clock_steady", r.px_per_clock_steady()},
+                               {"setup_rel_epicenter", r.setup_rel}, {"setup_lsb", r.setup_lsb},
+                               {"e2e_rel_epicenter", r.e2e_rel}, {"e2e_lsb", r.e2e_lsb}, {"ok", r.ok()}};
       j["run_seconds"] = run_seconds;
       j["rtl_seconds"] = rtl_total;
       j["golden_seconds"] = golden_total;

@@ -1,0 +1,440 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// specular_setup: the scanline setup in hardware (docs/setup_hw.md). Geometry spans in
+// (docs/interfaces.md#geometry-span-interface), specular_stream's span descriptors out
+// (C, psi0, dpsi, n, l, tag) and the setup's status, one span per clock. Bit-exact golden
+// model: host::fixed::setup_fixed (model/host/setup_fixed.hpp), whose steps and widths are
+// those below.
+//
+// Ports:
+//   clk_i, rst_ni                      clock; asynchronous reset, active low: drops every
+//                                      span in flight, the setup is empty afterwards
+//   geo_valid_i, geo_ready_o           geometry span handshake
+//   geo_n1_i, geo_n2_i, geo_h1_i, geo_he_i  {z, y, x}, VecBits each, signed
+//   geo_n_i[10], geo_len_i[11], geo_scale_i[16], geo_tag_i[TagBits]
+//   span_valid_o, span_ready_i         span descriptor handshake (specular_stream's span side)
+//   span_c_o[16], span_psi0_o[32], span_dpsi_o[32], span_n_o[10], span_len_o[11], span_tag_o
+//   span_status_o[3]                   SetupStatus of scanline_setup.hpp: 0 ok, 1 invalid_input,
+//                                      2 undefined_halfway, 3 opposite_normals, 4 opposite_halfway
+//
+// Handshake, AXI4-Stream rules on both sides. span_valid_o and the descriptor are
+// registers of a two-entry output buffer (specular_out_buf) and hold until the transfer.
+// geo_ready_o is a register (the buffer's room): high when the pipeline advances at the next
+// edge; every stage is enabled by it, so a stall freezes the whole pipeline. With
+// span_ready_i high, one span per clock is accepted and emitted (SetupII = 1), Latency
+// clocks after its acceptance.
+//
+// Pipeline (tau: registers after the input register; the golden model's steps):
+//   0        the input register; decode: invalid_input, undefined_halfway, opposite normals
+//            (the integer cross product)
+//   1..9     normalize N1, N2, H1, He (four specular_setup_norm)
+//   10..18   normalize the bisector N1 + N2
+//   19, 20   y = S_m(He) (He for opposite normals)      21, 22: H2 = S_N1(y)
+//   23       cos t1, x = H1.H2, the flat and opposite-halfway tests   24: W
+//   25..33   normalize W                                34: |W|, N1.u
+//   35..83   two CORDIC vectorings: gamma; lambda and A K
+//   84       gamma (0 flat, pi opposite halfway), A, psi0; the 1/l ROM is read
+//   85       dpsi                                       85..89: log2 A
+//   90       n log2 A                                   91..96: C
+//   then     the output buffer
+// Patent block numbers do not apply: the patent leaves the setup to the host.
+
+`include "specular_assert.svh"
+
+module specular_setup #(
+  parameter int VecBits       = 18,
+  parameter int TagBits       = 16,
+  // 1: the end halfway vector equals the first (a directional light and a viewer at
+  // infinity): geo_he_i is ignored and its normalizer is not built.
+  parameter bit HeEqH1        = 1'b0,
+  parameter     RsqrtSeedFile = "roms/setup/rsqrt_seed.hex",
+  parameter     LogRecipFile  = "roms/setup/log_recip.hex",
+  parameter     LogValueFile  = "roms/setup/log_value.hex",
+  parameter     Exp2File      = "roms/setup/exp2.hex",
+  parameter     RecipLenFile  = "roms/setup/recip_len.hex"
+) (
+  input  logic                 clk_i,
+  input  logic                 rst_ni,
+  input  logic                 geo_valid_i,
+  output logic                 geo_ready_o,
+  input  logic [3*VecBits-1:0] geo_n1_i,
+  input  logic [3*VecBits-1:0] geo_n2_i,
+  input  logic [3*VecBits-1:0] geo_h1_i,
+  input  logic [3*VecBits-1:0] geo_he_i,
+  input  logic [9:0]           geo_n_i,
+  input  logic [10:0]          geo_len_i,
+  input  logic [15:0]          geo_scale_i,
+  input  logic [TagBits-1:0]   geo_tag_i,
+  output logic                 span_valid_o,
+  input  logic                 span_ready_i,
+  output logic [15:0]          span_c_o,
+  output logic [31:0]          span_psi0_o,
+  output logic [31:0]          span_dpsi_o,
+  output logic [9:0]           span_n_o,
+  output logic [10:0]          span_len_o,
+  output logic [TagBits-1:0]   span_tag_o,
+  output logic [2:0]           span_status_o
+);
+
+  // The setup's widths and constants (Yosys 0.23 has no import inside a module).
+  localparam int VecW         = specular_setup_pkg::VecW;
+  localparam int VecTBits     = 3 * VecW;  // a vec_t
+  localparam logic signed [VecW-1:0] Floor = VecW'(specular_setup_pkg::ChordFloor);
+  localparam int UnitFrac     = specular_setup_pkg::UnitFrac;
+  localparam int CordicFrac   = specular_setup_pkg::CordicFrac;
+  localparam int RecipLenFrac = specular_setup_pkg::RecipLenFrac;
+  localparam int NormStages   = specular_setup_pkg::NormStages;
+  localparam int CordicStages = specular_setup_pkg::CordicStages;
+  localparam int LogStages    = specular_setup_pkg::LogStages;
+  localparam int ExpStages    = specular_setup_pkg::ExpStages;
+  localparam logic signed [63:0] PiQ48   = specular_setup_pkg::PiQ48;
+  localparam logic signed [63:0] InvGain = specular_setup_pkg::InvGain;
+
+  // The register formats of specular_stream's defaults (device::Format in
+  // model/device/device_model.hpp), which the golden model requires.
+  localparam int CBits     = 16;
+  localparam int AngleBits = 32;
+  localparam int AngleFrac = 28;
+  localparam int NBits     = 10;
+  localparam int LenBits   = 11;
+  localparam int MaxN      = 1000;
+  localparam int Up        = CordicFrac - UnitFrac;  // Q44 -> Q48
+  // tau of each step's output (see the header).
+  localparam int TNorm1  = NormStages;               // 9
+  localparam int TNorm2  = TNorm1 + NormStages;      // 18
+  localparam int TH2     = TNorm2 + 4;               // 22
+  localparam int TTest   = TH2 + 1;                  // 23
+  localparam int TW      = TTest + 1;                // 24
+  localparam int TU      = TW + NormStages;          // 33
+  localparam int TNu     = TU + 1;                   // 34
+  localparam int TCordic = TNu + CordicStages;       // 83
+  localparam int TRegs   = TCordic + 1;              // 84
+  localparam int TLog    = TRegs + LogStages;        // 89
+  localparam int TE      = TLog + 1;                 // 90
+  localparam int TC      = TE + ExpStages;           // 96
+  localparam int OutBits = CBits + 2 * AngleBits + NBits + LenBits + TagBits + 3;
+
+  if (VecBits < 2 || VecBits > 24 || TagBits < 1) begin : gen_param_check
+    `SPEC_PARAM_ERROR("specular_setup: VecBits must be in 2..24 and TagBits >= 1")
+  end
+
+  typedef logic signed [VecW-1:0] comp_t;
+  typedef struct packed {
+    comp_t z;
+    comp_t y;
+    comp_t x;
+  } vec_t;
+
+  logic adv;
+  assign geo_ready_o = adv;
+
+  // ---- tau 0: the input register ----
+  logic                 in_valid_q;
+  logic [3*VecBits-1:0] n1_q, n2_q, h1_q, he_q;
+  logic [NBits-1:0]     n_q;
+  logic [LenBits-1:0]   len_q;
+  logic [CBits-1:0]     scale_q;
+  logic [TagBits-1:0]   tag_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      in_valid_q <= 1'b0;
+    end else if (adv) begin
+      in_valid_q <= geo_valid_i;
+    end
+  end
+  always_ff @(posedge clk_i) begin
+    if (adv) begin
+      n1_q    <= geo_n1_i;
+      n2_q    <= geo_n2_i;
+      h1_q    <= geo_h1_i;
+      he_q    <= HeEqH1 ? geo_h1_i : geo_he_i;
+      n_q     <= geo_n_i;
+      len_q   <= geo_len_i;
+      scale_q <= geo_scale_i;
+      tag_q   <= geo_tag_i;
+    end
+  end
+
+  // Decode (combinational on tau 0).
+  vec_t c1, c2, c3, c4;
+  assign c1 = {VecW'($signed(n1_q[3*VecBits-1:2*VecBits])), VecW'($signed(n1_q[2*VecBits-1:VecBits])),
+               VecW'($signed(n1_q[VecBits-1:0]))};
+  assign c2 = {VecW'($signed(n2_q[3*VecBits-1:2*VecBits])), VecW'($signed(n2_q[2*VecBits-1:VecBits])),
+               VecW'($signed(n2_q[VecBits-1:0]))};
+  assign c3 = {VecW'($signed(h1_q[3*VecBits-1:2*VecBits])), VecW'($signed(h1_q[2*VecBits-1:VecBits])),
+               VecW'($signed(h1_q[VecBits-1:0]))};
+  assign c4 = {VecW'($signed(he_q[3*VecBits-1:2*VecBits])), VecW'($signed(he_q[2*VecBits-1:VecBits])),
+               VecW'($signed(he_q[VecBits-1:0]))};
+  logic invalid, undefined, opp_normals;
+  logic signed [63:0] cr_x, cr_y, cr_z, cdot;
+  always_comb begin
+    cr_x = 64'(c1.y) * 64'(c2.z) - 64'(c1.z) * 64'(c2.y);
+    cr_y = 64'(c1.z) * 64'(c2.x) - 64'(c1.x) * 64'(c2.z);
+    cr_z = 64'(c1.x) * 64'(c2.y) - 64'(c1.y) * 64'(c2.x);
+    cdot = 64'(c1.x) * 64'(c2.x) + 64'(c1.y) * 64'(c2.y) + 64'(c1.z) * 64'(c2.z);
+    invalid     = n_q == '0 || n_q > NBits'(MaxN) || n1_q == '0 || n2_q == '0;
+    undefined   = h1_q == '0 || he_q == '0;
+    opp_normals = cr_x == 0 && cr_y == 0 && cr_z == 0 && cdot < 0;
+  end
+
+  // ---- Normalizers ----
+  vec_t n1u, n2u, h1u, heu, mu, uu, w_q;
+  specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_n1 (
+    .clk_i (clk_i), .en_i (adv), .x_i (c1.x), .y_i (c1.y), .z_i (c1.z), .x_o (n1u.x), .y_o (n1u.y), .z_o (n1u.z)
+  );
+  specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_n2 (
+    .clk_i (clk_i), .en_i (adv), .x_i (c2.x), .y_i (c2.y), .z_i (c2.z), .x_o (n2u.x), .y_o (n2u.y), .z_o (n2u.z)
+  );
+  specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_h1 (
+    .clk_i (clk_i), .en_i (adv), .x_i (c3.x), .y_i (c3.y), .z_i (c3.z), .x_o (h1u.x), .y_o (h1u.y), .z_o (h1u.z)
+  );
+  if (HeEqH1) begin : gen_he_eq_h1
+    assign heu = h1u;
+    logic unused_c4;
+    assign unused_c4 = ^c4;
+  end else begin : gen_he
+    specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_he (
+      .clk_i (clk_i), .en_i (adv), .x_i (c4.x), .y_i (c4.y), .z_i (c4.z), .x_o (heu.x), .y_o (heu.y), .z_o (heu.z)
+    );
+  end
+  // tau 9 -> 18: the bisector.
+  specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_m (
+    .clk_i (clk_i), .en_i (adv),
+    .x_i (n1u.x + n2u.x), .y_i (n1u.y + n2u.y), .z_i (n1u.z + n2u.z),
+    .x_o (mu.x), .y_o (mu.y), .z_o (mu.z)
+  );
+  // tau 24 -> 33: u.
+  specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_w (
+    .clk_i (clk_i), .en_i (adv), .x_i (w_q.x), .y_i (w_q.y), .z_i (w_q.z), .x_o (uu.x), .y_o (uu.y), .z_o (uu.z)
+  );
+
+  // Vectors beside the normalizers: N1 and H1 from tau 9 to 18, He too.
+  vec_t n1_18, h1_18, he_18;
+  specular_delay #(.Width(VecTBits), .Depth(NormStages), .Reset(1'b0)) u_dly_n1 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n1u), .q_o (n1_18)
+  );
+  specular_delay #(.Width(VecTBits), .Depth(NormStages), .Reset(1'b0)) u_dly_h1 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (h1u), .q_o (h1_18)
+  );
+  specular_delay #(.Width(VecTBits), .Depth(NormStages), .Reset(1'b0)) u_dly_he (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (heu), .q_o (he_18)
+  );
+  // Opposite normals at tau 19.
+  logic opp_n_19;
+  specular_delay #(.Width(1), .Depth(TNorm2 + 1), .Reset(1'b0)) u_dly_oppn (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (opp_normals), .q_o (opp_n_19)
+  );
+
+  // a.b rounded once, Q44.
+  function automatic logic signed [63:0] dot(input logic signed [VecW-1:0] ax, input logic signed [VecW-1:0] ay,
+                                             input logic signed [VecW-1:0] az, input logic signed [VecW-1:0] bx,
+                                             input logic signed [VecW-1:0] by, input logic signed [VecW-1:0] bz);
+    dot = 64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(ax), 64'(bx)) +
+                                               specular_setup_pkg::mul(64'(ay), 64'(by)) +
+                                               specular_setup_pkg::mul(64'(az), 64'(bz)), UnitFrac));
+  endfunction
+  // One component of v - s u 2^(44 - sh) (sh = 43: a reflection's v - 2 (v.u) u).
+  function automatic logic signed [VecW-1:0] sub_scaled(input logic signed [VecW-1:0] v, input logic signed [63:0] sc,
+                                                        input logic signed [VecW-1:0] u, input int sh);
+    sub_scaled = v - VecW'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(sc, 64'(u)), sh));
+  endfunction
+  function automatic logic within_floor(input logic signed [VecW-1:0] d);
+    within_floor = d <= Floor && d >= -Floor;
+  endfunction
+
+  // ---- tau 19 .. 24: the rotation, the tests, W ----
+  vec_t he_19, m_19, y_20, y_21, h2_22, h2_23, h1_23, n1_23;
+  vec_t n1_19, n1_20, n1_21, n1_22, h1_19, h1_20, h1_21, h1_22;
+  logic signed [63:0] s1_19, s2_21, cos_t1_23, x_23;
+  logic flat_23, opp_h_23;
+  always_ff @(posedge clk_i) begin
+    if (adv) begin
+      // tau 19
+      s1_19 <= dot(he_18.x, he_18.y, he_18.z, mu.x, mu.y, mu.z);
+      he_19 <= he_18;
+      m_19  <= mu;
+      n1_19 <= n1_18;
+      h1_19 <= h1_18;
+      // tau 20
+      y_20  <= opp_n_19 ? he_19 : {sub_scaled(he_19.z, s1_19, m_19.z, UnitFrac - 1), sub_scaled(he_19.y, s1_19, m_19.y, UnitFrac - 1), sub_scaled(he_19.x, s1_19, m_19.x, UnitFrac - 1)};
+      n1_20 <= n1_19;
+      h1_20 <= h1_19;
+      // tau 21
+      s2_21 <= dot(y_20.x, y_20.y, y_20.z, n1_20.x, n1_20.y, n1_20.z);
+      y_21  <= y_20;
+      n1_21 <= n1_20;
+      h1_21 <= h1_20;
+      // tau 22
+      h2_22 <= {sub_scaled(y_21.z, s2_21, n1_21.z, UnitFrac - 1), sub_scaled(y_21.y, s2_21, n1_21.y, UnitFrac - 1), sub_scaled(y_21.x, s2_21, n1_21.x, UnitFrac - 1)};
+      n1_22 <= n1_21;
+      h1_22 <= h1_21;
+      // tau 23
+      cos_t1_23 <= dot(n1_22.x, n1_22.y, n1_22.z, h1_22.x, h1_22.y, h1_22.z);
+      x_23      <= dot(h1_22.x, h1_22.y, h1_22.z, h2_22.x, h2_22.y, h2_22.z);
+      flat_23   <= within_floor(h2_22.x - h1_22.x) && within_floor(h2_22.y - h1_22.y) && within_floor(h2_22.z - h1_22.z);
+      opp_h_23  <= !(within_floor(h2_22.x - h1_22.x) && within_floor(h2_22.y - h1_22.y) && within_floor(h2_22.z - h1_22.z)) &&
+                   within_floor(h2_22.x + h1_22.x) && within_floor(h2_22.y + h1_22.y) && within_floor(h2_22.z + h1_22.z);
+      h2_23 <= h2_22;
+      h1_23 <= h1_22;
+      n1_23 <= n1_22;
+      // tau 24
+      w_q <= opp_h_23 ? {sub_scaled(n1_23.z, cos_t1_23, h1_23.z, UnitFrac), sub_scaled(n1_23.y, cos_t1_23, h1_23.y, UnitFrac), sub_scaled(n1_23.x, cos_t1_23, h1_23.x, UnitFrac)} : {sub_scaled(h2_23.z, x_23, h1_23.z, UnitFrac), sub_scaled(h2_23.y, x_23, h1_23.y, UnitFrac), sub_scaled(h2_23.x, x_23, h1_23.x, UnitFrac)};
+    end
+  end
+
+  // Beside the W normalizer: W, N1 (tau 24 -> 33), and the flags, x, cos t1 (tau 23 -> 34).
+  vec_t w_33, n1_33, n1_24;
+  always_ff @(posedge clk_i) begin
+    if (adv) n1_24 <= n1_23;
+  end
+  specular_delay #(.Width(VecTBits), .Depth(NormStages), .Reset(1'b0)) u_dly_w (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (w_q), .q_o (w_33)
+  );
+  specular_delay #(.Width(VecTBits), .Depth(NormStages), .Reset(1'b0)) u_dly_n1b (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n1_24), .q_o (n1_33)
+  );
+  logic signed [63:0] x_34, cos_t1_34;
+  logic flat_33, flat_34;
+  specular_delay #(.Width(128), .Depth(TNu - TTest), .Reset(1'b0)) u_dly_xc (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({x_23, cos_t1_23}), .q_o ({x_34, cos_t1_34})
+  );
+  specular_delay #(.Width(1), .Depth(TU - TTest), .Reset(1'b0)) u_dly_flat (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (flat_23), .q_o (flat_33)
+  );
+
+  // ---- tau 34: |W| and N1.u ----
+  logic signed [63:0] wl_34, nu_34;
+  always_ff @(posedge clk_i) begin
+    if (adv) begin
+      wl_34   <= dot(uu.x, uu.y, uu.z, w_33.x, w_33.y, w_33.z);
+      nu_34   <= flat_33 ? '0 : dot(n1_33.x, n1_33.y, n1_33.z, uu.x, uu.y, uu.z);
+      flat_34 <= flat_33;
+    end
+  end
+
+  // ---- tau 35 .. 83: CORDIC ----
+  logic signed [63:0] gamma_angle, gamma_mag_unused, lambda_83, amag_83;
+  specular_setup_cordic u_cordic_gamma (
+    .clk_i (clk_i), .en_i (adv), .x_i (x_34 <<< Up), .y_i (wl_34 <<< Up), .angle_o (gamma_angle), .mag_o (gamma_mag_unused)
+  );
+  specular_setup_cordic u_cordic_lambda (
+    .clk_i (clk_i), .en_i (adv), .x_i (cos_t1_34 <<< Up), .y_i (nu_34 <<< Up), .angle_o (lambda_83), .mag_o (amag_83)
+  );
+  logic flat_83, opp_h_83;
+  specular_delay #(.Width(2), .Depth(TCordic - TTest), .Reset(1'b0)) u_dly_flags (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({flat_23, opp_h_23}), .q_o ({flat_83, opp_h_83})
+  );
+  logic unused_flat_34;
+  assign unused_flat_34 = flat_34;
+
+  // Sideband from tau 0: len at tau 83 (the 1/l ROM), n at tau 89, scale at tau 90, the rest
+  // at tau 96.
+  logic [LenBits-1:0] len_83, len_96;
+  logic [NBits-1:0]   n_89, n_96;
+  logic [CBits-1:0]   scale_90;
+  logic [TagBits-1:0] tag_96;
+  logic               invalid_96, undefined_96, opp_n_96, opp_h_96;
+  specular_delay #(.Width(LenBits), .Depth(TCordic), .Reset(1'b0)) u_dly_len (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (len_q), .q_o (len_83)
+  );
+  specular_delay #(.Width(NBits), .Depth(TLog), .Reset(1'b0)) u_dly_n (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n_q), .q_o (n_89)
+  );
+  specular_delay #(.Width(CBits), .Depth(TE), .Reset(1'b0)) u_dly_scale (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (scale_q), .q_o (scale_90)
+  );
+  specular_delay #(.Width(LenBits + NBits + TagBits + 3), .Depth(TC), .Reset(1'b0)) u_dly_out (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv),
+    .d_i ({len_q, n_q, tag_q, invalid, undefined, opp_normals}),
+    .q_o ({len_96, n_96, tag_96, invalid_96, undefined_96, opp_n_96})
+  );
+  specular_delay #(.Width(1), .Depth(TC - TTest), .Reset(1'b0)) u_dly_opph (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (opp_h_23), .q_o (opp_h_96)
+  );
+
+  // ---- tau 84: gamma, A, psi0; the 1/l ROM ----
+  logic signed [63:0] gamma_84, a_84;
+  logic [AngleBits-1:0] psi0_84, psi0_96;
+  logic [RecipLenFrac:0] recip_84;
+  always_ff @(posedge clk_i) begin
+    if (adv) begin
+      gamma_84 <= flat_83 ? '0 : opp_h_83 ? PiQ48
+                : gamma_angle < 0 ? '0 : gamma_angle > PiQ48 ? PiQ48 : gamma_angle;
+      a_84     <= 64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(amag_83, InvGain), 2 * CordicFrac - UnitFrac));
+      psi0_84  <= AngleBits'(specular_setup_pkg::rshift_round(128'sd0 - 128'(lambda_83), CordicFrac - AngleFrac));
+    end
+  end
+  specular_rom #(.Width(RecipLenFrac + 1), .AddrBits(LenBits), .File(RecipLenFile)) u_recip_len_rom (
+    .clk_i (clk_i), .en_i (adv), .addr_i (len_83), .data_o (recip_84)
+  );
+  specular_delay #(.Width(AngleBits), .Depth(TC - TRegs), .Reset(1'b0)) u_dly_psi0 (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (psi0_84), .q_o (psi0_96)
+  );
+  logic a_pos_96;
+  specular_delay #(.Width(1), .Depth(TC - TRegs), .Reset(1'b0)) u_dly_apos (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (a_84 > 0), .q_o (a_pos_96)
+  );
+
+  // ---- tau 85: dpsi ----
+  logic [AngleBits-1:0] dpsi_85, dpsi_96;
+  always_ff @(posedge clk_i) begin
+    if (adv) begin
+      dpsi_85 <= AngleBits'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(gamma_84, 64'(recip_84)), CordicFrac + RecipLenFrac - AngleFrac));
+    end
+  end
+  specular_delay #(.Width(AngleBits), .Depth(TC - TRegs - 1), .Reset(1'b0)) u_dly_dpsi (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (dpsi_85), .q_o (dpsi_96)
+  );
+
+  // ---- tau 85 .. 96: C = scale 2^(n log2 A) ----
+  logic signed [63:0] log2_89, e_90;
+  specular_setup_log2 #(.LogRecipFile(LogRecipFile), .LogValueFile(LogValueFile)) u_log2 (
+    .clk_i (clk_i), .en_i (adv), .a_i (a_84), .log2_o (log2_89)
+  );
+  always_ff @(posedge clk_i) begin
+    if (adv) e_90 <= 64'(n_89) * log2_89;
+  end
+  logic [CBits-1:0] c_96;
+  logic             sat_96_unused;
+  specular_setup_exp2 #(.CBits(CBits), .Exp2File(Exp2File)) u_exp2 (
+    .clk_i (clk_i), .en_i (adv), .e_i (e_90), .scale_i (scale_90), .c_o (c_96), .sat_o (sat_96_unused)
+  );
+
+  // ---- tau 96: the descriptor; then the output buffer ----
+  logic valid_96;
+  specular_delay #(.Width(1), .Depth(TC), .Reset(1'b1)) u_dly_valid (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (in_valid_q), .q_o (valid_96)
+  );
+  logic             zero_96;
+  logic [2:0]       status_96;
+  logic [OutBits-1:0] out_d, out_q;
+  always_comb begin
+    zero_96   = invalid_96 || undefined_96;
+    status_96 = invalid_96 ? 3'd1 : undefined_96 ? 3'd2 : opp_h_96 ? 3'd4 : opp_n_96 ? 3'd3 : 3'd0;
+    out_d = {zero_96 || !a_pos_96 ? CBits'(0) : c_96,
+             zero_96 ? AngleBits'(0) : psi0_96,
+             zero_96 ? AngleBits'(0) : dpsi_96,
+             n_96, len_96, tag_96, status_96};
+  end
+  specular_out_buf #(.Width(OutBits)) u_out_buf (
+    .clk_i      (clk_i),
+    .rst_ni     (rst_ni),
+    .adv_o      (adv),
+    .in_valid_i (valid_96),
+    .in_data_i  (out_d),
+    .px_valid_o (span_valid_o),
+    .px_ready_i (span_ready_i),
+    .px_data_o  (out_q)
+  );
+  assign {span_c_o, span_psi0_o, span_dpsi_o, span_n_o, span_len_o, span_tag_o, span_status_o} = out_q;
+
+  logic unused;
+  assign unused = ^{gamma_mag_unused, sat_96_unused};
+
+  // Assertions (rtl/specular_assert.svh): the handshake inputs are known.
+  `SPEC_ASSERT_KNOWN(GeoValidKnown_A, geo_valid_i, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(GeoDataKnown_A, {geo_n1_i, geo_n2_i, geo_h1_i, geo_he_i, geo_n_i, geo_len_i, geo_scale_i},
+                        geo_valid_i && geo_ready_o, clk_i, rst_ni)
+
+endmodule

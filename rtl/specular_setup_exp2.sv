@@ -1,0 +1,107 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// specular_setup_exp2: C = scale 2^e, rounded to a code and saturated at the top of
+// register 1, pipelined, one value per clock (docs/setup_hw.md#datapath, step 7; the
+// golden model is host::fixed::scale_exp2 in model/host/setup_fixed.hpp). e is Q40;
+// e = ei + f, ei = floor(e); a 1024-word table gives 2^(j/1024) for the top 10 bits j of f,
+// and 2^g = 1 + g (E1 + g (E2 + g E3)) the rest g < 2^-10.
+//
+//   stage 1  ei, g; the ROM is read        stages 2, 3, 4: the Horner steps
+//   stage 5  mant = 2^(j/1024) 2^g         stage 6: scale mant 2^ei, rounded, saturated
+// Stages: specular_setup_pkg::ExpStages. en_i freezes every stage. No reset.
+
+`include "specular_assert.svh"
+
+module specular_setup_exp2 #(
+  parameter int CBits   = 16,
+  parameter     Exp2File = "roms/setup/exp2.hex"
+) (
+  input  logic               clk_i,
+  input  logic               en_i,
+  input  logic signed [63:0] e_i,
+  input  logic [CBits-1:0]   scale_i,
+  output logic [CBits-1:0]   c_o,
+  output logic               sat_o     // C was clamped to the top code
+);
+
+  localparam int LogFrac  = specular_setup_pkg::LogFrac;
+  localparam int AddrBits = specular_setup_pkg::LogAddrBits;
+  localparam int LoBits   = LogFrac - AddrBits;
+  localparam int Stages   = 6;
+  localparam logic signed [63:0] MaxCode = (64'sd1 <<< CBits) - 1;
+  localparam int                 MinEiInt = -(LogFrac + 1);  // below: C rounds to 0
+  localparam logic signed [63:0] MinEi = 64'(MinEiInt);
+
+  if (Stages != specular_setup_pkg::ExpStages) begin : gen_stage_check
+    `SPEC_PARAM_ERROR("specular_setup_exp2: specular_setup_pkg::ExpStages disagrees with the stages built here")
+  end
+  // Above 2^16 every non-zero scale saturates (the exponent test of stage 6).
+  if (CBits > 16) begin : gen_width_check
+    `SPEC_PARAM_ERROR("specular_setup_exp2: CBits must be at most 16")
+  end
+
+  // Stage 1.
+  logic signed [63:0]  ei_d, f_d;
+  logic [AddrBits-1:0] j_d;
+  assign ei_d = e_i >>> LogFrac;
+  assign f_d  = e_i - (ei_d <<< LogFrac);
+  assign j_d  = f_d[LogFrac-1 -: AddrBits];
+  logic [LogFrac:0] pow_j;  // 2^(j/1024), Q40
+  specular_rom #(.Width(LogFrac + 1), .AddrBits(AddrBits), .File(Exp2File)) u_exp2_rom (
+    .clk_i (clk_i), .en_i (en_i), .addr_i (j_d), .data_o (pow_j)
+  );
+
+  logic signed [63:0] g_q [1:4];
+  logic signed [63:0] ei_q [1:5];
+  logic [CBits-1:0]   scale_q [1:5];
+  logic signed [63:0] pow_q [2:4];
+  logic signed [63:0] t2_q, t3_q, p4_q, mant_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      g_q[1]     <= f_d & ((64'sd1 <<< LoBits) - 1);
+      ei_q[1]    <= ei_d;
+      scale_q[1] <= scale_i;
+      for (int s = 2; s <= 5; s++) begin
+        ei_q[s]    <= ei_q[s-1];
+        scale_q[s] <= scale_q[s-1];
+      end
+      for (int s = 2; s <= 4; s++) begin
+        g_q[s] <= g_q[s-1];
+      end
+      pow_q[2] <= 64'(pow_j);
+      pow_q[3] <= pow_q[2];
+      pow_q[4] <= pow_q[3];
+      t2_q   <= specular_setup_pkg::E2 +
+                64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(g_q[1], specular_setup_pkg::E3), LogFrac));
+      t3_q   <= specular_setup_pkg::E1 +
+                64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(g_q[2], t2_q), LogFrac));
+      p4_q   <= (64'sd1 <<< LogFrac) +
+                64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(g_q[3], t3_q), LogFrac));
+      mant_q <= 64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(pow_q[4], p4_q), LogFrac));
+    end
+  end
+
+  // Stage 6.
+  logic signed [127:0] v;
+  assign v = specular_setup_pkg::rshift_round(specular_setup_pkg::mul(mant_q, 64'(scale_q[5])),
+                                              32'(LogFrac) - 32'(ei_q[5] > 64'sd16 ? 64'sd16 : ei_q[5] < -64'sd80 ? -64'sd80 : ei_q[5]));
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      if (scale_q[5] == '0 || ei_q[5] < MinEi) begin
+        c_o   <= '0;
+        sat_o <= 1'b0;
+      end else if (ei_q[5] > 64'sd16 || v > 128'(MaxCode)) begin
+        c_o   <= CBits'(MaxCode);
+        sat_o <= 1'b1;
+      end else begin
+        c_o   <= CBits'(v);
+        sat_o <= 1'b0;
+      end
+    end
+  end
+
+  logic unused_g;
+  assign unused_g = ^g_q[4];
+
+endmodule

@@ -1,0 +1,91 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// specular_setup_log2: log2 of a positive Q44 value, Q40, pipelined, one value per clock
+// (docs/setup_hw.md#datapath, step 7; the golden model is host::fixed::log2_q44 in
+// model/host/setup_fixed.hpp). a = 2^(p-44) mant, mant in [1, 2); a 1024-word table pair
+// gives a 12-bit reciprocal r_i of the interval of mant and -log2 r_i; e = mant r_i - 1,
+// |e| < 2^-10, and log2(1 + e) = e (L1 + e (L2 + e L3)).
+//
+//   stage 1  p and mant (leading-one position); both ROMs are read
+//   stage 2  e = mant r_i - 1             stages 3, 4: the Horner steps
+//   stage 5  (p - 44) + (-log2 r_i) + e (...)
+// Stages: specular_setup_pkg::LogStages. A non-positive a gives a defined, meaningless
+// value (the setup does not use it). en_i freezes every stage. No reset.
+
+`include "specular_assert.svh"
+
+module specular_setup_log2 #(
+  parameter LogRecipFile = "roms/setup/log_recip.hex",
+  parameter LogValueFile = "roms/setup/log_value.hex"
+) (
+  input  logic               clk_i,
+  input  logic               en_i,
+  input  logic signed [63:0] a_i,
+  output logic signed [63:0] log2_o
+);
+
+  localparam int UnitFrac  = specular_setup_pkg::UnitFrac;
+  localparam int LogFrac   = specular_setup_pkg::LogFrac;
+  localparam int AddrBits  = specular_setup_pkg::LogAddrBits;
+  localparam int RecipFrac = specular_setup_pkg::LogRecipFrac;
+  localparam int Stages    = 5;
+
+  if (Stages != specular_setup_pkg::LogStages) begin : gen_stage_check
+    `SPEC_PARAM_ERROR("specular_setup_log2: specular_setup_pkg::LogStages disagrees with the stages built here")
+  end
+
+  // Stage 1.
+  logic signed [31:0] p_d;
+  logic signed [63:0] mant_d;
+  always_comb begin
+    p_d = -1;
+    for (int b = 0; b < 63; b++) begin
+      if (a_i[b]) p_d = b;
+    end
+    if (p_d <= UnitFrac) begin
+      mant_d = a_i <<< (UnitFrac - p_d);
+    end else begin
+      mant_d = a_i >>> (p_d - UnitFrac);
+    end
+  end
+  logic signed [31:0] p_rel;
+  assign p_rel = p_d - 32'(UnitFrac);
+  logic [AddrBits-1:0] idx;
+  assign idx = mant_d[UnitFrac-1 -: AddrBits];
+  logic [RecipFrac-1:0] recip;   // r_i < 2^12
+  logic [LogFrac:0]     value;   // -log2 r_i in [0, 1], Q40
+  specular_rom #(.Width(RecipFrac), .AddrBits(AddrBits), .File(LogRecipFile)) u_recip_rom (
+    .clk_i (clk_i), .en_i (en_i), .addr_i (idx), .data_o (recip)
+  );
+  specular_rom #(.Width(LogFrac + 1), .AddrBits(AddrBits), .File(LogValueFile)) u_value_rom (
+    .clk_i (clk_i), .en_i (en_i), .addr_i (idx), .data_o (value)
+  );
+
+  logic signed [63:0] mant_q, e_q, t3_q, t4_q;
+  logic signed [63:0] e_q4, e_q5;    // e beside the Horner steps
+  logic signed [63:0] base_q [2:4];  // (p - 44) 2^40 + (-log2 r_i), beside them too
+  logic signed [63:0] p_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      mant_q <= mant_d;
+      p_q    <= 64'(p_rel) <<< LogFrac;
+      // stage 2
+      e_q       <= 64'(specular_setup_pkg::rshift_round(
+                       specular_setup_pkg::mul(mant_q, 64'(recip)) - (128'sd1 <<< (UnitFrac + RecipFrac)),
+                       UnitFrac + RecipFrac - LogFrac));
+      base_q[2] <= p_q + 64'(value);
+      // stages 3 and 4
+      t3_q      <= specular_setup_pkg::L2 +
+                   64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(e_q, specular_setup_pkg::L3), LogFrac));
+      base_q[3] <= base_q[2];
+      t4_q      <= specular_setup_pkg::L1 +
+                   64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(e_q4, t3_q), LogFrac));
+      base_q[4] <= base_q[3];
+      e_q4      <= e_q;
+      e_q5      <= e_q4;
+      // stage 5
+      log2_o    <= base_q[4] + 64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(e_q5, t4_q), LogFrac));
+    end
+  end
+endmodule

@@ -1,0 +1,150 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// specular_setup_norm: a vector scaled to unit length, pipelined, one vector per clock
+// (docs/setup_hw.md#datapath, step 2; the golden model is host::fixed::normalize in
+// model/host/setup_fixed.hpp). The input components share any scale (integer codes of the
+// geometry span interface or Q44); the output is Q44; the zero vector gives 0.
+//
+//   stage 1  sq = x^2 + y^2 + z^2 (exact)
+//   stage 2  m = sq 4^k in [2^46, 2^48) (leading-one position); the seed ROM is read
+//   stage 3  t = r0^2             stages 4, 5: p = m t, e = 3 - p;  r1 = r0 e / 2
+//   stage 6  t = r1^2             stages 7, 8: as 4, 5: r2
+//   stage 9  u = v r2 2^(k - 28), rounded
+// Stages: specular_setup_pkg::NormStages. en_i freezes every stage (pipeline stall). No
+// reset: the datapath carries no control state.
+
+`include "specular_assert.svh"
+
+module specular_setup_norm #(
+  parameter RsqrtSeedFile = "roms/setup/rsqrt_seed.hex"
+) (
+  input  logic                                   clk_i,
+  input  logic                                   en_i,
+  input  logic signed [specular_setup_pkg::VecW-1:0] x_i,
+  input  logic signed [specular_setup_pkg::VecW-1:0] y_i,
+  input  logic signed [specular_setup_pkg::VecW-1:0] z_i,
+  output logic signed [specular_setup_pkg::VecW-1:0] x_o,
+  output logic signed [specular_setup_pkg::VecW-1:0] y_o,
+  output logic signed [specular_setup_pkg::VecW-1:0] z_o
+);
+
+  localparam int W        = specular_setup_pkg::VecW;
+  localparam int InBits   = specular_setup_pkg::RsqrtInBits;
+  localparam int Frac     = specular_setup_pkg::RsqrtFrac;
+  localparam int AddrBits = specular_setup_pkg::RsqrtAddrBits;
+  localparam int SeedFrac = specular_setup_pkg::RsqrtSeedFrac;
+  localparam int SqBits   = 2 * W;  // 3 squares of W-bit values: < 3 2^(2W-2)
+  localparam int Stages   = 9;
+
+  if (Stages != specular_setup_pkg::NormStages) begin : gen_stage_check
+    `SPEC_PARAM_ERROR("specular_setup_norm: specular_setup_pkg::NormStages disagrees with the stages built here")
+  end
+
+  typedef logic signed [W-1:0] comp_t;
+  // The vector travels beside the reciprocal square root: vec_q[s] after stage s.
+  comp_t vx_q [1:Stages-1], vy_q [1:Stages-1], vz_q [1:Stages-1];
+  for (genvar s = 1; s < Stages; s++) begin : gen_vec
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        vx_q[s] <= (s == 1) ? x_i : vx_q[s == 1 ? 1 : s - 1];
+        vy_q[s] <= (s == 1) ? y_i : vy_q[s == 1 ? 1 : s - 1];
+        vz_q[s] <= (s == 1) ? z_i : vz_q[s == 1 ? 1 : s - 1];
+      end
+    end
+  end
+
+  // Stage 1: the squared length.
+  logic [SqBits-1:0] sq_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      sq_q <= SqBits'(specular_setup_pkg::mul(64'(x_i), 64'(x_i)) + specular_setup_pkg::mul(64'(y_i), 64'(y_i)) +
+                      specular_setup_pkg::mul(64'(z_i), 64'(z_i)));
+    end
+  end
+
+  // Stage 2: even shift into [2^46, 2^48); k = floor((48 - bit width) / 2).
+  logic signed [31:0]   bw;
+  logic signed [7:0]    k_d;
+  logic [InBits-1:0]    m_d;
+  always_comb begin
+    bw = 0;
+    for (int b = 0; b < SqBits; b++) begin
+      if (sq_q[b]) bw = b + 1;
+    end
+    k_d = 8'((32'(InBits) - bw) >>> 1);
+    if (k_d >= 0) begin
+      m_d = InBits'(sq_q << (2 * k_d));
+    end else begin
+      m_d = InBits'(sq_q >> (-2 * k_d));
+    end
+  end
+  logic [InBits-1:0] m_q [2:Stages-1];
+  logic signed [7:0] k_q [2:Stages];
+  for (genvar s = 2; s <= Stages; s++) begin : gen_mk
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        k_q[s] <= (s == 2) ? k_d : k_q[s == 2 ? 2 : s - 1];
+      end
+    end
+    if (s < Stages) begin : gen_m
+      always_ff @(posedge clk_i) begin
+        if (en_i) begin
+          m_q[s] <= (s == 2) ? m_d : m_q[s == 2 ? 2 : s - 1];
+        end
+      end
+    end
+  end
+  // The seed ROM: word a - 2^(AddrBits-2) for address a = m >> (InBits - AddrBits); the zero
+  // vector (m = 0) reads word 0 (its output is 0 whatever r is).
+  logic [AddrBits-1:0] seed_addr;
+  logic [SeedFrac:0]   seed;
+  assign seed_addr = m_d[InBits-1 -: 2] == 2'b00 ? '0
+                   : AddrBits'(m_d[InBits-1 -: AddrBits] - AddrBits'(1 << (AddrBits - 2)));
+  specular_rom #(
+    .Width    (SeedFrac + 1),
+    .AddrBits (AddrBits),
+    .Depth    (3 << (AddrBits - 2)),
+    .File     (RsqrtSeedFile)
+  ) u_seed_rom (
+    .clk_i  (clk_i),
+    .en_i   (en_i),
+    .addr_i (seed_addr),
+    .data_o (seed)
+  );
+
+  // Stages 3 .. 8: two Newton-Raphson steps r' = r (3 - m r^2) / 2, three stages each.
+  logic signed [63:0] r0, t_q [3:8], e_q [4:8], r_q [5:8];
+  assign r0 = 64'(seed) <<< (Frac - SeedFrac);
+  logic signed [63:0] r0_q3, r0_q4;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      // step 1
+      t_q[3] <= 64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(r0, r0), Frac));
+      r0_q3  <= r0;
+      e_q[4] <= (64'sd3 <<< Frac) -
+                64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(m_q[3]), t_q[3]), InBits));
+      r0_q4  <= r0_q3;
+      r_q[5] <= 64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(r0_q4, e_q[4]), Frac + 1));
+      // step 2
+      t_q[6] <= 64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(r_q[5], r_q[5]), Frac));
+      r_q[6] <= r_q[5];
+      e_q[7] <= (64'sd3 <<< Frac) -
+                64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(m_q[6]), t_q[6]), InBits));
+      r_q[7] <= r_q[6];
+      r_q[8] <= 64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(r_q[7], e_q[7]), Frac + 1));
+    end
+  end
+
+  // Stage 9: u = v r 2^(k - 28).
+  logic signed [31:0] shift;
+  assign shift = 32'(InBits / 2 + Frac - specular_setup_pkg::UnitFrac) - 32'(k_q[8]);
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      x_o <= W'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(vx_q[8]), r_q[8]), shift));
+      y_o <= W'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(vy_q[8]), r_q[8]), shift));
+      z_o <= W'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(vz_q[8]), r_q[8]), shift));
+    end
+  end
+
+endmodule
