@@ -52,9 +52,10 @@ stage-table: build
 	$(PYTHON) tests/docs/check_stage_counts.py --sim $(BUILD)/bin/sim_regression --root . --update
 
 roms: configure
-	@cmake --build $(BUILD) -j $(JOBS) --target romgen phong_romgen
+	@cmake --build $(BUILD) -j $(JOBS) --target romgen phong_romgen setup_romgen
 	./$(BUILD)/bin/romgen --all --out-dir roms
 	./$(BUILD)/bin/phong_romgen --out-dir roms/phong
+	./$(BUILD)/bin/setup_romgen --out roms/setup
 
 vcd: build
 	./$(BUILD)/bin/sim_regression --vcd-dir $(BUILD)/vcd --vcd-only
