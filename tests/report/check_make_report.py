@@ -211,7 +211,7 @@ def check_plane(out, md, data):
             errors.append(f"hardware plane: phong_{name}.json's n grid is not 1, 1+{step}, ..., 1000")
         ci = cells["phong"].get(f"{name}/ice40")
         expect.append((f"phong {name}", "phong_stream", ci and ci["SB_LUT4"], ci and ci["SB_DFF*"],
-                       ci and ci["SB_RAM40_4K"], cells["phong"].get(f"{name}/ecp5", "n/a"),
+                       ci and ci["SB_RAM40_4K"], cells["phong"].get(f"{name}/ecp5", "not run"),
                        [worst(p["n"], p["rel_lsb"], r) for r in ranges],
                        [worst(p["n"], p["abs_lsb"], r) for r in ranges]))
     if len(t) != len(expect):
@@ -228,7 +228,7 @@ def check_plane(out, md, data):
             lc = max(lut4, ff)
             cost = [str(lut4), str(ff), str(bram), str(lc),
                     "yes" if lc <= 7680 else "no: synthesis only; does not fit any iCE40"]
-        e = "-" if ecp5 is None else ("n/a" if ecp5 == "n/a" else
+        e = "-" if ecp5 is None else ("not run" if ecp5 == "not run" else
                                        f"{ecp5['LUT4']} / {ecp5['MULT18X18D']} / {ecp5['DP16KD']} / "
                                        f"{ecp5['TRELLIS_FF']} (synthesis only)")
         want = [name, core] + cost + [e] + [g(v) for v in rel] + [g(v) for v in ab]
@@ -247,7 +247,7 @@ def check_plane(out, md, data):
             errors.append(f"hardware plane: no conclusion line for n <= {rng}")
         elif best["device"] and best["phong"]:
             d, p = best["device"], best["phong"]
-            want = (f"- n <= {rng}: device {d[1]}, Phong {p[1]}: the Phong core takes **{p[0] / d[0]:.1f} x** the "
+            want = (f"- n <= {rng}: {d[1]} against {p[1]}: the Phong core takes **{p[0] / d[0]:.1f} x** the "
                     f"device's LUT4 and {(p[0] + p[2]) / (d[0] + d[2]):.1f} x its LUT4 + FF.")
             if line != want:
                 errors.append(f"hardware plane conclusion '{line}' != '{want}'")
