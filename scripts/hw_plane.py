@@ -276,13 +276,21 @@ def write(w, rows, phong, sim, n_step, synth_ran):
     if ph or ds:
         w("Clocks per pixel per scene (`sim_regression`, section 5; spans back to back, pixel side always ready; the "
           "Phong core n1000 with its per-span work in the core, the device's `specular_stream` fed with registers):\n")
-        w("| scene | device stream clocks/pixel | phong_stream clocks/pixel | phong_stream spans | phong_stream pixels |")
-        w("|---|---|---|---|---|")
+        lut = {r["name"]: r["lut4"] for r in rows}
+        dl, pl = lut.get("device default-stream"), lut.get("phong n1000")
+        w("Pixels per clock per 1,000 LUT4: 1000 / (clocks per pixel x SB_LUT4), the cells of the table above "
+          "(`specular_stream` default, `phong_stream` n1000); times the clock, pixels per second per 1,000 LUT4.\n")
+        w("| scene | device stream clocks/pixel | phong_stream clocks/pixel | phong_stream spans | phong_stream pixels | "
+          "device px/clock per 1,000 LUT4 | phong px/clock per 1,000 LUT4 |")
+        w("|---|---|---|---|---|---|---|")
         for s in sorted(set(ph) | set(ds)):
             d, p = ds.get(s, {}), ph.get(s, {})
-            dv = f"{float(d['stream_clocks_per_pixel']):.4f}" if "stream_clocks_per_pixel" in d else "n/a"
-            pv = f"{p['cycles'] / p['pixels']:.4f}" if p.get("pixels") else "n/a"
-            w(f"| {s} | {dv} | {pv} | {p.get('spans', 'n/a')} | {p.get('pixels', 'n/a')} |")
+            dc = float(d["stream_clocks_per_pixel"]) if "stream_clocks_per_pixel" in d else None
+            pc = p["cycles"] / p["pixels"] if p.get("pixels") else None
+            dk = f"{1000 / (dc * dl):.3f}" if dc and dl else "n/a"
+            pk = f"{1000 / (pc * pl):.3f}" if pc and pl else "n/a"
+            w(f"| {s} | {'n/a' if dc is None else f'{dc:.4f}'} | {'n/a' if pc is None else f'{pc:.4f}'} | "
+              f"{p.get('spans', 'n/a')} | {p.get('pixels', 'n/a')} | {dk} | {pk} |")
         w("")
         if sy:
             w("The device with its hardware setup (`system` section of sim.json):\n")

@@ -253,6 +253,22 @@ def check_plane(out, md, data):
                 errors.append(f"hardware plane conclusion '{line}' != '{want}'")
         elif "not computed" not in line:
             errors.append(f"hardware plane: conclusion for n <= {rng} without measured cells: '{line}'")
+    # Clocks per pixel per scene, when the run has a regression with the Phong stage.
+    sim_path = os.path.join(out, "sim.json")
+    sim = json.load(open(sim_path)) if os.path.exists(sim_path) else {}
+    ph, ds = sim.get("phong", {}), sim.get("scenes_stream", {})
+    if ph or ds:
+        st = table_after(md, "| scene | device stream clocks/pixel |")
+        names = sorted(set(ph) | set(ds))
+        if st is None or [r[0] for r in st] != names:
+            errors.append(f"hardware plane: the clocks-per-pixel table does not list the scenes {names}")
+        else:
+            for r in st:
+                p, d = ph.get(r[0], {}), ds.get(r[0], {})
+                if p and r[2] != f"{p['cycles'] / p['pixels']:.4f}":
+                    errors.append(f"hardware plane: {r[0]} phong clocks/pixel {r[2]}, sim.json {p['cycles']}/{p['pixels']}")
+                if d and r[1] != f"{float(d['stream_clocks_per_pixel']):.4f}":
+                    errors.append(f"hardware plane: {r[0]} device clocks/pixel {r[1]}, sim.json {d}")
     has_cells = any(x[2] is not None for x in expect)
     if has_cells != ("![hardware plane](hw_plane.png)" in md and os.path.exists(os.path.join(out, "hw_plane.png"))):
         errors.append("hardware plane: the figure is missing, or shown without cells")
