@@ -23,7 +23,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 # The Phong configurations of docs/phong_hw.md (names of roms/phong/phong_configs.cmake).
 PHONG_CONFIGS = ("n1000", "n128", "n64", "n1000_consth")
-# synth_ecp5 takes about 4 minutes per configuration on this machine: only the extremes.
+# synth_ecp5 takes 4 minutes or more per configuration on this machine: only the extremes.
 ECP5_CONFIGS = ("n1000", "n64")
 # The n ranges of the plane: 1..64, 1..128, 1..1000 (the ranges the Phong presets serve).
 RANGES = (64, 128, 1000)
