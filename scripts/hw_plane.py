@@ -293,14 +293,18 @@ def write(w, rows, phong, sim, n_step, synth_ran):
               f"{p.get('spans', 'n/a')} | {p.get('pixels', 'n/a')} | {dk} | {pk} |")
         w("")
         if sy:
-            w("The device with its hardware setup (`system` section of sim.json):\n")
-            w("| scene | system clocks/pixel |")
-            w("|---|---|")
+            # sim_regression's system stage (specular_system, the setup in hardware): pixels per
+            # clock with the pipeline's fill and in the steady state, per run.
+            w("The device with its hardware setup (`specular_system`, the `system` section of sim.json): clocks per "
+              "pixel = 1 / pixels per clock, with the pipeline's fill and in the steady state:\n")
+            w("| run | spans | pixels | mismatches | clocks/pixel (fill) | clocks/pixel (steady) |")
+            w("|---|---|---|---|---|---|")
             for s, x in sorted(sy.items()) if isinstance(sy, dict) else []:
-                cpp = x.get("clocks_per_pixel") if isinstance(x, dict) else None
-                if cpp is None and isinstance(x, dict) and x.get("pixels"):
-                    cpp = x.get("cycles", x.get("clocks", 0)) / x["pixels"]
-                w(f"| {s} | {fmt(cpp)} |")
+                x = x if isinstance(x, dict) else {}
+                inv = [f"{1 / float(x[k]):.4f}" if x.get(k) else "n/a"
+                       for k in ("px_per_clock_fill", "px_per_clock_steady")]
+                w(f"| {s} | {x.get('spans', 'n/a')} | {x.get('pixels', 'n/a')} | {x.get('mismatches', 'n/a')} | "
+                  f"{inv[0]} | {inv[1]} |")
             w("")
         else:
             w("The device's setup runs on the host in this build (section 7): its `specular_stream` clocks above take "
