@@ -11,6 +11,8 @@ Every figure in the text is taken from the outputs of this run:
   BUILD/bin/report_data       errors (docs/metrics.md), albedo, device error of RTL
                               configurations (golden model), the hard cases of docs/scanline_setup.md
   yosys                       ice40 cell counts per RTL build configuration (committed ROMs)
+  BUILD/bin/phong_search      the per-pixel Blinn-Phong core's error per configuration (section 4b,
+                              scripts/hw_plane.py; its cells by scripts/phong_synth.sh)
   BUILD/bin/sim_regression    Verilator regression throughput (reduced random count)
   scripts/fpga.sh             out-of-context place and route (nextpnr-ice40, HX8K and UP5K)
 Missing programs are reported in the text, not silently skipped.
@@ -37,6 +39,7 @@ import matplotlib
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
+import hw_plane  # noqa: E402  (scripts/hw_plane.py: the hardware plane, section 4b)
 import plot_break_even  # noqa: E402  (scripts/plot_break_even.py, beside this file)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
@@ -296,6 +299,29 @@ class Report:
         if rc != 0 or not runs:
             self.missing.append(f"scripts/fpga.sh failed (exit {rc}), see logs/fpga.log")
         return runs
+
+    def hardware_plane(self, data, cells):
+        """Section 4b (scripts/hw_plane.py): the Phong configurations' errors (phong_search --measure,
+        this run) and cells (scripts/phong_synth.sh; not in --smoke), the plane's rows and figure."""
+        self.phong = hw_plane.measure_phong(self.exe("phong_search"), self.out, self.logs,
+                                            max(self.args.n_step, 111) if self.args.smoke else self.args.n_step,
+                                            self.missing, self.timings)
+        self.phong_cells = {}
+        if not self.args.smoke:
+            if shutil.which("yosys"):
+                with concurrent.futures.ThreadPoolExecutor(max_workers=self.args.jobs) as pool:
+                    self.phong_cells = hw_plane.synth_phong(pool, self.out, self.logs, self.args.fresh_synth,
+                                                            rtl_sources(), self.missing, self.timings)
+            else:
+                self.missing.append("yosys is not on PATH: no Phong cell counts")
+        self.plane_rows = hw_plane.points(data, self.phong, cells, self.phong_cells)
+        # The raw counts the table was made from (tests/report/check_make_report.py reads them).
+        with open(os.path.join(self.out, "hw_plane_cells.json"), "w") as f:
+            json.dump({"device": {k: v for k, v in cells.items() if "lut4" in v},
+                       "phong": {f"{c}/{m}": v["counts"] for (c, m), v in self.phong_cells.items()}}, f, indent=1)
+        png = os.path.join(self.out, "hw_plane.png")
+        if not hw_plane.plot(self.plane_rows, png, plt) and os.path.exists(png):
+            os.remove(png)  # no cells in this run: no figure (not a stale one)
 
     def sim(self):
         exe = self.exe("sim_regression")
@@ -781,6 +807,8 @@ class Report:
             w("\n" + "\n".join(notes) + "\n" if notes else "")
         if hw:
             w("![hardware](hardware.png)\n")
+        hw_plane.write(w, getattr(self, "plane_rows", []), getattr(self, "phong", {}), sim, self.args.n_step,
+                       bool(getattr(self, "phong_cells", {})))
 
         # --- simulation
         w("## 5. Simulation throughput\n")
@@ -988,6 +1016,7 @@ class Report:
                        for h in hw_cfgs if h["name"] == "default"]
         cells = self.synth(hw_cfgs + stream_cfgs) if not smoke else {}
         pnr = self.pnr() if not smoke else ()
+        self.hardware_plane(data, cells)
         sim = self.sim() if not (self.args.no_sim or smoke) else {}
         rows = self.error_rows(data)
         if rows and speed:

@@ -4,6 +4,9 @@
 //   phong_search --n-max 1000                 the narrowest configuration meeting the device's
 //                                             budget for every n in 1..n-max, then its error per n
 //   phong_search --eval --op-bits 24 ...      the error per n of one configuration
+//   phong_search --measure n64 --n-step 10    the error of a preset configuration (the names of
+//                                             roms/phong/phong_configs.cmake) on n = 1, 1+S, ...,
+//                                             1000, one seed: make report's hardware plane
 //   --json FILE                               the result (configuration, widths, error per n)
 // Widths are reduced one at a time, largest cost first (passes until none changes), each to the smallest value whose
 // configuration still meets 90 % of the budget on every n of 1..n-max; the result is then
@@ -20,6 +23,7 @@
 #include <iostream>
 #include <set>
 #include <string>
+#include <utility>
 #include <vector>
 
 using specular::device::PhongError;
@@ -103,12 +107,71 @@ nlohmann::json format_json(const PhongFormat& f) {
   return j;
 }
 
+// The presets by the names of roms/phong/phong_configs.cmake (phong_romgen writes them).
+const std::vector<std::pair<std::string, PhongFormat>>& presets() {
+  static const std::vector<std::pair<std::string, PhongFormat>> v = [] {
+    std::vector<std::pair<std::string, PhongFormat>> r;
+    for (int n : {1000, 128, 64}) r.emplace_back("n" + std::to_string(n), PhongFormat::preset(n));
+    for (int n : {1000, 64}) {
+      PhongFormat f = PhongFormat::preset(n);
+      f.const_h = true;
+      r.emplace_back("n" + std::to_string(n) + "_consth", f);
+    }
+    return r;
+  }();
+  return v;
+}
+
+// --measure: the error of one preset on the n grid 1, 1+S, ..., 1000 (report_data's grid).
+int measure_preset(const std::string& name, int n_step, uint64_t seed, const std::string& json_out) {
+  const auto& ps = presets();
+  const auto it = std::find_if(ps.begin(), ps.end(), [&](const auto& p) { return p.first == name; });
+  if (it == ps.end()) {
+    std::string all;
+    for (const auto& p : ps) all += (all.empty() ? "" : ", ") + p.first;
+    std::cerr << "phong_search: error: --measure '" << name << "' is not a configuration; allowed: " << all << "\n";
+    return 2;
+  }
+  if (n_step < 1 || n_step > 999) {
+    std::cerr << "phong_search: error: --n-step must be in 1..999 (got " << n_step << ")\n";
+    return 2;
+  }
+  std::vector<int> ns;
+  for (int n = 1; n <= 1000; n += n_step) ns.push_back(n);
+  if (ns.back() != 1000) ns.push_back(1000);
+  const Sweep s = sweep(it->second, ns, seed, false);
+  std::printf("%s (%s): n 1..1000 step %d: max rel epicenter (|err| - 1 LSB)/ref %.3e, max abs (|err| - 1 LSB)/C %.3e\n",
+              name.c_str(), it->second.describe().c_str(), n_step, s.rel_lsb, s.abs_lsb);
+  if (!json_out.empty()) {
+    nlohmann::json j;
+    j["name"] = name;
+    j["format"] = format_json(it->second);
+    j["describe"] = it->second.describe();
+    j["seed"] = seed;
+    j["n_step"] = n_step;
+    for (const PhongError& e : s.per_n) {
+      j["n"].push_back(e.n);
+      j["rel_lsb"].push_back(e.rel_lsb);
+      j["abs_lsb"].push_back(e.abs_lsb);
+    }
+    std::ofstream out(json_out);
+    out << j.dump(1) << "\n";
+    if (!out) {
+      std::cerr << "phong_search: error: cannot write " << json_out << "\n";
+      return 1;
+    }
+  }
+  return 0;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   PhongFormat f;
   int n_max = 1000;
   bool eval = false;
+  std::string measure;
+  int n_step = 1;
   uint64_t seed = 1;
   std::string json_out;
   CLI::App app{"Find the narrowest phong_stream configuration that meets the device's error budget"};
@@ -116,6 +179,10 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   app.add_flag("--eval", eval, "measure the given configuration on every n instead of searching");
+  app.add_option("--measure", measure,
+                 "measure this preset on n = 1, 1+S, ..., 1000 (one seed) instead of searching: "
+                 "n1000, n128, n64, n1000_consth, n64_consth");
+  app.add_option("--n-step", n_step, "with --measure: the step S of the n grid (1..999)")->capture_default_str();
   app.add_option("--seed", seed, "seed of the sweep's random frames")->capture_default_str();
   app.add_option("--json", json_out, "write the result to this file");
   app.add_flag("--const-h", f.const_h, "constant H (He = H1)");
@@ -128,6 +195,7 @@ int main(int argc, char** argv) {
                    f.*(fd.member), "start value (search) or value (eval)")
         ->capture_default_str();
   if (auto rc = specular::parse_command_line(app, argc, argv, "phong_search")) return *rc;
+  if (!measure.empty()) return measure_preset(measure, n_step, seed, json_out);
   try {
     f.validate();
   } catch (const std::invalid_argument& e) {

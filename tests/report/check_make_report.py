@@ -168,6 +168,113 @@ def check_system(out, md):
     return errors
 
 
+def check_plane(out, md, data):
+    """Section 4b (the hardware plane) against report_data.json, the phong_*.json of
+    phong_search --measure and hw_plane_cells.json: every cell of its table, and the ratios
+    of its conclusion, recomputed here."""
+    errors = []
+    if "## 4b. The hardware plane" not in md:
+        return ["section 4b (the hardware plane) heading missing"]
+    t = table_after(md, "| point | core | SB_LUT4 |")
+    if t is None:
+        return ["hardware plane: the table is missing"]
+    ranges = (64, 128, 1000)
+
+    def worst(ns, vs, hi):
+        sel = [val(v) for n, v in zip(ns, vs) if n <= hi]
+        return max(sel) if sel else None
+
+    def g(v):
+        return "n/a" if v is None else f"{v:.3g}"
+    with open(os.path.join(out, "hw_plane_cells.json")) as f:
+        cells = json.load(f)
+    expect = []  # (name, kind, lut4, ff, bram, ecp5, rel per range, abs per range)
+    hw = {h["name"]: h for h in data["hardware"]}
+    for name in [h["name"] for h in data["hardware"]] + ["default-stream"]:
+        h = hw[name.replace("-stream", "")]
+        c = cells["device"].get(name)
+        expect.append((f"device {name}", "specular_stream" if name.endswith("-stream") else "specular_unit",
+                       c and c["lut4"], c and c["ff"], c and c["bram"], None,
+                       [worst(h["n"], h["max_rel_epicenter_lsb"], r) for r in ranges],
+                       [worst(h["n"], h["max_abs_lobe"], r) for r in ranges]))
+    phong_names = ("n1000", "n128", "n64", "n1000_consth")
+    for name in phong_names:
+        path = os.path.join(out, f"phong_{name}.json")
+        if not os.path.exists(path):
+            errors.append(f"hardware plane: {path} missing (phong_search --measure {name} did not run)")
+            continue
+        with open(path) as f:
+            p = json.load(f)
+        step = p["n_step"]
+        grid = list(range(1, 1001, step)) + ([1000] if (999 % step) else [])
+        if p["n"] != grid or len(p["rel_lsb"]) != len(grid) or len(p["abs_lsb"]) != len(grid):
+            errors.append(f"hardware plane: phong_{name}.json's n grid is not 1, 1+{step}, ..., 1000")
+        ci = cells["phong"].get(f"{name}/ice40")
+        expect.append((f"phong {name}", "phong_stream", ci and ci["SB_LUT4"], ci and ci["SB_DFF*"],
+                       ci and ci["SB_RAM40_4K"], cells["phong"].get(f"{name}/ecp5", "not run"),
+                       [worst(p["n"], p["rel_lsb"], r) for r in ranges],
+                       [worst(p["n"], p["abs_lsb"], r) for r in ranges]))
+    if len(t) != len(expect):
+        errors.append(f"hardware plane: {len(t)} table rows, the JSON files give {len(expect)} points")
+    rows = {r[0]: r for r in t}
+    for name, core, lut4, ff, bram, ecp5, rel, ab in expect:
+        r = rows.get(name)
+        if r is None:
+            errors.append(f"hardware plane: no row for {name}")
+            continue
+        if lut4 is None:
+            cost = ["n/a"] * 5
+        else:
+            lc = max(lut4, ff)
+            cost = [str(lut4), str(ff), str(bram), str(lc),
+                    "yes" if lc <= 7680 else "no: synthesis only; does not fit any iCE40"]
+        e = "-" if ecp5 is None else ("not run" if ecp5 == "not run" else
+                                       f"{ecp5['LUT4']} / {ecp5['MULT18X18D']} / {ecp5['DP16KD']} / "
+                                       f"{ecp5['TRELLIS_FF']} (synthesis only)")
+        want = [name, core] + cost + [e] + [g(v) for v in rel] + [g(v) for v in ab]
+        if r != want:
+            errors.append(f"hardware plane row {r} != {want} (from the JSON)")
+    # The conclusion: per range the cheapest (LUT4) configuration of each side within the
+    # budget (relative <= 1e-3, absolute <= 1e-2) over n = 1..R, and the ratios.
+    for k, rng in enumerate(ranges):
+        best = {}
+        for side in ("device", "phong"):
+            cand = [(x[2], x[0], x[3]) for x in expect if (x[0].startswith("phong ") == (side == "phong"))
+                    and x[2] is not None and x[6][k] is not None and x[6][k] <= 1e-3 and x[7][k] <= 1e-2]
+            best[side] = min(cand) if cand else None
+        line = next((l for l in md.splitlines() if l.startswith(f"- n <= {rng}: ")), None)
+        if line is None:
+            errors.append(f"hardware plane: no conclusion line for n <= {rng}")
+        elif best["device"] and best["phong"]:
+            d, p = best["device"], best["phong"]
+            want = (f"- n <= {rng}: {d[1]} against {p[1]}: the Phong core takes **{p[0] / d[0]:.1f} x** the "
+                    f"device's LUT4 and {(p[0] + p[2]) / (d[0] + d[2]):.1f} x its LUT4 + FF.")
+            if line != want:
+                errors.append(f"hardware plane conclusion '{line}' != '{want}'")
+        elif "not computed" not in line:
+            errors.append(f"hardware plane: conclusion for n <= {rng} without measured cells: '{line}'")
+    # Clocks per pixel per scene, when the run has a regression with the Phong stage.
+    sim_path = os.path.join(out, "sim.json")
+    sim = json.load(open(sim_path)) if os.path.exists(sim_path) else {}
+    ph, ds = sim.get("phong", {}), sim.get("scenes_stream", {})
+    if ph or ds:
+        st = table_after(md, "| scene | device stream clocks/pixel |")
+        names = sorted(set(ph) | set(ds))
+        if st is None or [r[0] for r in st] != names:
+            errors.append(f"hardware plane: the clocks-per-pixel table does not list the scenes {names}")
+        else:
+            for r in st:
+                p, d = ph.get(r[0], {}), ds.get(r[0], {})
+                if p and r[2] != f"{p['cycles'] / p['pixels']:.4f}":
+                    errors.append(f"hardware plane: {r[0]} phong clocks/pixel {r[2]}, sim.json {p['cycles']}/{p['pixels']}")
+                if d and r[1] != f"{float(d['stream_clocks_per_pixel']):.4f}":
+                    errors.append(f"hardware plane: {r[0]} device clocks/pixel {r[1]}, sim.json {d}")
+    has_cells = any(x[2] is not None for x in expect)
+    if has_cells != ("![hardware plane](hw_plane.png)" in md and os.path.exists(os.path.join(out, "hw_plane.png"))):
+        errors.append("hardware plane: the figure is missing, or shown without cells")
+    return errors
+
+
 def check(out):
     errors = []
     with open(os.path.join(out, "report_data.json")) as f:
@@ -244,6 +351,7 @@ def check(out):
         if checked == 0:
             errors.append("albedo table: nothing compared")
     errors += check_system(out, md)
+    errors += check_plane(out, md, data)
     return errors
 
 
@@ -265,7 +373,8 @@ def main():
     errors = check(out)
     for e in errors:
         print(e)
-    print(f"{len(errors)} mismatches between {out}/report.md and report_data.json, scene_bench.json")
+    print(f"{len(errors)} mismatches between {out}/report.md and report_data.json, scene_bench.json, "
+          "phong_*.json, hw_plane_cells.json")
     return 1 if errors else 0
 
 

@@ -1,0 +1,313 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The hardware speed-against-error plane of `make report` (docs/speed_error.md#hardware-configurations):
+the device's build configurations and the per-pixel Blinn-Phong core `phong_stream`'s
+(docs/phong_hw.md) as points of error against cost.
+
+  measure_phong(...)  BUILD/bin/phong_search --measure CONFIG --n-step S --json OUT/phong_CONFIG.json
+                      (the error of each Phong configuration, golden model, measured in this run)
+  synth_phong(...)    scripts/phong_synth.sh CONFIG ice40|ecp5 (Yosys cell counts, cached by a hash
+                      of the RTL, ROMs, configuration, script and Yosys version)
+  points(...)         one row per point: cost (cells) and error per n range
+  plot(...), write(...)  the figure OUT/hw_plane.png and the report section
+
+Used by scripts/make_report.py; tests/report/check_make_report.py recomputes the table from
+OUT/report_data.json, OUT/phong_*.json and OUT/hw_plane_cells.json.
+"""
+import hashlib
+import json
+import os
+import subprocess
+import time
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+# The Phong configurations of docs/phong_hw.md (names of roms/phong/phong_configs.cmake).
+PHONG_CONFIGS = ("n1000", "n128", "n64", "n1000_consth")
+# synth_ecp5 takes 4 minutes or more per configuration on this machine: only the extremes.
+ECP5_CONFIGS = ("n1000", "n64")
+# The n ranges of the plane: 1..64, 1..128, 1..1000 (the ranges the Phong presets serve).
+RANGES = (64, 128, 1000)
+REL_BUDGET, ABS_BUDGET = 1e-3, 1e-2  # 0.10 % + 1 LSB in the epicenter, 0.01 C over the lobe
+ICE40_MAX_LC = 7680  # the largest iCE40 (HX8K / LP8K)
+
+
+def worst(ns, vals, hi):
+    sel = [float(v) for n, v in zip(ns, vals) if 1 <= n <= hi]
+    return max(sel) if sel else None
+
+
+def run_logged(cmd, log, timeout):
+    with open(log, "w") as lf:
+        lf.write("$ " + " ".join(cmd) + "\n")
+        lf.flush()
+        return subprocess.run(cmd, cwd=ROOT, stdout=lf, stderr=subprocess.STDOUT, timeout=timeout).returncode
+
+
+def measure_phong(exe, out, logs, n_step, missing, timings):
+    """name -> phong_search --measure JSON (n, rel_lsb, abs_lsb) for every PHONG_CONFIGS."""
+    res = {}
+    if not exe:
+        missing.append("phong_search was not built: no Phong errors in the hardware plane")
+        return res
+    t0 = time.time()
+    for name in PHONG_CONFIGS:
+        path = os.path.join(out, f"phong_{name}.json")
+        if os.path.exists(path):
+            os.remove(path)
+        rc = run_logged([exe, "--measure", name, "--n-step", str(n_step), "--json", path],
+                        os.path.join(logs, f"phong_{name}.log"), timeout=3600)
+        if rc != 0 or not os.path.exists(path):
+            missing.append(f"phong_search --measure {name} failed (exit {rc}), see logs/phong_{name}.log")
+            continue
+        with open(path) as f:
+            res[name] = json.load(f)
+    timings["phong_search --measure (all Phong configurations)"] = time.time() - t0
+    return res
+
+
+def parse_synth_line(text):
+    """The last 'phong_synth CONFIG MODE: K V K V ...' line of scripts/phong_synth.sh as a dict."""
+    line = [l for l in text.splitlines() if l.startswith("phong_synth ")][-1]
+    parts = line.split(":", 1)[1].split()
+    return {k: int(v) for k, v in zip(parts[0::2], parts[1::2])}
+
+
+def synth_one(out, logs, cfg, mode, fresh, rtl_sources):
+    """Yosys counts of phong_stream in configuration cfg (scripts/phong_synth.sh), cached: the
+    same RTL, ROMs, configuration file, script and Yosys give the same netlist."""
+    d = os.path.join(out, "synth", f"phong_{cfg}")
+    os.makedirs(d, exist_ok=True)
+    res_file = os.path.join(d, f"{mode}.json")
+    h = hashlib.sha256()
+    roms = sorted(os.path.join(ROOT, "roms", "phong", cfg.replace("_consth", ""), f)
+                  for f in os.listdir(os.path.join(ROOT, "roms", "phong", cfg.replace("_consth", ""))))
+    for path in rtl_sources + roms + [os.path.join(ROOT, "roms", "phong", "phong_configs.cmake"),
+                                      os.path.join(ROOT, "scripts", "phong_synth.sh")]:
+        with open(path, "rb") as f:
+            h.update(f.read())
+    h.update(f"{cfg} {mode}".encode())
+    h.update(subprocess.run(["yosys", "-V"], capture_output=True, text=True).stdout.encode())
+    key = h.hexdigest()
+    if not fresh and os.path.exists(res_file):
+        with open(res_file) as f:
+            old = json.load(f)
+        if old.get("key") == key:
+            old["reused"] = True
+            return old
+    log = os.path.join(logs, f"synth_phong_{cfg}_{mode}.log")
+    t0 = time.time()
+    try:
+        rc = run_logged(["bash", os.path.join(ROOT, "scripts", "phong_synth.sh"), cfg, mode, d], log, timeout=3600)
+    except subprocess.TimeoutExpired:
+        return {"error": "yosys timed out"}
+    if rc != 0:
+        return {"error": f"scripts/phong_synth.sh exit {rc} (logs/{os.path.basename(log)})"}
+    with open(log) as f:
+        counts = parse_synth_line(f.read())
+    res = {"key": key, "counts": counts, "seconds": time.time() - t0}
+    with open(res_file, "w") as f:
+        json.dump(res, f, indent=1)
+    res["reused"] = False
+    return res
+
+
+def synth_phong(pool, out, logs, fresh, rtl_sources, missing, timings):
+    """(cfg, mode) -> counts: every PHONG_CONFIGS in synth_ice40, ECP5_CONFIGS in synth_ecp5."""
+    t0 = time.time()
+    jobs = [(c, "ice40") for c in PHONG_CONFIGS] + [(c, "ecp5") for c in ECP5_CONFIGS]
+    res = dict(zip(jobs, pool.map(lambda j: synth_one(out, logs, j[0], j[1], fresh, rtl_sources), jobs)))
+    timings["yosys (Phong configurations)"] = time.time() - t0
+    for (c, m), r in res.items():
+        if "error" in r:
+            missing.append(f"synthesis of phong_stream {c} ({m}): {r['error']}")
+    return {k: v for k, v in res.items() if "counts" in v}
+
+
+def points(data, phong, cells, phong_cells):
+    """The plane's rows: the device's build configurations (specular_unit, and specular_stream of
+    the default configuration), then the Phong configurations. Each row: name, core, cost
+    (lut4, ff, bram, lc_min = max(LUT4, FF): every flip-flop and every LUT4 takes a logic cell),
+    ecp5 counts, and the worst relative (+1 LSB) and absolute error over n = 1..R per RANGES."""
+    rows = []
+    hw = {h["name"]: h for h in data.get("hardware", [])}
+    for key, h in [(h["name"], h) for h in data.get("hardware", [])] + \
+            ([("default-stream", hw["default"])] if "default" in hw else []):
+        c = cells.get(key, {})
+        rows.append({"name": f"device {key}", "kind": "device",
+                     "core": "specular_stream" if key.endswith("-stream") else "specular_unit",
+                     "lut4": c.get("lut4"), "ff": c.get("ff"), "bram": c.get("bram"),
+                     "rel": {r: worst(h["n"], h["max_rel_epicenter_lsb"], r) for r in RANGES},
+                     "abs": {r: worst(h["n"], h["max_abs_lobe"], r) for r in RANGES}})
+    for name in PHONG_CONFIGS:
+        p = phong.get(name)
+        if p is None:
+            continue
+        ci = phong_cells.get((name, "ice40"), {}).get("counts", {})
+        ce = phong_cells.get((name, "ecp5"), {}).get("counts")
+        rows.append({"name": f"phong {name}", "kind": "phong", "core": "phong_stream",
+                     "lut4": ci.get("SB_LUT4"), "ff": ci.get("SB_DFF*"), "bram": ci.get("SB_RAM40_4K"),
+                     "ecp5": ce,
+                     "rel": {r: worst(p["n"], p["rel_lsb"], r) for r in RANGES},
+                     "abs": {r: worst(p["n"], p["abs_lsb"], r) for r in RANGES}})
+    for r in rows:
+        r["cost"] = r["lut4"] + r["ff"] if r["lut4"] is not None and r["ff"] is not None else None
+        r["lc_min"] = max(r["lut4"], r["ff"]) if r["cost"] is not None else None
+    return rows
+
+
+def meets(row, rng):
+    return (row["rel"][rng] is not None and row["rel"][rng] <= REL_BUDGET
+            and row["abs"][rng] is not None and row["abs"][rng] <= ABS_BUDGET)
+
+
+def conclusion(rows):
+    """Per range: the cheapest device core and the cheapest Phong core (by LUT4) that meet the
+    budget over n = 1..R, and the ratios Phong / device of LUT4 and of LUT4 + FF.
+    None for a range where either side has no measured cells or no configuration within budget."""
+    out = {}
+    for rng in RANGES:
+        best = {}
+        for kind in ("device", "phong"):
+            cand = [r for r in rows if r["kind"] == kind and r["lut4"] is not None and meets(r, rng)]
+            best[kind] = min(cand, key=lambda r: (r["lut4"], r["name"])) if cand else None
+        if best["device"] and best["phong"]:
+            d, p = best["device"], best["phong"]
+            out[rng] = {"device": d["name"], "phong": p["name"], "lut4_ratio": p["lut4"] / d["lut4"],
+                        "cost_ratio": p["cost"] / d["cost"]}
+        else:
+            out[rng] = None
+    return out
+
+
+def fmt(v):
+    return "n/a" if v is None else f"{v:.3g}"
+
+
+def plot(rows, path, plt):
+    pts = [r for r in rows if r["cost"] is not None]
+    if not pts:
+        return False
+    fig, axes = plt.subplots(1, len(RANGES), figsize=(16, 5.5), sharey=True)
+    for ax, rng in zip(axes, RANGES):
+        for i, r in enumerate(pts):
+            y = r["rel"][rng]
+            if y is None:
+                continue
+            y = max(y, 1e-6)  # an error of 0 on the log axis
+            ax.scatter([r["cost"]], [y], marker="o" if r["kind"] == "device" else "s",
+                       color="tab:blue" if r["kind"] == "device" else "tab:red")
+            ax.annotate(r["name"], (r["cost"], y), textcoords="offset points", xytext=(4, 4 + 7 * (i % 3)),
+                        fontsize=7)
+        ax.axhline(REL_BUDGET, color="gray", linestyle="--", linewidth=1)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("cost: SB_LUT4 + flip-flops (Yosys synth_ice40)")
+        ax.set_title(f"n = 1..{rng}")
+        ax.grid(True, which="both", alpha=0.3)
+    axes[0].set_ylabel("max relative epicenter error, (|err| - 1 LSB) / ref")
+    fig.suptitle("Hardware plane: device (circles) and per-pixel Blinn-Phong (squares); dashed: the 0.10 % budget; "
+                 "an error of 0 drawn at 1e-6")
+    fig.tight_layout()
+    fig.savefig(path, dpi=110)
+    plt.close(fig)
+    return True
+
+
+TABLE_HEADER = ("| point | core | SB_LUT4 | FF | SB_RAM40_4K | logic cells (at least) | fits an iCE40 | "
+                "ECP5 LUT4 / MULT18X18D / DP16KD / FF | "
+                + " | ".join(f"rel. n<={r}" for r in RANGES) + " | "
+                + " | ".join(f"abs. n<={r}" for r in RANGES) + " |")
+
+
+def table_row(r):
+    if r["cost"] is None:
+        cost = ["n/a"] * 5
+    else:
+        fits = "yes" if r["lc_min"] <= ICE40_MAX_LC else "no: synthesis only; does not fit any iCE40"
+        cost = [str(r["lut4"]), str(r["ff"]), str(r["bram"]), str(r["lc_min"]), fits]
+    e = r.get("ecp5")
+    ecp5 = (f"{e['LUT4']} / {e['MULT18X18D']} / {e['DP16KD']} / {e['TRELLIS_FF']} (synthesis only)" if e else
+            ("not run" if r["kind"] == "phong" else "-"))
+    return ([r["name"], r["core"]] + cost + [ecp5] + [fmt(r["rel"][g]) for g in RANGES]
+            + [fmt(r["abs"][g]) for g in RANGES])
+
+
+def write(w, rows, phong, sim, n_step, synth_ran):
+    w("## 4b. The hardware plane: the device against per-pixel Blinn-Phong in hardware\n")
+    if not rows:
+        w("Not measured in this run (see the list at the top).\n")
+        return
+    steps = sorted({p.get("n_step") for p in phong.values()})
+    w("Every hardware configuration is a point: the device's build configurations of section 4 (`specular_unit`, and "
+      "`specular_stream` of the default configuration, the core with the same pixel interface as the competitor) and "
+      "the per-pixel Blinn-Phong core `phong_stream` (docs/phong_hw.md) in the configurations found by its search. "
+      "Cost: Yosys `synth_ice40` cells (LUT multipliers, no DSP, in both); 'logic cells (at least)' is max(SB_LUT4, FF), "
+      f"since every LUT4 and every flip-flop takes a logic cell of its own (an iCE40 has at most {ICE40_MAX_LC}); the "
+      "ECP5 column is Yosys `synth_ecp5` of the Phong core (synthesis only, no placement). Error: the worst over "
+      "n = 1..R of the relative epicenter error with the 1-LSB allowance, (|err| - 1 LSB) / ref, and of the absolute "
+      "lobe error / C: the device from section 4's sweep (its absolute error without the allowance), the Phong core "
+      "from its golden model in this run (`phong_search --measure CONFIG --n-step S`, the sweep of "
+      "docs/phong_hw.md#error-measurement, seed 1, n = 1, 1+S, ..., 1000 with "
+      f"S = {', '.join(map(str, steps)) or n_step}; raw results `phong_*.json`). Budget: relative <= 1e-3, absolute "
+      "<= 1e-2.\n")
+    w(TABLE_HEADER)
+    w("|" + "---|" * (TABLE_HEADER.count("|") - 1))
+    for r in rows:
+        w("| " + " | ".join(table_row(r)) + " |")
+    w("")
+    if any(r["cost"] is not None for r in rows):
+        w("![hardware plane](hw_plane.png)\n")
+    con = conclusion(rows)
+    w("**Conclusion (from this run's numbers).** Both cores deliver one pixel per clock on every span length, so at an "
+      "equal clock the cost per pixel is the area. Per n range, the cheapest configuration of each that meets the "
+      "budget over n = 1..R, and the ratio Phong / device:\n")
+    for rng in RANGES:
+        c = con[rng]
+        if c is None:
+            why = "no cell counts in this run (synthesis not run)" if not synth_ran else \
+                "no configuration of one of the two meets the budget there, or its cells are missing"
+            w(f"- n <= {rng}: not computed: {why}.")
+        else:
+            w(f"- n <= {rng}: {c['device']} against {c['phong']}: the Phong core takes "
+              f"**{c['lut4_ratio']:.1f} x** the device's LUT4 and {c['cost_ratio']:.1f} x its LUT4 + FF.")
+    w("")
+    # Clocks per pixel per scene.
+    ph, ds, sy = (sim or {}).get("phong", {}), (sim or {}).get("scenes_stream", {}), (sim or {}).get("system")
+    if ph or ds:
+        w("Clocks per pixel per scene (`sim_regression`, section 5; spans back to back, pixel side always ready; the "
+          "Phong core n1000 with its per-span work in the core, the device's `specular_stream` fed with registers):\n")
+        lut = {r["name"]: r["lut4"] for r in rows}
+        dl, pl = lut.get("device default-stream"), lut.get("phong n1000")
+        w("Pixels per clock per 1,000 LUT4: 1000 / (clocks per pixel x SB_LUT4), the cells of the table above "
+          "(`specular_stream` default, `phong_stream` n1000); times the clock, pixels per second per 1,000 LUT4.\n")
+        w("| scene | device stream clocks/pixel | phong_stream clocks/pixel | phong_stream spans | phong_stream pixels | "
+          "device px/clock per 1,000 LUT4 | phong px/clock per 1,000 LUT4 |")
+        w("|---|---|---|---|---|---|---|")
+        for s in sorted(set(ph) | set(ds)):
+            d, p = ds.get(s, {}), ph.get(s, {})
+            dc = float(d["stream_clocks_per_pixel"]) if "stream_clocks_per_pixel" in d else None
+            pc = p["cycles"] / p["pixels"] if p.get("pixels") else None
+            dk = f"{1000 / (dc * dl):.3f}" if dc and dl else "n/a"
+            pk = f"{1000 / (pc * pl):.3f}" if pc and pl else "n/a"
+            w(f"| {s} | {'n/a' if dc is None else f'{dc:.4f}'} | {'n/a' if pc is None else f'{pc:.4f}'} | "
+              f"{p.get('spans', 'n/a')} | {p.get('pixels', 'n/a')} | {dk} | {pk} |")
+        w("")
+        if sy:
+            # sim_regression's system stage (specular_system, the setup in hardware): pixels per
+            # clock with the pipeline's fill and in the steady state, per run.
+            w("The device with its hardware setup (`specular_system`, the `system` section of sim.json): clocks per "
+              "pixel = 1 / pixels per clock, with the pipeline's fill and in the steady state:\n")
+            w("| run | spans | pixels | mismatches | clocks/pixel (fill) | clocks/pixel (steady) |")
+            w("|---|---|---|---|---|---|")
+            for s, x in sorted(sy.items()) if isinstance(sy, dict) else []:
+                x = x if isinstance(x, dict) else {}
+                inv = [f"{1 / float(x[k]):.4f}" if x.get(k) else "n/a"
+                       for k in ("px_per_clock_fill", "px_per_clock_steady")]
+                w(f"| {s} | {x.get('spans', 'n/a')} | {x.get('pixels', 'n/a')} | {x.get('mismatches', 'n/a')} | "
+                  f"{inv[0]} | {inv[1]} |")
+            w("")
+        else:
+            w("The device's setup runs on the host in this build (section 7): its `specular_stream` clocks above take "
+              "register spans, while the Phong core's include its own per-span work.\n")
+    else:
+        w("Clocks per pixel per scene: not measured in this run (no regression with `--config all`).\n")
