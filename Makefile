@@ -7,13 +7,14 @@ JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 PYTHON ?= /usr/bin/python3
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build test formal sim stage-table roms vcd report lint fuzz fpga coverage xprop clean help
+.PHONY: all deps configure build test formal formal-long sim stage-table roms vcd report lint fuzz fpga coverage xprop clean help
 
 all: build
 
 help:
 	@echo "make sim     build everything, run the RTL regression (every build configuration, the stream, scenes)"
 	@echo "make test    build everything, run every test with ctest (what CI runs)"
+	@echo "make formal-long  the slow formal checks of specular_setup (ctest label formal_long)"
 	@echo "make formal  the formal proofs alone (specular_stream's handshakes, specular_axil's AXI4-Lite rules) and their mutants"
 	@echo "make roms    regenerate every configuration's ROM hex files and roms/build_configs.cmake (romgen --all)"
 	@echo "make stage-table  rewrite docs/pipeline.md's stage table from rtl/specular_pkg.sv"
@@ -43,6 +44,12 @@ test: build
 # The formal proofs and their mutant runs alone (about a minute; make test runs them too).
 formal: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -R '^rtl_formal_'
+
+# The slow formal checks of specular_setup (rtl/formal/README.md#specular_setup-the-span-handshakes):
+# minutes to hours, so outside make test and make formal.
+formal-long: deps
+	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DSPECULAR_FORMAL_LONG=ON > /dev/null
+	cd $(BUILD) && ctest --output-on-failure -L formal_long
 
 sim: build
 	./$(BUILD)/bin/sim_regression --images-dir $(BUILD)/scenes
