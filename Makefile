@@ -39,7 +39,7 @@ build: configure
 
 # Every test, the formal proofs included (rtl/formal/README.md).
 test: build
-	cd $(BUILD) && ctest --output-on-failure -j $(JOBS)
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE formal_long
 
 # The formal proofs and their mutant runs alone (about a minute; make test runs them too).
 formal: build
