@@ -58,6 +58,17 @@ double quantize(double x, int frac, double lo, double hi, bool* saturated) {
 
 }  // namespace
 
+int64_t quantize_fixed(double x, int frac, int64_t lo, int64_t hi, bool* saturated) {
+  return static_cast<int64_t>(quantize(x, frac, static_cast<double>(lo), static_cast<double>(hi), saturated));
+}
+
+uint32_t quantize_n(double n, const Format& f) {
+  const double n_max = pow2(f.n_bits) - 1.0;
+  return std::isfinite(n) ? static_cast<uint32_t>(std::clamp(round_half_away(n), 0.0, n_max)) : 0U;
+}
+
+uint32_t quantize_len(int l, const Format& f) { return static_cast<uint32_t>(std::clamp(l, 0, f.max_len())); }
+
 uint32_t quantize_c(double c, const Format& f, bool* saturated) {
   return static_cast<uint32_t>(quantize(c, f.c_frac, 0.0, pow2(f.c_bits) - 1.0, saturated));
 }
@@ -76,9 +87,8 @@ RegisterLoad load_registers(const ScanlineSetup& s, double n, int l, const Forma
   out.reg.psi0 = quantize_angle(s.psi0, f, &psi0_sat);
   out.reg.dpsi = quantize_angle(s.dpsi, f, &dpsi_sat);
   out.angle_saturated = psi0_sat || dpsi_sat;
-  const double n_max = pow2(f.n_bits) - 1.0;
-  out.reg.n = std::isfinite(n) ? static_cast<uint32_t>(std::clamp(round_half_away(n), 0.0, n_max)) : 0u;
-  out.reg.len = static_cast<uint32_t>(std::clamp(l, 0, f.max_len()));
+  out.reg.n = quantize_n(n, f);
+  out.reg.len = quantize_len(l, f);
   return out;
 }
 

@@ -96,6 +96,13 @@ struct Registers {
 // or was NaN (mapped to 0), and to false otherwise.
 uint32_t quantize_c(double c, const Format& f, bool* saturated = nullptr);
 int64_t quantize_angle(double rad, const Format& f, bool* saturated = nullptr);
+// The rounding rule under both: x * 2^frac to the nearest code (ties away from zero), clamped
+// to [lo, hi], NaN to 0; the geometry span's vector components use it too (geo_span.hpp).
+int64_t quantize_fixed(double x, int frac, int64_t lo, int64_t hi, bool* saturated = nullptr);
+// Register 4's code for n (nearest integer, clamped to n_bits; not finite: 0) and counter 5's
+// for l (clamped to 0..max_len()).
+uint32_t quantize_n(double n, const Format& f);
+uint32_t quantize_len(int l, const Format& f);
 // Exact conversions back (every code is exactly representable in a double).
 double c_value(uint32_t code, const Format& f);
 double angle_value(int64_t code, const Format& f);

@@ -9,21 +9,14 @@
 namespace specular::device {
 
 GeoVec quantize_vec(const glm::dvec3& v, const GeoFormat& g, bool* saturated) {
-  bool sat = false;
+  bool any = false;
   GeoVec out{};
-  const double lo = static_cast<double>(g.vec_min()), hi = static_cast<double>(g.vec_max());
   for (int i = 0; i < 3; ++i) {
-    double q = 0.0;
-    if (std::isnan(v[i])) {
-      sat = true;
-    } else {
-      q = std::round(std::ldexp(v[i], g.vec_frac));
-      if (q < lo) { q = lo; sat = true; }
-      if (q > hi) { q = hi; sat = true; }
-    }
-    out[static_cast<size_t>(i)] = static_cast<int32_t>(q);
+    bool sat = false;
+    out[static_cast<size_t>(i)] = static_cast<int32_t>(quantize_fixed(v[i], g.vec_frac, g.vec_min(), g.vec_max(), &sat));
+    any = any || sat;
   }
-  if (saturated) *saturated = sat;
+  if (saturated) *saturated = any;
   return out;
 }
 
@@ -38,9 +31,8 @@ GeoSpan quantize_geo(const ScanlineInput& in, const GeoFormat& g, const Format& 
   s.n2 = quantize_vec(in.n2, g);
   s.h1 = quantize_vec(in.h1, g);
   s.he = quantize_vec(in.he, g);
-  const double n_max = std::ldexp(1.0, f.n_bits) - 1.0;
-  s.n = std::isfinite(in.n) ? static_cast<uint32_t>(std::clamp(std::round(in.n), 0.0, n_max)) : 0U;
-  s.len = static_cast<uint32_t>(std::clamp(in.l, 0, f.max_len()));
+  s.n = quantize_n(in.n, f);
+  s.len = quantize_len(in.l, f);
   s.scale = quantize_c(in.is * in.ks * in.norm, f);
   s.tag = g.tag_bits >= 32 ? tag : (tag & ((1U << g.tag_bits) - 1U));
   return s;
