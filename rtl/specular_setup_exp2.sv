@@ -3,7 +3,7 @@
 //
 // specular_setup_exp2: C = scale 2^e, rounded to a code and saturated at the top of
 // register 1, pipelined, one value per clock (docs/setup_hw.md#datapath, step 7; the
-// golden model is host::fixed::scale_exp2 in model/host/setup_fixed.hpp). e is Q40;
+// golden model is host::fixed::scale_exp2 in model/host/setup_fixed.hpp). e is Q30;
 // e = ei + f, ei = floor(e); a 1024-word table gives 2^(j/1024) for the top 10 bits j of f,
 // and 2^g = 1 + g (E1 + g (E2 + g E3)) the rest g < 2^-10.
 //
@@ -47,7 +47,7 @@ module specular_setup_exp2 #(
   assign ei_d = e_i >>> LogFrac;
   assign f_d  = e_i - (ei_d <<< LogFrac);
   assign j_d  = f_d[LogFrac-1 -: AddrBits];
-  logic [LogFrac:0] pow_j;  // 2^(j/1024), Q40
+  logic [LogFrac:0] pow_j;  // 2^(j/1024), Q30
   specular_rom #(.Width(LogFrac + 1), .AddrBits(AddrBits), .File(Exp2File)) u_exp2_rom (
     .clk_i (clk_i), .en_i (en_i), .addr_i (j_d), .data_o (pow_j)
   );

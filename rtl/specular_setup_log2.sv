@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
-// specular_setup_log2: log2 of a positive Q44 value, Q40, pipelined, one value per clock
-// (docs/setup_hw.md#datapath, step 7; the golden model is host::fixed::log2_q44 in
-// model/host/setup_fixed.hpp). a = 2^(p-44) mant, mant in [1, 2); a 1024-word table pair
+// specular_setup_log2: log2 of a positive Q36 value (UnitFrac), Q30 (LogFrac), pipelined, one
+// value per clock (docs/setup_hw.md#datapath, step 7; the golden model is
+// host::fixed::log2_unit in model/host/setup_fixed.hpp). a = 2^(p-36) mant, mant in [1, 2); a 1024-word table pair
 // gives a 12-bit reciprocal r_i of the interval of mant and -log2 r_i; e = mant r_i - 1,
 // |e| < 2^-10, and log2(1 + e) = e (L1 + e (L2 + e L3)).
 //
 //   stage 1  p and mant (leading-one position); both ROMs are read
 //   stage 2  e = mant r_i - 1             stages 3, 4: the Horner steps
-//   stage 5  (p - 44) + (-log2 r_i) + e (...)
+//   stage 5  (p - 36) + (-log2 r_i) + e (...)
 // Stages: specular_setup_pkg::LogStages. A non-positive a gives a defined, meaningless
 // value (the setup does not use it). en_i freezes every stage. No reset.
 
@@ -54,7 +54,7 @@ module specular_setup_log2 #(
   logic [AddrBits-1:0] idx;
   assign idx = mant_d[UnitFrac-1 -: AddrBits];
   logic [RecipFrac-1:0] recip;   // r_i < 2^12
-  logic [LogFrac:0]     value;   // -log2 r_i in [0, 1], Q40
+  logic [LogFrac:0]     value;   // -log2 r_i in [0, 1], Q30
   specular_rom #(.Width(RecipFrac), .AddrBits(AddrBits), .File(LogRecipFile)) u_recip_rom (
     .clk_i (clk_i), .en_i (en_i), .addr_i (idx), .data_o (recip)
   );
@@ -64,7 +64,7 @@ module specular_setup_log2 #(
 
   logic signed [63:0] mant_q, e_q, t3_q, t4_q;
   logic signed [63:0] e_q4, e_q5;    // e beside the Horner steps
-  logic signed [63:0] base_q [2:4];  // (p - 44) 2^40 + (-log2 r_i), beside them too
+  logic signed [63:0] base_q [2:4];  // (p - 36) 2^30 + (-log2 r_i), beside them too
   logic signed [63:0] p_q;
   always_ff @(posedge clk_i) begin
     if (en_i) begin

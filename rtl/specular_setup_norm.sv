@@ -4,13 +4,14 @@
 // specular_setup_norm: a vector scaled to unit length, pipelined, one vector per clock
 // (docs/setup_hw.md#datapath, step 2; the golden model is host::fixed::normalize in
 // model/host/setup_fixed.hpp). The input components share any scale (integer codes of the
-// geometry span interface or Q44); the output is Q44; the zero vector gives 0.
+// geometry span interface or Q36, specular_setup_pkg::UnitFrac); the output is Q36; the zero
+// vector gives 0.
 //
 //   stage 1  sq = x^2 + y^2 + z^2 (exact)
-//   stage 2  m = sq 4^k in [2^46, 2^48) (leading-one position); the seed ROM is read
+//   stage 2  m = sq 4^k in [2^36, 2^38) (leading-one position); the seed ROM is read
 //   stage 3  t = r0^2             stages 4, 5: p = m t, e = 3 - p;  r1 = r0 e / 2
 //   stage 6  t = r1^2             stages 7, 8: as 4, 5: r2
-//   stage 9  u = v r2 2^(k - 28), rounded
+//   stage 9  u = v r2 2^(k - 19), rounded
 // Stages: specular_setup_pkg::NormStages. en_i freezes every stage (pipeline stall). No
 // reset: the datapath carries no control state.
 
@@ -63,7 +64,7 @@ module specular_setup_norm #(
     end
   end
 
-  // Stage 2: even shift into [2^46, 2^48); k = floor((48 - bit width) / 2).
+  // Stage 2: even shift into [2^36, 2^38); k = floor((38 - bit width) / 2).
   logic signed [31:0]   bw;
   logic signed [7:0]    k_d;
   logic [InBits-1:0]    m_d;
@@ -136,7 +137,7 @@ module specular_setup_norm #(
     end
   end
 
-  // Stage 9: u = v r 2^(k - 28).
+  // Stage 9: u = v r 2^(k - 19).
   logic signed [31:0] shift;
   assign shift = 32'(InBits / 2 + Frac - specular_setup_pkg::UnitFrac) - 32'(k_q[8]);
   always_ff @(posedge clk_i) begin

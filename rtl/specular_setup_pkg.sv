@@ -16,30 +16,32 @@
 package specular_setup_pkg;
 
   // ---- Widths (setup_fixed.hpp) ----
-  localparam int UnitFrac      = 44;  // unit vectors, dot products, A: Q44
-  localparam int VecW          = 48;  // a Q44 vector component (|value| < 8)
-  localparam int RsqrtInBits   = 48;  // normalized radicand in [2^46, 2^48)
-  localparam int RsqrtFrac     = 48;  // 1/sqrt, Q48
+  localparam int UnitFrac      = 36;  // unit vectors, dot products, A: Q36
+  localparam int VecW          = UnitFrac + 4;  // a Q36 vector component (|value| < 8)
+  localparam int RsqrtInBits   = UnitFrac + 2;  // normalized radicand in [2^36, 2^38)
+  localparam int RsqrtFrac     = UnitFrac;      // 1/sqrt, Q36
   localparam int RsqrtAddrBits = 12;  // seed table address (3072 words)
   localparam int RsqrtSeedFrac = 16;  // seed words, Q16 (17 bits)
-  localparam int CordicFrac    = 48;  // CORDIC x, y, angles: Q48
-  localparam int CordicIters   = 48;
-  localparam int LogFrac       = 40;  // log2 A, n log2 A, 2^f: Q40
+  localparam int CordicFrac    = UnitFrac + 6;  // CORDIC x, y, angles: Q42
+  localparam int CordicIters   = UnitFrac + 4;
+  localparam int CordicW       = CordicFrac + 4;  // CORDIC x, y, z: |value| < 8
+  localparam int GammaFrac     = UnitFrac + 2;  // gamma for the product with 1/l: Q38
+  localparam int LogFrac       = 30;  // log2 A, n log2 A, 2^f: Q30
   localparam int LogAddrBits   = 10;
   localparam int LogRecipFrac  = 12;
-  localparam int RecipLenFrac  = 50;
-  localparam int ChordFloor    = 16;  // Q44 codes: the flat and opposite-halfway floor
+  localparam int RecipLenFrac  = 29;  // 1/l mantissa round(2^(29 + s) / l), s = floor(log2 l)
+  localparam int ChordFloor    = 16;  // Q36 codes: the flat and opposite-halfway floor
 
   // ---- Constants (setup_romgen --consts) ----
-  localparam logic signed [63:0] InvGain = 64'sd170926505739102;  // round(2^48 / K)
-  localparam logic signed [63:0] PiQ48   = 64'sd884279719003555;  // round(pi 2^48)
-  // log2(1 + e) = e (L1 + e (L2 + e L3)), 2^f = 1 + f (E1 + f (E2 + f E3)), Q40
-  localparam logic signed [63:0] L1 = 64'sd1586259972792;
-  localparam logic signed [63:0] L2 = -64'sd793129986396;
-  localparam logic signed [63:0] L3 = 64'sd528753324264;
-  localparam logic signed [63:0] E1 = 64'sd762123384786;
-  localparam logic signed [63:0] E2 = 64'sd264131837702;
-  localparam logic signed [63:0] E3 = 64'sd61027412866;
+  localparam logic signed [63:0] InvGain = 64'sd41730103940;    // round(2^36 / K)
+  localparam logic signed [63:0] Pi      = 64'sd13816870609431;  // round(pi 2^42)
+  // log2(1 + e) = e (L1 + e (L2 + e L3)), 2^f = 1 + f (E1 + f (E2 + f E3)), Q30
+  localparam logic signed [63:0] L1 = 64'sd1549082005;
+  localparam logic signed [63:0] L2 = -64'sd774541002;
+  localparam logic signed [63:0] L3 = 64'sd516360668;
+  localparam logic signed [63:0] E1 = 64'sd744261118;
+  localparam logic signed [63:0] E2 = 64'sd257941248;
+  localparam logic signed [63:0] E3 = 64'sd59597083;
 
   // ---- Stage counts (each block checks its own at elaboration) ----
   localparam int NormStages   = 9;                // specular_setup_norm
@@ -47,26 +49,24 @@ package specular_setup_pkg;
   localparam int LogStages    = 5;                // specular_setup_log2: A -> log2 A
   localparam int ExpStages    = 6;                // specular_setup_exp2: n log2 A -> C
 
-  // round(atan(2^-i) 2^48); from i = 16 on it is 2^(48 - i) exactly.
-  function automatic logic signed [63:0] atan_q48(input int i);
+  // round(atan(2^-i) 2^42); from i = 14 on it is 2^(42 - i) exactly.
+  function automatic logic signed [63:0] atan_q(input int i);
     case (i)
-      0:  atan_q48 = 64'sd221069929750889;
-      1:  atan_q48 = 64'sd130505199945453;
-      2:  atan_q48 = 64'sd68955363498242;
-      3:  atan_q48 = 64'sd35002819193903;
-      4:  atan_q48 = 64'sd17569333089919;
-      5:  atan_q48 = 64'sd8793231387230;
-      6:  atan_q48 = 64'sd4397688649582;
-      7:  atan_q48 = 64'sd2198978517948;
-      8:  atan_q48 = 64'sd1099506035422;
-      9:  atan_q48 = 64'sd549755114839;
-      10: atan_q48 = 64'sd274877819563;
-      11: atan_q48 = 64'sd137438942549;
-      12: atan_q48 = 64'sd68719475371;
-      13: atan_q48 = 64'sd34359738197;
-      14: atan_q48 = 64'sd17179869163;
-      15: atan_q48 = 64'sd8589934589;
-      default: atan_q48 = 64'sd1 <<< (CordicFrac - i);
+      0:  atan_q = 64'sd3454217652358;
+      1:  atan_q = 64'sd2039143749148;
+      2:  atan_q = 64'sd1077427554660;
+      3:  atan_q = 64'sd546919049905;
+      4:  atan_q = 64'sd274520829530;
+      5:  atan_q = 64'sd137394240425;
+      6:  atan_q = 64'sd68713885150;
+      7:  atan_q = 64'sd34359039343;
+      8:  atan_q = 64'sd17179781803;
+      9:  atan_q = 64'sd8589923669;
+      10: atan_q = 64'sd4294965931;
+      11: atan_q = 64'sd2147483477;
+      12: atan_q = 64'sd1073741803;
+      13: atan_q = 64'sd536870909;
+      default: atan_q = 64'sd1 <<< (CordicFrac - i);
     endcase
   endfunction
 

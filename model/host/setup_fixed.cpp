@@ -32,6 +32,9 @@ uint64_t isqrt(uint64_t x) {
 
 int64_t round_ld(long double v) { return static_cast<int64_t>(std::llround(v)); }
 
+// The exact product of two codes (below 2^100 for every product here).
+i128 prod(i128 a, i128 b) { return a * b; }
+
 void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("setup_fixed: " + what);
 }
@@ -42,6 +45,7 @@ void require(bool ok, const std::string& what) {
 
 const std::vector<uint32_t>& rsqrt_seed_table() {
   // Word a - 1024: round(2^16 / sqrt((a + 1/2) / 4096)) = round(sqrt(2^45 / (2a + 1))).
+  static_assert(kRsqrtAddrBits == 12 && kRsqrtSeedFrac == 16, "the seed formula below is for 12 address bits, Q16");
   static const std::vector<uint32_t> t = [] {
     std::vector<uint32_t> v;
     for (uint64_t a = 1u << (kRsqrtAddrBits - 2); a < (1u << kRsqrtAddrBits); ++a)
@@ -64,7 +68,7 @@ int64_t cordic_inv_gain() {
   static const int64_t g = [] {
     long double k = 1.0L;
     for (int i = 0; i < kCordicIters; ++i) k *= std::sqrt(1.0L + std::ldexp(1.0L, -2 * i));
-    return round_ld(std::ldexp(1.0L / k, kCordicFrac));
+    return round_ld(std::ldexp(1.0L / k, kUnitFrac));
   }();
   return g;
 }
@@ -100,16 +104,21 @@ const std::vector<int64_t>& exp2_table() {
   return t;
 }
 
+int recip_len_shift(uint32_t len) { return len == 0 ? 0 : std::bit_width(len) - 1; }
+
 const std::vector<uint64_t>& recip_len_table() {
+  // Word l: round(2^(29 + s) / l) in [2^28, 2^29], s = floor(log2 l): a mantissa of 1/l with
+  // the same relative precision for every l.
   static const std::vector<uint64_t> t = [] {
     std::vector<uint64_t> v{0};
-    for (uint64_t l = 1; l <= static_cast<uint64_t>(kMaxLen); ++l) v.push_back(((uint64_t{1} << (kRecipLenFrac + 1)) / l + 1) >> 1);
+    for (uint64_t l = 1; l <= static_cast<uint64_t>(kMaxLen); ++l)
+      v.push_back(((uint64_t{1} << (kRecipLenFrac + recip_len_shift(static_cast<uint32_t>(l)) + 1)) / l + 1) >> 1);
     return v;
   }();
   return t;
 }
 
-int64_t pi_q48() { return round_ld(std::ldexp(std::numbers::pi_v<long double>, kCordicFrac)); }
+int64_t cordic_pi() { return round_ld(std::ldexp(std::numbers::pi_v<long double>, kCordicFrac)); }
 
 const PolyConsts& poly_consts() {
   static const PolyConsts c = [] {
@@ -130,45 +139,45 @@ int64_t rsqrt_norm(uint64_t m) {
   if (addr < base || addr >= (uint64_t{1} << kRsqrtAddrBits)) throw std::logic_error("rsqrt_norm: radicand not normalized");
   i128 r = static_cast<i128>(rsqrt_seed_table()[addr - base]) << (kRsqrtFrac - kRsqrtSeedFrac);
   for (int s = 0; s < kRsqrtSteps; ++s) {
-    const i128 t = rshift_round(r * r, kRsqrtFrac);                           // R^2
-    const i128 p = rshift_round(static_cast<i128>(m) * t, kRsqrtInBits);      // M R^2
+    const i128 t = rshift_round(prod(r, r), kRsqrtFrac);                      // R^2
+    const i128 p = rshift_round(prod(static_cast<i128>(m), t), kRsqrtInBits); // M R^2
     const i128 e = (i128{3} << kRsqrtFrac) - p;                               // 3 - M R^2
-    r = rshift_round(r * e, kRsqrtFrac + 1);                                  // R (3 - M R^2) / 2
+    r = rshift_round(prod(r, e), kRsqrtFrac + 1);                             // R (3 - M R^2) / 2
   }
   return static_cast<int64_t>(r);
 }
 
 Vec normalize(const Vec& v) {
   i128 sq = 0;
-  for (int64_t c : v) sq += static_cast<i128>(c) * c;
+  for (int64_t c : v) sq += prod(c, c);
   if (sq == 0) return {0, 0, 0};
-  // m = sq 4^k in [2^46, 2^48); 1/sqrt(sq) = 2^k r 2^-72, so u = v r 2^(k - 28) in Q44.
+  // m = sq 4^k in [2^36, 2^38); 1/sqrt(sq) = 2^k r 2^-55, so u = v r 2^(k - 19) in Q36.
   const int k = static_cast<int>(std::floor((kRsqrtInBits - bit_width128(sq)) / 2.0));
   const auto m = static_cast<uint64_t>(k >= 0 ? sq << (2 * k) : sq >> (-2 * k));
   const i128 r = rsqrt_norm(m);
-  const int s = kRsqrtInBits / 2 + kRsqrtFrac - kUnitFrac - k;  // 28 - k
+  const int s = kRsqrtInBits / 2 + kRsqrtFrac - kUnitFrac - k;  // 19 - k
   Vec u{};
-  for (int i = 0; i < 3; ++i) u[static_cast<size_t>(i)] = static_cast<int64_t>(rshift_round(v[static_cast<size_t>(i)] * r, s));
+  for (int i = 0; i < 3; ++i) u[static_cast<size_t>(i)] = static_cast<int64_t>(rshift_round(prod(v[static_cast<size_t>(i)], r), s));
   return u;
 }
 
 int64_t dot(const Vec& a, const Vec& b) {
   i128 s = 0;
-  for (size_t i = 0; i < 3; ++i) s += static_cast<i128>(a[i]) * b[i];
+  for (size_t i = 0; i < 3; ++i) s += prod(a[i], b[i]);
   return static_cast<int64_t>(rshift_round(s, kUnitFrac));
 }
 
 Vec reflect(const Vec& v, const Vec& u) {
   const i128 s = dot(v, u);
   Vec out{};
-  for (size_t i = 0; i < 3; ++i) out[i] = v[i] - static_cast<int64_t>(rshift_round(s * u[i], kUnitFrac - 1));
+  for (size_t i = 0; i < 3; ++i) out[i] = v[i] - static_cast<int64_t>(rshift_round(prod(s, u[i]), kUnitFrac - 1));
   return out;
 }
 
 Polar cordic_vectoring(int64_t x, int64_t y) {
   int64_t z = 0;
   if (x < 0) {  // a half turn into the right half plane
-    z = y >= 0 ? pi_q48() : -pi_q48();
+    z = y >= 0 ? cordic_pi() : -cordic_pi();
     x = -x, y = -y;
   }
   const auto& at = atan_table();
@@ -183,18 +192,18 @@ Polar cordic_vectoring(int64_t x, int64_t y) {
   return {z, x};
 }
 
-int64_t log2_q44(int64_t a) {
-  if (a <= 0) throw std::logic_error("log2_q44: non-positive argument");
+int64_t log2_unit(int64_t a) {
+  if (a <= 0) throw std::logic_error("log2_unit: non-positive argument");
   const int p = std::bit_width(static_cast<uint64_t>(a)) - 1;
-  const int64_t mant = p <= kUnitFrac ? a << (kUnitFrac - p) : a >> (p - kUnitFrac);  // [2^44, 2^45)
+  const int64_t mant = p <= kUnitFrac ? a << (kUnitFrac - p) : a >> (p - kUnitFrac);  // [2^36, 2^37)
   const auto idx = static_cast<size_t>((mant >> (kUnitFrac - kLogAddrBits)) & ((1 << kLogAddrBits) - 1));
-  const i128 eps = static_cast<i128>(mant) * log_recip_table()[idx] - (i128{1} << (kUnitFrac + kLogRecipFrac));
-  const i128 e = rshift_round(eps, kUnitFrac + kLogRecipFrac - kLogFrac);  // Q40, |e| < 2^-10
+  const i128 eps = prod(mant, log_recip_table()[idx]) - (i128{1} << (kUnitFrac + kLogRecipFrac));
+  const i128 e = rshift_round(eps, kUnitFrac + kLogRecipFrac - kLogFrac);  // Q30, |e| < 2^-10
   const PolyConsts& c = poly_consts();
   i128 t = c.l3;
-  t = c.l2 + rshift_round(e * t, kLogFrac);
-  t = c.l1 + rshift_round(e * t, kLogFrac);
-  const i128 poly = rshift_round(e * t, kLogFrac);
+  t = c.l2 + rshift_round(prod(e, t), kLogFrac);
+  t = c.l1 + rshift_round(prod(e, t), kLogFrac);
+  const i128 poly = rshift_round(prod(e, t), kLogFrac);
   return static_cast<int64_t>((p - kUnitFrac) * one(kLogFrac) + log_value_table()[idx] + poly);
 }
 
@@ -207,17 +216,17 @@ uint32_t scale_exp2(uint32_t code, int64_t e, uint32_t max_code, bool* saturated
     if (saturated) *saturated = true;
     return max_code;
   }
-  const int64_t f = e - ei * one(kLogFrac);  // [0, 2^40)
+  const int64_t f = e - ei * one(kLogFrac);  // [0, 2^30)
   const int lo_bits = kLogFrac - kLogAddrBits;
   const auto j = static_cast<size_t>(f >> lo_bits);
-  const i128 fl = f & (one(lo_bits) - 1);  // Q40, < 2^-10
+  const i128 fl = f & (one(lo_bits) - 1);  // Q30, < 2^-10
   const PolyConsts& c = poly_consts();
   i128 t = c.e3;
-  t = c.e2 + rshift_round(fl * t, kLogFrac);
-  t = c.e1 + rshift_round(fl * t, kLogFrac);
-  const i128 p = one(kLogFrac) + rshift_round(fl * t, kLogFrac);
-  const i128 mant = rshift_round(exp2_table()[j] * p, kLogFrac);  // Q40 in [1, 2)
-  const i128 v = rshift_round(mant * code, kLogFrac - static_cast<int>(ei));
+  t = c.e2 + rshift_round(prod(fl, t), kLogFrac);
+  t = c.e1 + rshift_round(prod(fl, t), kLogFrac);
+  const i128 p = one(kLogFrac) + rshift_round(prod(fl, t), kLogFrac);
+  const i128 mant = rshift_round(prod(exp2_table()[j], p), kLogFrac);  // Q30 in [1, 2)
+  const i128 v = rshift_round(prod(mant, code), kLogFrac - static_cast<int>(ei));
   if (v > max_code) {
     if (saturated) *saturated = true;
     return max_code;
@@ -283,8 +292,8 @@ Result setup_fixed(const device::GeoSpan& g, const device::GeoFormat& gf, const 
   t.opposite_halfway = !flat && opp;
   Vec w{};
   for (size_t i = 0; i < 3; ++i)
-    w[i] = t.opposite_halfway ? n1[i] - static_cast<int64_t>(rshift_round(static_cast<i128>(t.cos_t1) * h1[i], kUnitFrac))
-                              : t.h2[i] - static_cast<int64_t>(rshift_round(static_cast<i128>(t.x) * h1[i], kUnitFrac));
+    w[i] = t.opposite_halfway ? n1[i] - static_cast<int64_t>(rshift_round(prod(t.cos_t1, h1[i]), kUnitFrac))
+                              : t.h2[i] - static_cast<int64_t>(rshift_round(prod(t.x, h1[i]), kUnitFrac));
 
   // 5. u = W / |W|.
   const Vec u = normalize(w);
@@ -296,21 +305,23 @@ Result setup_fixed(const device::GeoSpan& g, const device::GeoFormat& gf, const 
   if (flat) {
     t.gamma = 0;
   } else if (t.opposite_halfway) {
-    t.gamma = pi_q48();
+    t.gamma = cordic_pi();
   } else {
-    t.gamma = std::clamp(cordic_vectoring(t.x * one(up), t.w_len * one(up)).angle, int64_t{0}, pi_q48());
+    t.gamma = std::clamp(cordic_vectoring(t.x * one(up), t.w_len * one(up)).angle, int64_t{0}, cordic_pi());
   }
   const Polar p = cordic_vectoring(t.cos_t1 * one(up), t.nu * one(up));
   t.lambda = p.angle;
-  t.a = static_cast<int64_t>(rshift_round(static_cast<i128>(p.mag_k) * cordic_inv_gain(), 2 * kCordicFrac - kUnitFrac));
+  // A = (A K) (1/K): A K rounded to Q36 first.
+  t.a = static_cast<int64_t>(rshift_round(prod(rshift_round(p.mag_k, up), cordic_inv_gain()), kUnitFrac));
 
   // 7. The registers.
   r.span.reg.psi0 = static_cast<int64_t>(rshift_round(-static_cast<i128>(t.lambda), kCordicFrac - f.angle_frac));
   r.span.reg.dpsi = g.len == 0 ? 0
-                               : static_cast<int64_t>(rshift_round(static_cast<i128>(t.gamma) * recip_len_table()[g.len],
-                                                                   kCordicFrac + kRecipLenFrac - f.angle_frac));
+                               : static_cast<int64_t>(rshift_round(prod(rshift_round(t.gamma, kCordicFrac - kGammaFrac),
+                                                                        static_cast<i128>(recip_len_table()[g.len])),
+                                                                   kGammaFrac + kRecipLenFrac + recip_len_shift(g.len) - f.angle_frac));
   if (t.a > 0) {
-    t.log2_a = log2_q44(t.a);
+    t.log2_a = log2_unit(t.a);
     r.span.reg.c = scale_exp2(g.scale, static_cast<int64_t>(g.n) * t.log2_a, (1u << f.c_bits) - 1, &r.c_saturated);
   }
   if (t.opposite_halfway) r.status = SetupStatus::opposite_halfway;

@@ -57,7 +57,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (consts) {
-    std::cout << "InvGain = 64'sd" << hf::cordic_inv_gain() << "\nPiQ48 = 64'sd" << hf::pi_q48() << '\n';
+    std::cout << "InvGain = 64'sd" << hf::cordic_inv_gain() << "\nPi = 64'sd" << hf::cordic_pi() << '\n';
     const hf::PolyConsts& c = hf::poly_consts();
     std::cout << "L1 " << c.l1 << " L2 " << c.l2 << " L3 " << c.l3 << " E1 " << c.e1 << " E2 " << c.e2 << " E3 " << c.e3 << '\n';
     for (size_t i = 0; i < hf::atan_table().size(); ++i) std::cout << "64'sd" << hf::atan_table()[i] << (i + 1 < hf::atan_table().size() ? ",\n" : "\n");
