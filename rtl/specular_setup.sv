@@ -86,6 +86,9 @@ module specular_setup #(
   localparam int RecipLenFrac = specular_setup_pkg::RecipLenFrac;
   localparam int GammaFrac    = specular_setup_pkg::GammaFrac;
   localparam int CordicW      = specular_setup_pkg::CordicW;
+  localparam int AmpW         = specular_setup_pkg::AmpW;
+  localparam int GammaW       = GammaFrac + 3;  // gamma in [0, pi], Q30
+  localparam int GainFrac     = specular_setup_pkg::GainFrac;
   localparam int NormStages   = specular_setup_pkg::NormStages;
   localparam int CordicStages = specular_setup_pkg::CordicStages;
   localparam int LogStages    = specular_setup_pkg::LogStages;
@@ -359,7 +362,7 @@ module specular_setup #(
 
   // ---- tau 76: gamma, A, psi0, s = floor(log2 l); the 1/l ROM ----
   logic signed [CordicW-1:0] gamma_76;
-  logic signed [63:0] a_76;
+  logic signed [specular_setup_pkg::AmpW-1:0] a_76;
   logic [AngleBits-1:0] psi0_76, psi0_88;
   logic [RecipLenFrac:0] recip_76;
   logic [3:0] lshift_d, lshift_76;
@@ -373,9 +376,10 @@ module specular_setup #(
     if (adv) begin
       gamma_76  <= flat_75 ? '0 : opp_h_75 ? Pi
                  : gamma_angle < 0 ? '0 : gamma_angle > Pi ? Pi : gamma_angle;
-      // A = (A K) (1/K): A K rounded to Q36 first, 1/K in Q36.
-      a_76      <= 64'(specular_setup_pkg::rshift_round(
-                       specular_setup_pkg::mul(64'(specular_setup_pkg::rshift_round(128'(amag_75), Up)), InvGain), UnitFrac));
+      // A = (A K) (1/K): A K rounded to Q30 first, 1/K in Q30, the product (< 2^62) to Q36.
+      a_76      <= AmpW'(specular_setup_pkg::rshift_round64(
+                       specular_setup_pkg::mul64(64'(AmpW'(specular_setup_pkg::rshift_round64(64'(amag_75), CordicFrac - GainFrac))),
+                                                 InvGain), 2 * GainFrac - UnitFrac));
       psi0_76   <= AngleBits'(specular_setup_pkg::rshift_round(128'sd0 - 128'(lambda_75), CordicFrac - AngleFrac));
       lshift_76 <= lshift_d;
     end
@@ -395,10 +399,10 @@ module specular_setup #(
   logic [AngleBits-1:0] dpsi_77, dpsi_88;
   always_ff @(posedge clk_i) begin
     if (adv) begin
-      // gamma rounded to Q38, times the mantissa of 1/l, shifted by s = floor(log2 l).
-      dpsi_77 <= AngleBits'(specular_setup_pkg::rshift_round(
-                     specular_setup_pkg::mul(64'(specular_setup_pkg::rshift_round(128'(gamma_76), CordicFrac - GammaFrac)),
-                                             64'(recip_76)),
+      // gamma rounded to Q30, times the mantissa of 1/l, shifted by s = floor(log2 l).
+      dpsi_77 <= AngleBits'(specular_setup_pkg::rshift_round64(
+                     specular_setup_pkg::mul64(64'(GammaW'(specular_setup_pkg::rshift_round64(64'(gamma_76), CordicFrac - GammaFrac))),
+                                               64'(recip_76)),
                      GammaFrac + RecipLenFrac + 32'(lshift_76) - AngleFrac));
     end
   end
@@ -407,12 +411,13 @@ module specular_setup #(
   );
 
   // ---- tau 77 .. 88: C = scale 2^(n log2 A) ----
-  logic signed [63:0] log2_81, e_82;
+  logic signed [specular_setup_pkg::LogW-1:0] log2_81;
+  logic signed [specular_setup_pkg::ExpW-1:0] e_82;
   specular_setup_log2 #(.LogRecipFile(LogRecipFile), .LogValueFile(LogValueFile)) u_log2 (
     .clk_i (clk_i), .en_i (adv), .a_i (a_76), .log2_o (log2_81)
   );
   always_ff @(posedge clk_i) begin
-    if (adv) e_82 <= 64'(n_81) * log2_81;
+    if (adv) e_82 <= specular_setup_pkg::ExpW'(64'($signed({1'b0, n_81})) * 64'(log2_81));
   end
   logic [CBits-1:0] c_88;
   logic             sat_88_unused;

@@ -19,7 +19,7 @@ module specular_setup_exp2 #(
 ) (
   input  logic               clk_i,
   input  logic               en_i,
-  input  logic signed [63:0] e_i,
+  input  logic signed [specular_setup_pkg::ExpW-1:0] e_i,
   input  logic [CBits-1:0]   scale_i,
   output logic [CBits-1:0]   c_o,
   output logic               sat_o     // C was clamped to the top code
@@ -28,6 +28,9 @@ module specular_setup_exp2 #(
   localparam int LogFrac  = specular_setup_pkg::LogFrac;
   localparam int AddrBits = specular_setup_pkg::LogAddrBits;
   localparam int LoBits   = LogFrac - AddrBits;
+  localparam int ExpW     = specular_setup_pkg::ExpW;
+  localparam int EiW      = ExpW - LogFrac;  // the integer part ei
+  localparam int TW       = LogFrac + 2;     // the Horner terms and the mantissa: |value| < 2
   localparam int Stages   = 6;
   localparam logic signed [63:0] MaxCode = (64'sd1 <<< CBits) - 1;
   localparam int                 MinEiInt = -(LogFrac + 1);  // below: C rounds to 0
@@ -42,24 +45,25 @@ module specular_setup_exp2 #(
   end
 
   // Stage 1.
-  logic signed [63:0]  ei_d, f_d;
-  logic [AddrBits-1:0] j_d;
-  assign ei_d = e_i >>> LogFrac;
-  assign f_d  = e_i - (ei_d <<< LogFrac);
+  logic signed [EiW-1:0] ei_d;
+  logic [LogFrac-1:0]    f_d;
+  logic [AddrBits-1:0]   j_d;
+  assign ei_d = EiW'(e_i >>> LogFrac);
+  assign f_d  = e_i[LogFrac-1:0];  // e - ei 2^30, in [0, 2^30)
   assign j_d  = f_d[LogFrac-1 -: AddrBits];
   logic [LogFrac:0] pow_j;  // 2^(j/1024), Q30
   specular_rom #(.Width(LogFrac + 1), .AddrBits(AddrBits), .File(Exp2File)) u_exp2_rom (
     .clk_i (clk_i), .en_i (en_i), .addr_i (j_d), .data_o (pow_j)
   );
 
-  logic signed [63:0] g_q [1:4];
-  logic signed [63:0] ei_q [1:5];
-  logic [CBits-1:0]   scale_q [1:5];
-  logic signed [63:0] pow_q [2:4];
-  logic signed [63:0] t2_q, t3_q, p4_q, mant_q;
+  logic [LoBits-1:0]     g_q [1:4];
+  logic signed [EiW-1:0] ei_q [1:5];
+  logic [CBits-1:0]      scale_q [1:5];
+  logic [LogFrac:0]      pow_q [2:4];
+  logic signed [TW-1:0]  t2_q, t3_q, p4_q, mant_q;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      g_q[1]     <= f_d & ((64'sd1 <<< LoBits) - 1);
+      g_q[1]     <= f_d[LoBits-1:0];
       ei_q[1]    <= ei_d;
       scale_q[1] <= scale_i;
       for (int s = 2; s <= 5; s++) begin
@@ -69,29 +73,32 @@ module specular_setup_exp2 #(
       for (int s = 2; s <= 4; s++) begin
         g_q[s] <= g_q[s-1];
       end
-      pow_q[2] <= 64'(pow_j);
+      pow_q[2] <= pow_j;
       pow_q[3] <= pow_q[2];
       pow_q[4] <= pow_q[3];
-      t2_q   <= specular_setup_pkg::E2 +
-                64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(g_q[1], specular_setup_pkg::E3), LogFrac));
-      t3_q   <= specular_setup_pkg::E1 +
-                64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(g_q[2], t2_q), LogFrac));
-      p4_q   <= (64'sd1 <<< LogFrac) +
-                64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(g_q[3], t3_q), LogFrac));
-      mant_q <= 64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(pow_q[4], p4_q), LogFrac));
+      t2_q   <= TW'(specular_setup_pkg::E2 +
+                specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(g_q[1]), specular_setup_pkg::E3), LogFrac));
+      t3_q   <= TW'(specular_setup_pkg::E1 +
+                specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(g_q[2]), 64'(t2_q)), LogFrac));
+      p4_q   <= TW'((64'sd1 <<< LogFrac) +
+                specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(g_q[3]), 64'(t3_q)), LogFrac));
+      mant_q <= TW'(specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(pow_q[4]), 64'(p4_q)), LogFrac));
     end
   end
 
   // Stage 6.
-  logic signed [127:0] v;
-  assign v = specular_setup_pkg::rshift_round(specular_setup_pkg::mul(mant_q, 64'(scale_q[5])),
-                                              32'(LogFrac) - 32'(ei_q[5] > 64'sd16 ? 64'sd16 : ei_q[5] < -64'sd80 ? -64'sd80 : ei_q[5]));
+  // mant scale < 2^47, shifted right by 14 .. 61 (ei clamped to [MinEi, 16]; outside, C is
+  // 0 or saturated below).
+  logic signed [63:0] ei5, v;
+  assign ei5 = 64'(ei_q[5]);
+  assign v = specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(mant_q), 64'(scale_q[5])),
+                                                32'(LogFrac) - 32'(ei5 > 64'sd16 ? 64'sd16 : ei5 < MinEi ? MinEi : ei5));
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      if (scale_q[5] == '0 || ei_q[5] < MinEi) begin
+      if (scale_q[5] == '0 || ei5 < MinEi) begin
         c_o   <= '0;
         sat_o <= 1'b0;
-      end else if (ei_q[5] > 64'sd16 || v > 128'(MaxCode)) begin
+      end else if (ei5 > 64'sd16 || v > MaxCode) begin
         c_o   <= CBits'(MaxCode);
         sat_o <= 1'b1;
       end else begin

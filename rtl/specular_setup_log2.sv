@@ -19,34 +19,38 @@ module specular_setup_log2 #(
   parameter LogRecipFile = "roms/setup/log_recip.hex",
   parameter LogValueFile = "roms/setup/log_value.hex"
 ) (
-  input  logic               clk_i,
-  input  logic               en_i,
-  input  logic signed [63:0] a_i,
-  output logic signed [63:0] log2_o
+  input  logic                                       clk_i,
+  input  logic                                       en_i,
+  input  logic signed [specular_setup_pkg::AmpW-1:0] a_i,
+  output logic signed [specular_setup_pkg::LogW-1:0] log2_o
 );
 
+  localparam int AmpW      = specular_setup_pkg::AmpW;
+  localparam int LogW      = specular_setup_pkg::LogW;
   localparam int UnitFrac  = specular_setup_pkg::UnitFrac;
   localparam int LogFrac   = specular_setup_pkg::LogFrac;
   localparam int AddrBits  = specular_setup_pkg::LogAddrBits;
   localparam int RecipFrac = specular_setup_pkg::LogRecipFrac;
   localparam int Stages    = 5;
+  localparam int EW        = LogFrac - AddrBits + 2;  // e: |e| < 2^-10, Q30
+  localparam int TW        = LogFrac + 2;             // the Horner terms: |t| < 2
 
   if (Stages != specular_setup_pkg::LogStages) begin : gen_stage_check
     `SPEC_PARAM_ERROR("specular_setup_log2: specular_setup_pkg::LogStages disagrees with the stages built here")
   end
 
   // Stage 1.
-  logic signed [31:0] p_d;
-  logic signed [63:0] mant_d;
+  logic signed [31:0]   p_d;
+  logic [UnitFrac:0]    mant_d;  // [2^36, 2^37)
   always_comb begin
     p_d = -1;
-    for (int b = 0; b < 63; b++) begin
+    for (int b = 0; b < AmpW - 1; b++) begin
       if (a_i[b]) p_d = b;
     end
     if (p_d <= UnitFrac) begin
-      mant_d = a_i <<< (UnitFrac - p_d);
+      mant_d = (UnitFrac + 1)'(a_i <<< (UnitFrac - p_d));
     end else begin
-      mant_d = a_i >>> (p_d - UnitFrac);
+      mant_d = (UnitFrac + 1)'(a_i >>> (p_d - UnitFrac));
     end
   end
   logic signed [31:0] p_rel;
@@ -62,30 +66,31 @@ module specular_setup_log2 #(
     .clk_i (clk_i), .en_i (en_i), .addr_i (idx), .data_o (value)
   );
 
-  logic signed [63:0] mant_q, e_q, t3_q, t4_q;
-  logic signed [63:0] e_q4, e_q5;    // e beside the Horner steps
-  logic signed [63:0] base_q [2:4];  // (p - 36) 2^30 + (-log2 r_i), beside them too
-  logic signed [63:0] p_q;
+  logic [UnitFrac:0]   mant_q;
+  logic signed [EW-1:0] e_q, e_q4, e_q5;  // e, then beside the Horner steps
+  logic signed [TW-1:0] t3_q, t4_q;
+  logic signed [LogW-1:0] base_q [2:4];   // (p - 36) 2^30 + (-log2 r_i), beside them too
+  logic signed [LogW-1:0] p_q;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       mant_q <= mant_d;
-      p_q    <= 64'(p_rel) <<< LogFrac;
+      p_q    <= LogW'(p_rel) <<< LogFrac;
       // stage 2
-      e_q       <= 64'(specular_setup_pkg::rshift_round(
-                       specular_setup_pkg::mul(mant_q, 64'(recip)) - (128'sd1 <<< (UnitFrac + RecipFrac)),
+      e_q       <= EW'(specular_setup_pkg::rshift_round64(
+                       specular_setup_pkg::mul64(64'(mant_q), 64'(recip)) - (64'sd1 <<< (UnitFrac + RecipFrac)),
                        UnitFrac + RecipFrac - LogFrac));
-      base_q[2] <= p_q + 64'(value);
+      base_q[2] <= p_q + LogW'(value);
       // stages 3 and 4
-      t3_q      <= specular_setup_pkg::L2 +
-                   64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(e_q, specular_setup_pkg::L3), LogFrac));
+      t3_q      <= TW'(specular_setup_pkg::L2 +
+                   specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(e_q), specular_setup_pkg::L3), LogFrac));
       base_q[3] <= base_q[2];
-      t4_q      <= specular_setup_pkg::L1 +
-                   64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(e_q4, t3_q), LogFrac));
+      t4_q      <= TW'(specular_setup_pkg::L1 +
+                   specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(e_q4), 64'(t3_q)), LogFrac));
       base_q[4] <= base_q[3];
       e_q4      <= e_q;
       e_q5      <= e_q4;
       // stage 5
-      log2_o    <= base_q[4] + 64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(e_q5, t4_q), LogFrac));
+      log2_o    <= base_q[4] + LogW'(specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(e_q5), 64'(t4_q)), LogFrac));
     end
   end
 endmodule

@@ -10,6 +10,7 @@
 //   stage 1  sq = x^2 + y^2 + z^2 (exact)
 //   stage 2  m = sq 4^k in [2^36, 2^38) (leading-one position); the seed ROM is read
 //   stage 3  t = r0^2             stages 4, 5: p = m t, e = 3 - p;  r1 = r0 e / 2
+//            (r0 = seed 2^20 exactly: step 1 multiplies the 17-bit seed, t = seed^2 2^4)
 //   stage 6  t = r1^2             stages 7, 8: as 4, 5: r2
 //   stage 9  u = v r2 2^(k - 19), rounded
 // Stages: specular_setup_pkg::NormStages. en_i freezes every stage (pipeline stall). No
@@ -115,25 +116,32 @@ module specular_setup_norm #(
   );
 
   // Stages 3 .. 8: two Newton-Raphson steps r' = r (3 - m r^2) / 2, three stages each.
-  logic signed [63:0] r0, t_q [3:8], e_q [4:8], r_q [5:8];
-  assign r0 = 64'(seed) <<< (Frac - SeedFrac);
-  logic signed [63:0] r0_q3, r0_q4;
+  // r, t and e stay within (2^-1, 2^2] of their Q36 unit (t = 4 at m = 2^36): RW bits, signed. Step 1 with
+  // r0 = seed 2^(Frac - SeedFrac): t = round(r0^2 2^-Frac) = seed^2 2^(2 (Frac - SeedFrac) - Frac),
+  // m t 2^-InBits and r0 e 2^-(Frac + 1) rounded the same from the narrow factors.
+  localparam int RW    = Frac + 4;
+  localparam int SeedW = SeedFrac + 1;
+  localparam int T1Sh  = 2 * (Frac - SeedFrac) - Frac;  // 4: t = seed^2 2^T1Sh
+  logic [2*SeedW-1:0]   t1_q;                  // seed^2
+  logic [SeedW-1:0]     seed_q3, seed_q4;
+  logic signed [RW-1:0] t_q6, e_q4, e_q7, r_q5, r_q6, r_q7, r_q8;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       // step 1
-      t_q[3] <= 64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(r0, r0), Frac));
-      r0_q3  <= r0;
-      e_q[4] <= (64'sd3 <<< Frac) -
-                64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(m_q[3]), t_q[3]), InBits));
-      r0_q4  <= r0_q3;
-      r_q[5] <= 64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(r0_q4, e_q[4]), Frac + 1));
+      t1_q    <= (2 * SeedW)'(seed) * (2 * SeedW)'(seed);
+      seed_q3 <= seed;
+      e_q4    <= RW'((128'sd3 <<< Frac) - specular_setup_pkg::rshift_round(
+                     specular_setup_pkg::mul(64'(m_q[3]), 64'(t1_q)), InBits - T1Sh));
+      seed_q4 <= seed_q3;
+      r_q5    <= RW'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(seed_q4), 64'(e_q4)),
+                                                      Frac + 1 - (Frac - SeedFrac)));
       // step 2
-      t_q[6] <= 64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(r_q[5], r_q[5]), Frac));
-      r_q[6] <= r_q[5];
-      e_q[7] <= (64'sd3 <<< Frac) -
-                64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(m_q[6]), t_q[6]), InBits));
-      r_q[7] <= r_q[6];
-      r_q[8] <= 64'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(r_q[7], e_q[7]), Frac + 1));
+      t_q6 <= RW'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(r_q5), 64'(r_q5)), Frac));
+      r_q6 <= r_q5;
+      e_q7 <= RW'((128'sd3 <<< Frac) - specular_setup_pkg::rshift_round(
+                  specular_setup_pkg::mul(64'(m_q[6]), 64'(t_q6)), InBits));
+      r_q7 <= r_q6;
+      r_q8 <= RW'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(r_q7), 64'(e_q7)), Frac + 1));
     end
   end
 
@@ -142,9 +150,9 @@ module specular_setup_norm #(
   assign shift = 32'(InBits / 2 + Frac - specular_setup_pkg::UnitFrac) - 32'(k_q[8]);
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      x_o <= W'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(vx_q[8]), r_q[8]), shift));
-      y_o <= W'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(vy_q[8]), r_q[8]), shift));
-      z_o <= W'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(vz_q[8]), r_q[8]), shift));
+      x_o <= W'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(vx_q[8]), 64'(r_q8)), shift));
+      y_o <= W'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(vy_q[8]), 64'(r_q8)), shift));
+      z_o <= W'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(64'(vz_q[8]), 64'(r_q8)), shift));
     end
   end
 

@@ -25,15 +25,19 @@ package specular_setup_pkg;
   localparam int CordicFrac    = UnitFrac + 6;  // CORDIC x, y, angles: Q42
   localparam int CordicIters   = UnitFrac + 4;
   localparam int CordicW       = CordicFrac + 4;  // CORDIC x, y, z: |value| < 8
-  localparam int GammaFrac     = UnitFrac + 2;  // gamma for the product with 1/l: Q38
+  localparam int GammaFrac     = 30;  // gamma for the product with 1/l: Q30
+  localparam int GainFrac      = 30;  // A K and 1/K for their product: Q30
   localparam int LogFrac       = 30;  // log2 A, n log2 A, 2^f: Q30
+  localparam int LogW          = LogFrac + 8;   // log2 A: |value| < 128
+  localparam int ExpW          = LogFrac + 18;  // n log2 A: |value| < 2^17
+  localparam int AmpW          = UnitFrac + 4;  // A, Q36: 0 <= value < 8
   localparam int LogAddrBits   = 10;
   localparam int LogRecipFrac  = 12;
-  localparam int RecipLenFrac  = 29;  // 1/l mantissa round(2^(29 + s) / l), s = floor(log2 l)
+  localparam int RecipLenFrac  = 31;  // 1/l mantissa round(2^(31 + s) / l), s = floor(log2 l)
   localparam int ChordFloor    = 16;  // Q36 codes: the flat and opposite-halfway floor
 
   // ---- Constants (setup_romgen --consts) ----
-  localparam logic signed [63:0] InvGain = 64'sd41730103940;    // round(2^36 / K)
+  localparam logic signed [63:0] InvGain = 64'sd652032874;       // round(2^30 / K)
   localparam logic signed [63:0] Pi      = 64'sd13816870609431;  // round(pi 2^42)
   // log2(1 + e) = e (L1 + e (L2 + e L3)), 2^f = 1 + f (E1 + f (E2 + f E3)), Q30
   localparam logic signed [63:0] L1 = 64'sd1549082005;
@@ -83,6 +87,20 @@ package specular_setup_pkg;
   // Exact product of two Q-values, sign-extended to 128 bits.
   function automatic logic signed [127:0] mul(input logic signed [63:0] a, input logic signed [63:0] b);
     mul = 128'(a) * 128'(b);
+  endfunction
+
+  // The same in 64 bits, for the products that stay below 2^63 (log2, exp2, dpsi, A): Verilator
+  // keeps them in 64-bit words. Callers pass narrow signals sign-extended, so synthesis sizes
+  // the multiplier by the signals' widths.
+  function automatic logic signed [63:0] rshift_round64(input logic signed [63:0] x, input int s);
+    if (s <= 0) begin
+      rshift_round64 = x <<< (-s);
+    end else begin
+      rshift_round64 = (x + (64'sd1 <<< (s - 1))) >>> s;
+    end
+  endfunction
+  function automatic logic signed [63:0] mul64(input logic signed [63:0] a, input logic signed [63:0] b);
+    mul64 = a * b;
   endfunction
 
 endpackage

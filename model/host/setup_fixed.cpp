@@ -68,7 +68,7 @@ int64_t cordic_inv_gain() {
   static const int64_t g = [] {
     long double k = 1.0L;
     for (int i = 0; i < kCordicIters; ++i) k *= std::sqrt(1.0L + std::ldexp(1.0L, -2 * i));
-    return round_ld(std::ldexp(1.0L / k, kUnitFrac));
+    return round_ld(std::ldexp(1.0L / k, kGainFrac));
   }();
   return g;
 }
@@ -107,7 +107,7 @@ const std::vector<int64_t>& exp2_table() {
 int recip_len_shift(uint32_t len) { return len == 0 ? 0 : std::bit_width(len) - 1; }
 
 const std::vector<uint64_t>& recip_len_table() {
-  // Word l: round(2^(29 + s) / l) in [2^28, 2^29], s = floor(log2 l): a mantissa of 1/l with
+  // Word l: round(2^(31 + s) / l) in [2^30, 2^31], s = floor(log2 l): a mantissa of 1/l with
   // the same relative precision for every l.
   static const std::vector<uint64_t> t = [] {
     std::vector<uint64_t> v{0};
@@ -311,8 +311,9 @@ Result setup_fixed(const device::GeoSpan& g, const device::GeoFormat& gf, const 
   }
   const Polar p = cordic_vectoring(t.cos_t1 * one(up), t.nu * one(up));
   t.lambda = p.angle;
-  // A = (A K) (1/K): A K rounded to Q36 first.
-  t.a = static_cast<int64_t>(rshift_round(prod(rshift_round(p.mag_k, up), cordic_inv_gain()), kUnitFrac));
+  // A = (A K) (1/K): A K rounded to Q30 first, the product (below 2^62) rounded to Q36.
+  t.a = static_cast<int64_t>(rshift_round(prod(rshift_round(p.mag_k, kCordicFrac - kGainFrac), cordic_inv_gain()),
+                                          2 * kGainFrac - kUnitFrac));
 
   // 7. The registers.
   r.span.reg.psi0 = static_cast<int64_t>(rshift_round(-static_cast<i128>(t.lambda), kCordicFrac - f.angle_frac));

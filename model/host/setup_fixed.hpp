@@ -48,11 +48,12 @@ inline constexpr int kRsqrtSeedFrac = 16;             // seed word, Q16 (17 bits
 inline constexpr int kRsqrtSteps = 2;                 // Newton-Raphson steps after the seed
 inline constexpr int kCordicFrac = kUnitFrac + 6;     // CORDIC x, y and angles: Q42 (6 guard bits)
 inline constexpr int kCordicIters = kUnitFrac + 4;    // vectoring iterations (residual angle < 2^-39)
-inline constexpr int kGammaFrac = kUnitFrac + 2;      // gamma rounded to Q38 for the product with 1/l
+inline constexpr int kGammaFrac = 30;                 // gamma rounded to Q30 for the product with 1/l
+inline constexpr int kGainFrac = 30;                  // A K rounded to Q30 for the product with 1/K (Q30)
 inline constexpr int kLogFrac = 30;                   // log2 A, n log2 A, 2^f: Q30
 inline constexpr int kLogAddrBits = 10;               // log2 and exp2 table addresses
 inline constexpr int kLogRecipFrac = 12;              // log2 table: reciprocal of the interval, Q12
-inline constexpr int kRecipLenFrac = 29;              // 1/l table: mantissa round(2^(29 + s) / l), s = floor(log2 l)
+inline constexpr int kRecipLenFrac = 31;              // 1/l table: mantissa round(2^(31 + s) / l), s = floor(log2 l)
 inline constexpr int kChordFloor = 16;                // Q36 codes (2^-32): H2 -+ H1 below it in every component
                                                       // is gamma = 0 (flat) or gamma = pi (opposite halfway)
 
@@ -87,11 +88,11 @@ uint32_t scale_exp2(uint32_t code, int64_t e, uint32_t max_code, bool* saturated
 // ---- The tables (word i of each ROM) and constants, integer functions of the address ----
 const std::vector<uint32_t>& rsqrt_seed_table();  // word a - 1024 for a in [1024, 4096)
 const std::vector<int64_t>& atan_table();         // round(atan(2^-i) 2^42), i < kCordicIters
-int64_t cordic_inv_gain();                        // round(2^36 / K): Q36
+int64_t cordic_inv_gain();                        // round(2^30 / K): Q30
 const std::vector<uint32_t>& log_recip_table();   // Q12 reciprocal of 1 + (i + 1/2)/1024
 const std::vector<int64_t>& log_value_table();    // round(-log2(recip_i / 2^12) 2^30)
 const std::vector<int64_t>& exp2_table();         // round(2^(i/1024) 2^30)
-const std::vector<uint64_t>& recip_len_table();   // word l: round(2^(29 + s) / l), s = floor(log2 l); word 0 = 0
+const std::vector<uint64_t>& recip_len_table();   // word l: round(2^(31 + s) / l), s = floor(log2 l); word 0 = 0
 int recip_len_shift(uint32_t len);                // s = floor(log2 l) (0 for l = 0)
 int64_t cordic_pi();                              // round(pi 2^42)
 // Polynomial coefficients, Q30: log2(1+e) = e (L1 + e (L2 + e L3)), 2^f = 1 + f (E1 + f (E2 + f E3)).

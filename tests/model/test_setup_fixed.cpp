@@ -95,7 +95,7 @@ TEST_CASE("fixed setup: CORDIC, log2 and exp2 against long double", "[setup_fixe
     const long double xa = q(x, hf::kCordicFrac), ya = q(y, hf::kCordicFrac);
     // The angle's error is absolute in the plane: relative to the vector's length r.
     worst_a = std::max(worst_a, r * std::abs(q(p.angle, hf::kCordicFrac) - std::atan2(ya, xa)));
-    worst_m = std::max(worst_m, std::abs(q(p.mag_k, hf::kCordicFrac) * q(hf::cordic_inv_gain(), hf::kUnitFrac) -
+    worst_m = std::max(worst_m, std::abs(q(p.mag_k, hf::kCordicFrac) * q(hf::cordic_inv_gain(), hf::kGainFrac) -
                                          std::hypot(xa, ya)));
   }
   for (int i = 0; i < 100000; ++i) {
@@ -109,7 +109,7 @@ TEST_CASE("fixed setup: CORDIC, log2 and exp2 against long double", "[setup_fixe
   INFO("atan2 " << static_cast<double>(worst_a) << " rad |v|, |v| " << static_cast<double>(worst_m) << ", log2 "
                 << static_cast<double>(worst_l) << ", C codes " << static_cast<double>(worst_e));
   CHECK(worst_a < std::ldexp(1.0L, -(hf::kCordicFrac - 5)));
-  CHECK(worst_m < std::ldexp(1.0L, -hf::kUnitFrac));
+  CHECK(worst_m < std::ldexp(1.0L, -(hf::kGainFrac + 1)));  // 1/K in Q30
   CHECK(worst_l < std::ldexp(1.0L, -(hf::kLogFrac - 2)));
   CHECK(worst_e <= 0.5L + 1e-6L);  // rounded to the nearest code
   // Exact corners.
