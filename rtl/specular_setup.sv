@@ -302,7 +302,7 @@ module specular_setup #(
   logic signed [CordicW-1:0] x_34, cos_t1_34;  // dot products, |value| < 2^(CordicW-1-UnitFrac)
   logic flat_33, flat_34;
   specular_delay #(.Width(2 * CordicW), .Depth(TNu - TTest), .Reset(1'b0)) u_dly_xc (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({CordicW'(x_23), CordicW'(cos_t1_23)}), .q_o ({x_34, cos_t1_34})
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({x_23[CordicW-1:0], cos_t1_23[CordicW-1:0]}), .q_o ({x_34, cos_t1_34})
   );
   specular_delay #(.Width(1), .Depth(TU - TTest), .Reset(1'b0)) u_dly_flat (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (flat_23), .q_o (flat_33)
@@ -372,14 +372,16 @@ module specular_setup #(
       if (len_75[b]) lshift_d = 4'(b);
     end
   end
+  // A K rounded to Q30 (< 2.4: 33 bits) for the product with 1/K.
+  logic signed [GainFrac+2:0] ak_75;
+  assign ak_75 = (GainFrac + 3)'(specular_setup_pkg::rshift_round64(64'(amag_75), CordicFrac - GainFrac));
   always_ff @(posedge clk_i) begin
     if (adv) begin
       gamma_76  <= flat_75 ? '0 : opp_h_75 ? Pi
                  : gamma_angle < 0 ? '0 : gamma_angle > Pi ? Pi : gamma_angle;
       // A = (A K) (1/K): A K rounded to Q30 first, 1/K in Q30, the product (< 2^62) to Q36.
-      a_76      <= AmpW'(specular_setup_pkg::rshift_round64(
-                       specular_setup_pkg::mul64(64'(AmpW'(specular_setup_pkg::rshift_round64(64'(amag_75), CordicFrac - GainFrac))),
-                                                 InvGain), 2 * GainFrac - UnitFrac));
+      a_76      <= AmpW'(specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(ak_75), InvGain),
+                                                         2 * GainFrac - UnitFrac));
       psi0_76   <= AngleBits'(specular_setup_pkg::rshift_round(128'sd0 - 128'(lambda_75), CordicFrac - AngleFrac));
       lshift_76 <= lshift_d;
     end
@@ -397,12 +399,13 @@ module specular_setup #(
 
   // ---- tau 77: dpsi ----
   logic [AngleBits-1:0] dpsi_77, dpsi_88;
+  logic signed [GammaW-1:0] gamma30_76;  // gamma rounded to Q30
+  assign gamma30_76 = GammaW'(specular_setup_pkg::rshift_round64(64'(gamma_76), CordicFrac - GammaFrac));
   always_ff @(posedge clk_i) begin
     if (adv) begin
       // gamma rounded to Q30, times the mantissa of 1/l, shifted by s = floor(log2 l).
       dpsi_77 <= AngleBits'(specular_setup_pkg::rshift_round64(
-                     specular_setup_pkg::mul64(64'(GammaW'(specular_setup_pkg::rshift_round64(64'(gamma_76), CordicFrac - GammaFrac))),
-                                               64'(recip_76)),
+                     specular_setup_pkg::mul64(64'(gamma30_76), 64'(recip_76)),
                      GammaFrac + RecipLenFrac + 32'(lshift_76) - AngleFrac));
     end
   end
