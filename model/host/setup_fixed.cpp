@@ -32,8 +32,13 @@ uint64_t isqrt(uint64_t x) {
 
 int64_t round_ld(long double v) { return static_cast<int64_t>(std::llround(v)); }
 
-// The exact product of two codes (below 2^100 for every product here).
-i128 prod(i128 a, i128 b) { return a * b; }
+// The exact product of two codes. Every product of the datapath is below 2^80 in magnitude
+// (docs/setup_hw.md#datapath; log2, exp2, A and dpsi below 2^63: the RTL's 64-bit products).
+i128 prod(i128 a, i128 b) {
+  const i128 p = a * b;
+  if (p >= (i128{1} << 80) || p <= -(i128{1} << 80)) throw std::logic_error("setup_fixed: a product beyond 80 bits");
+  return p;
+}
 
 void require(bool ok, const std::string& what) {
   if (!ok) throw std::invalid_argument("setup_fixed: " + what);
