@@ -185,22 +185,22 @@ module specular_setup #(
 
   // ---- Normalizers ----
   vec_t n1u, n2u, h1u, heu, mu, uu, w_q;
-  specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_n1 (
-    .clk_i (clk_i), .en_i (adv), .x_i (c1.x), .y_i (c1.y), .z_i (c1.z), .x_o (n1u.x), .y_o (n1u.y), .z_o (n1u.z)
+  specular_setup_norm #(.InW(VecBits), .RsqrtSeedFile(RsqrtSeedFile)) u_norm_n1 (
+    .clk_i (clk_i), .en_i (adv), .x_i (c1.x[VecBits-1:0]), .y_i (c1.y[VecBits-1:0]), .z_i (c1.z[VecBits-1:0]), .x_o (n1u.x), .y_o (n1u.y), .z_o (n1u.z)
   );
-  specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_n2 (
-    .clk_i (clk_i), .en_i (adv), .x_i (c2.x), .y_i (c2.y), .z_i (c2.z), .x_o (n2u.x), .y_o (n2u.y), .z_o (n2u.z)
+  specular_setup_norm #(.InW(VecBits), .RsqrtSeedFile(RsqrtSeedFile)) u_norm_n2 (
+    .clk_i (clk_i), .en_i (adv), .x_i (c2.x[VecBits-1:0]), .y_i (c2.y[VecBits-1:0]), .z_i (c2.z[VecBits-1:0]), .x_o (n2u.x), .y_o (n2u.y), .z_o (n2u.z)
   );
-  specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_h1 (
-    .clk_i (clk_i), .en_i (adv), .x_i (c3.x), .y_i (c3.y), .z_i (c3.z), .x_o (h1u.x), .y_o (h1u.y), .z_o (h1u.z)
+  specular_setup_norm #(.InW(VecBits), .RsqrtSeedFile(RsqrtSeedFile)) u_norm_h1 (
+    .clk_i (clk_i), .en_i (adv), .x_i (c3.x[VecBits-1:0]), .y_i (c3.y[VecBits-1:0]), .z_i (c3.z[VecBits-1:0]), .x_o (h1u.x), .y_o (h1u.y), .z_o (h1u.z)
   );
   if (HeEqH1) begin : gen_he_eq_h1
     assign heu = h1u;
     logic unused_c4;
     assign unused_c4 = ^c4;
   end else begin : gen_he
-    specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_he (
-      .clk_i (clk_i), .en_i (adv), .x_i (c4.x), .y_i (c4.y), .z_i (c4.z), .x_o (heu.x), .y_o (heu.y), .z_o (heu.z)
+    specular_setup_norm #(.InW(VecBits), .RsqrtSeedFile(RsqrtSeedFile)) u_norm_he (
+      .clk_i (clk_i), .en_i (adv), .x_i (c4.x[VecBits-1:0]), .y_i (c4.y[VecBits-1:0]), .z_i (c4.z[VecBits-1:0]), .x_o (heu.x), .y_o (heu.y), .z_o (heu.z)
     );
   end
   // tau 9 -> 18: the bisector.

@@ -19,13 +19,16 @@
 `include "specular_assert.svh"
 
 module specular_setup_norm #(
-  parameter RsqrtSeedFile = "roms/setup/rsqrt_seed.hex"
+  // Input component width: VecW for Q36 vectors, the interface's VecBits for integer codes
+  // (narrower squares and scalings).
+  parameter int InW           = specular_setup_pkg::VecW,
+  parameter     RsqrtSeedFile = "roms/setup/rsqrt_seed.hex"
 ) (
   input  logic                                   clk_i,
   input  logic                                   en_i,
-  input  logic signed [specular_setup_pkg::VecW-1:0] x_i,
-  input  logic signed [specular_setup_pkg::VecW-1:0] y_i,
-  input  logic signed [specular_setup_pkg::VecW-1:0] z_i,
+  input  logic signed [InW-1:0]                  x_i,
+  input  logic signed [InW-1:0]                  y_i,
+  input  logic signed [InW-1:0]                  z_i,
   output logic signed [specular_setup_pkg::VecW-1:0] x_o,
   output logic signed [specular_setup_pkg::VecW-1:0] y_o,
   output logic signed [specular_setup_pkg::VecW-1:0] z_o
@@ -36,14 +39,17 @@ module specular_setup_norm #(
   localparam int Frac     = specular_setup_pkg::RsqrtFrac;
   localparam int AddrBits = specular_setup_pkg::RsqrtAddrBits;
   localparam int SeedFrac = specular_setup_pkg::RsqrtSeedFrac;
-  localparam int SqBits   = 2 * W;  // 3 squares of W-bit values: < 3 2^(2W-2)
+  localparam int SqBits   = 2 * InW;  // 3 squares of InW-bit values: < 3 2^(2 InW - 2)
   localparam int Stages   = 9;
 
   if (Stages != specular_setup_pkg::NormStages) begin : gen_stage_check
     `SPEC_PARAM_ERROR("specular_setup_norm: specular_setup_pkg::NormStages disagrees with the stages built here")
   end
+  if (InW < 2 || InW > W) begin : gen_width_check
+    `SPEC_PARAM_ERROR("specular_setup_norm: InW must be in 2..VecW")
+  end
 
-  typedef logic signed [W-1:0] comp_t;
+  typedef logic signed [InW-1:0] comp_t;
   // The vector travels beside the reciprocal square root: vec_q[s] after stage s.
   comp_t vx_q [1:Stages-1], vy_q [1:Stages-1], vz_q [1:Stages-1];
   for (genvar s = 1; s < Stages; s++) begin : gen_vec
@@ -66,9 +72,12 @@ module specular_setup_norm #(
   end
 
   // Stage 2: even shift into [2^36, 2^38); k = floor((38 - bit width) / 2).
+  localparam int ShBits = SqBits > InBits ? SqBits : InBits;  // sq, shifted either way, fits
   logic signed [31:0]   bw;
   logic signed [7:0]    k_d;
   logic [InBits-1:0]    m_d;
+  logic [ShBits-1:0]    sq_w;
+  assign sq_w = ShBits'(sq_q);
   always_comb begin
     bw = 0;
     for (int b = 0; b < SqBits; b++) begin
@@ -76,9 +85,9 @@ module specular_setup_norm #(
     end
     k_d = 8'((32'(InBits) - bw) >>> 1);
     if (k_d >= 0) begin
-      m_d = InBits'(sq_q << (2 * k_d));
+      m_d = InBits'(sq_w << (2 * k_d));
     end else begin
-      m_d = InBits'(sq_q >> (-2 * k_d));
+      m_d = InBits'(sq_w >> (-2 * k_d));
     end
   end
   logic [InBits-1:0] m_q [2:Stages-1];
