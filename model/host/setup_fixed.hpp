@@ -38,8 +38,8 @@ __extension__ using u128 = unsigned __int128;
 
 // ---- The widths, each defined here once (docs/setup_hw.md#widths) ----
 // The narrowest that keep the setup within 0.01 % + 1 LSB of the scalar double setup
-// (docs/setup_hw.md#error-budget): a unit-vector width of 35 fraction bits or fewer fails
-// on spans with a tiny chord and a saturated C.
+// (docs/setup_hw.md#error-budget, measured): with 35 unit-vector fraction bits or fewer the
+// setup exceeds it (the worst: spans with a tiny chord and a saturated C).
 inline constexpr int kUnitFrac = 36;                  // unit vectors and dot products: Q36 (|value| < 8)
 inline constexpr int kRsqrtInBits = kUnitFrac + 2;    // normalized radicand m in [2^36, 2^38)
 inline constexpr int kRsqrtFrac = kUnitFrac;          // r = 2^55 / sqrt(m) in (2^36, 2^37]: Q36 of 1/sqrt(m / 2^38)
