@@ -104,7 +104,7 @@ module specular_setup #(
   localparam int NBits     = 10;
   localparam int LenBits   = 11;
   localparam int MaxN      = 1000;
-  localparam int Up        = CordicFrac - UnitFrac;  // Q36 -> Q42
+  localparam int Up        = CordicFrac - UnitFrac;  // Q44 -> Q50
   // tau of each step's output (see the header).
   localparam int TNorm1  = NormStages;               // 9
   localparam int TNorm2  = TNorm1 + NormStages;      // 18
@@ -231,7 +231,7 @@ module specular_setup #(
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (opp_normals), .q_o (opp_n_19)
   );
 
-  // a.b rounded once, Q36.
+  // a.b rounded once, Q44.
   function automatic logic signed [63:0] dot(input logic signed [VecW-1:0] ax, input logic signed [VecW-1:0] ay,
                                              input logic signed [VecW-1:0] az, input logic signed [VecW-1:0] bx,
                                              input logic signed [VecW-1:0] by, input logic signed [VecW-1:0] bz);
@@ -239,7 +239,7 @@ module specular_setup #(
                                                specular_setup_pkg::mul(64'(ay), 64'(by)) +
                                                specular_setup_pkg::mul(64'(az), 64'(bz)), UnitFrac));
   endfunction
-  // One component of v - s u 2^(36 - sh) (sh = 35: a reflection's v - 2 (v.u) u).
+  // One component of v - s u 2^(44 - sh) (sh = 43: a reflection's v - 2 (v.u) u).
   function automatic logic signed [VecW-1:0] sub_scaled(input logic signed [VecW-1:0] v, input logic signed [63:0] sc,
                                                         input logic signed [VecW-1:0] u, input int sh);
     sub_scaled = v - VecW'(specular_setup_pkg::rshift_round(specular_setup_pkg::mul(sc, 64'(u)), sh));
@@ -379,7 +379,7 @@ module specular_setup #(
     if (adv) begin
       gamma_76  <= flat_75 ? '0 : opp_h_75 ? Pi
                  : gamma_angle < 0 ? '0 : gamma_angle > Pi ? Pi : gamma_angle;
-      // A = (A K) (1/K): A K rounded to Q30 first, 1/K in Q30, the product (< 2^62) to Q36.
+      // A = (A K) (1/K): A K rounded to Q30 first, 1/K in Q30, the product (< 2^62) to Q44.
       a_76      <= AmpW'(specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(ak_75), InvGain),
                                                          2 * GainFrac - UnitFrac));
       psi0_76   <= AngleBits'(specular_setup_pkg::rshift_round(128'sd0 - 128'(lambda_75), CordicFrac - AngleFrac));

@@ -3,9 +3,9 @@
 //
 // specular_setup_cordic: CORDIC vectoring, pipelined, one vector per clock
 // (docs/setup_hw.md#datapath, step 6; the golden model is host::fixed::cordic_vectoring in
-// model/host/setup_fixed.hpp). For (x, y) in Q42 (specular_setup_pkg::CordicFrac) it gives
-// angle_o = atan2(y, x) in (-pi, pi] up to the residual atan(2^-(CordicIters-1)), Q42, and
-// mag_o = K |(x, y)|, Q42, K the CORDIC gain. |x|, |y| <= 2 in, so every value stays below 8.
+// model/host/setup_fixed.hpp). For (x, y) in Q50 (specular_setup_pkg::CordicFrac) it gives
+// angle_o = atan2(y, x) in (-pi, pi] up to the residual atan(2^-(CordicIters-1)), Q50, and
+// mag_o = K |(x, y)|, Q50, K the CORDIC gain. |x|, |y| <= 2 in, so every value stays below 8.
 //
 //   stage 1        a half turn into the right half plane when x < 0 (angle +-pi)
 //   stage 2 + i    iteration i: the vector turned by -+atan(2^-i) towards y = 0

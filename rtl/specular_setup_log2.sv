@@ -1,15 +1,15 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
-// specular_setup_log2: log2 of a positive Q36 value (UnitFrac), Q30 (LogFrac), pipelined, one
+// specular_setup_log2: log2 of a positive Q44 value (UnitFrac), Q30 (LogFrac), pipelined, one
 // value per clock (docs/setup_hw.md#datapath, step 7; the golden model is
-// host::fixed::log2_unit in model/host/setup_fixed.hpp). a = 2^(p-36) mant, mant in [1, 2); a 1024-word table pair
+// host::fixed::log2_unit in model/host/setup_fixed.hpp). a = 2^(p-44) mant, mant in [1, 2); a 1024-word table pair
 // gives a 12-bit reciprocal r_i of the interval of mant and -log2 r_i; e = mant r_i - 1,
 // |e| < 2^-10, and log2(1 + e) = e (L1 + e (L2 + e L3)).
 //
 //   stage 1  p and mant (leading-one position); both ROMs are read
 //   stage 2  e = mant r_i - 1             stages 3, 4: the Horner steps
-//   stage 5  (p - 36) + (-log2 r_i) + e (...)
+//   stage 5  (p - 44) + (-log2 r_i) + e (...)
 // Stages: specular_setup_pkg::LogStages. A non-positive a gives a defined, meaningless
 // value (the setup does not use it). en_i freezes every stage. No reset.
 
@@ -41,7 +41,7 @@ module specular_setup_log2 #(
 
   // Stage 1.
   logic signed [31:0]   p_d;
-  logic [UnitFrac:0]    mant_d;  // [2^36, 2^37)
+  logic [UnitFrac:0]    mant_d;  // [2^44, 2^45)
   always_comb begin
     p_d = -1;
     for (int b = 0; b < AmpW - 1; b++) begin
@@ -69,7 +69,7 @@ module specular_setup_log2 #(
   logic [UnitFrac:0]   mant_q;
   logic signed [EW-1:0] e_q, e_q4, e_q5;  // e, then beside the Horner steps
   logic signed [TW-1:0] t3_q, t4_q;
-  logic signed [LogW-1:0] base_q [2:4];   // (p - 36) 2^30 + (-log2 r_i), beside them too
+  logic signed [LogW-1:0] base_q [2:4];   // (p - 44) 2^30 + (-log2 r_i), beside them too
   logic signed [LogW-1:0] p_q;
   always_ff @(posedge clk_i) begin
     if (en_i) begin

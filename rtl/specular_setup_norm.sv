@@ -4,22 +4,22 @@
 // specular_setup_norm: a vector scaled to unit length, pipelined, one vector per clock
 // (docs/setup_hw.md#datapath, step 2; the golden model is host::fixed::normalize in
 // model/host/setup_fixed.hpp). The input components share any scale (integer codes of the
-// geometry span interface or Q36, specular_setup_pkg::UnitFrac); the output is Q36; the zero
+// geometry span interface or Q44, specular_setup_pkg::UnitFrac); the output is Q44; the zero
 // vector gives 0.
 //
 //   stage 1  sq = x^2 + y^2 + z^2 (exact)
-//   stage 2  m = sq 4^k in [2^36, 2^38) (leading-one position); the seed ROM is read
+//   stage 2  m = sq 4^k in [2^44, 2^46) (leading-one position); the seed ROM is read
 //   stage 3  t = r0^2             stages 4, 5: p = m t, e = 3 - p;  r1 = r0 e / 2
 //            (r0 = seed 2^20 exactly: step 1 multiplies the 17-bit seed, t = seed^2 2^4)
 //   stage 6  t = r1^2             stages 7, 8: as 4, 5: r2
-//   stage 9  u = v r2 2^(k - 19), rounded
+//   stage 9  u = v r2 2^(k - 23), rounded
 // Stages: specular_setup_pkg::NormStages. en_i freezes every stage (pipeline stall). No
 // reset: the datapath carries no control state.
 
 `include "specular_assert.svh"
 
 module specular_setup_norm #(
-  // Input component width: VecW for Q36 vectors, the interface's VecBits for integer codes
+  // Input component width: VecW for Q44 vectors, the interface's VecBits for integer codes
   // (narrower squares and scalings).
   parameter int InW           = specular_setup_pkg::VecW,
   parameter     RsqrtSeedFile = "roms/setup/rsqrt_seed.hex"
@@ -71,7 +71,7 @@ module specular_setup_norm #(
     end
   end
 
-  // Stage 2: even shift into [2^36, 2^38); k = floor((38 - bit width) / 2).
+  // Stage 2: even shift into [2^44, 2^46); k = floor((46 - bit width) / 2).
   localparam int ShBits = SqBits > InBits ? SqBits : InBits;  // sq, shifted either way, fits
   logic signed [31:0]   bw;
   logic signed [7:0]    k_d;
@@ -125,12 +125,12 @@ module specular_setup_norm #(
   );
 
   // Stages 3 .. 8: two Newton-Raphson steps r' = r (3 - m r^2) / 2, three stages each.
-  // r, t and e stay within (2^-1, 2^2] of their Q36 unit (t = 4 at m = 2^36): RW bits, signed. Step 1 with
+  // r, t and e stay within (2^-1, 2^2] of their Q44 unit (t = 4 at m = 2^44): RW bits, signed. Step 1 with
   // r0 = seed 2^(Frac - SeedFrac): t = round(r0^2 2^-Frac) = seed^2 2^(2 (Frac - SeedFrac) - Frac),
   // m t 2^-InBits and r0 e 2^-(Frac + 1) rounded the same from the narrow factors.
   localparam int RW    = Frac + 4;
   localparam int SeedW = SeedFrac + 1;
-  localparam int T1Sh  = 2 * (Frac - SeedFrac) - Frac;  // 4: t = seed^2 2^T1Sh
+  localparam int T1Sh  = 2 * (Frac - SeedFrac) - Frac;  // 12: t = seed^2 2^T1Sh
   logic [2*SeedW-1:0]   t1_q;                  // seed^2
   logic [SeedW-1:0]     seed_q3, seed_q4;
   logic signed [RW-1:0] t_q6, e_q4, e_q7, r_q5, r_q6, r_q7, r_q8;
@@ -154,7 +154,7 @@ module specular_setup_norm #(
     end
   end
 
-  // Stage 9: u = v r 2^(k - 19).
+  // Stage 9: u = v r 2^(k - 23).
   logic signed [31:0] shift;
   assign shift = 32'(InBits / 2 + Frac - specular_setup_pkg::UnitFrac) - 32'(k_q[8]);
   always_ff @(posedge clk_i) begin

@@ -16,13 +16,13 @@
 package specular_setup_pkg;
 
   // ---- Widths (setup_fixed.hpp) ----
-  localparam int UnitFrac      = 36;  // unit vectors, dot products, A: Q36
-  localparam int VecW          = UnitFrac + 4;  // a Q36 vector component (|value| < 8)
-  localparam int RsqrtInBits   = UnitFrac + 2;  // normalized radicand in [2^36, 2^38)
-  localparam int RsqrtFrac     = UnitFrac;      // 1/sqrt, Q36
+  localparam int UnitFrac      = 44;  // unit vectors, dot products, A: Q44
+  localparam int VecW          = UnitFrac + 4;  // a Q44 vector component (|value| < 8)
+  localparam int RsqrtInBits   = UnitFrac + 2;  // normalized radicand in [2^44, 2^46)
+  localparam int RsqrtFrac     = UnitFrac;      // 1/sqrt, Q44
   localparam int RsqrtAddrBits = 12;  // seed table address (3072 words)
   localparam int RsqrtSeedFrac = 16;  // seed words, Q16 (17 bits)
-  localparam int CordicFrac    = UnitFrac + 6;  // CORDIC x, y, angles: Q42
+  localparam int CordicFrac    = UnitFrac + 6;  // CORDIC x, y, angles: Q50
   localparam int CordicIters   = UnitFrac + 4;
   localparam int CordicW       = CordicFrac + 4;  // CORDIC x, y, z: |value| < 8
   localparam int GammaFrac     = 30;  // gamma for the product with 1/l: Q30
@@ -30,15 +30,15 @@ package specular_setup_pkg;
   localparam int LogFrac       = 30;  // log2 A, n log2 A, 2^f: Q30
   localparam int LogW          = LogFrac + 8;   // log2 A: |value| < 128
   localparam int ExpW          = LogFrac + 18;  // n log2 A: |value| < 2^17
-  localparam int AmpW          = UnitFrac + 4;  // A, Q36: 0 <= value < 8
+  localparam int AmpW          = UnitFrac + 4;  // A, Q44: 0 <= value < 8
   localparam int LogAddrBits   = 10;
   localparam int LogRecipFrac  = 12;
   localparam int RecipLenFrac  = 31;  // 1/l mantissa round(2^(31 + s) / l), s = floor(log2 l)
-  localparam int ChordFloor    = 16;  // Q36 codes: the flat and opposite-halfway floor
+  localparam int ChordFloor    = 16;  // Q44 codes: the flat and opposite-halfway floor
 
   // ---- Constants (setup_romgen --consts) ----
   localparam logic signed [63:0] InvGain = 64'sd652032874;       // round(2^30 / K)
-  localparam logic signed [63:0] Pi      = 64'sd13816870609431;  // round(pi 2^42)
+  localparam logic signed [63:0] Pi      = 64'sd3537118876014220;  // round(pi 2^50)
   // log2(1 + e) = e (L1 + e (L2 + e L3)), 2^f = 1 + f (E1 + f (E2 + f E3)), Q30
   localparam logic signed [63:0] L1 = 64'sd1549082005;
   localparam logic signed [63:0] L2 = -64'sd774541002;
@@ -53,23 +53,26 @@ package specular_setup_pkg;
   localparam int LogStages    = 5;                // specular_setup_log2: A -> log2 A
   localparam int ExpStages    = 6;                // specular_setup_exp2: n log2 A -> C
 
-  // round(atan(2^-i) 2^42); from i = 14 on it is 2^(42 - i) exactly.
+  // round(atan(2^-i) 2^50); from i = 17 on it is 2^(50 - i) exactly.
   function automatic logic signed [63:0] atan_q(input int i);
     case (i)
-      0:  atan_q = 64'sd3454217652358;
-      1:  atan_q = 64'sd2039143749148;
-      2:  atan_q = 64'sd1077427554660;
-      3:  atan_q = 64'sd546919049905;
-      4:  atan_q = 64'sd274520829530;
-      5:  atan_q = 64'sd137394240425;
-      6:  atan_q = 64'sd68713885150;
-      7:  atan_q = 64'sd34359039343;
-      8:  atan_q = 64'sd17179781803;
-      9:  atan_q = 64'sd8589923669;
-      10: atan_q = 64'sd4294965931;
-      11: atan_q = 64'sd2147483477;
-      12: atan_q = 64'sd1073741803;
-      13: atan_q = 64'sd536870909;
+      0:  atan_q = 64'sd884279719003555;
+      1:  atan_q = 64'sd522020799781813;
+      2:  atan_q = 64'sd275821453992967;
+      3:  atan_q = 64'sd140011276775614;
+      4:  atan_q = 64'sd70277332359676;
+      5:  atan_q = 64'sd35172925548918;
+      6:  atan_q = 64'sd17590754598329;
+      7:  atan_q = 64'sd8795914071791;
+      8:  atan_q = 64'sd4398024141687;
+      9:  atan_q = 64'sd2199020459356;
+      10: atan_q = 64'sd1099511278251;
+      11: atan_q = 64'sd549755770197;
+      12: atan_q = 64'sd274877901483;
+      13: atan_q = 64'sd137438952789;
+      14: atan_q = 64'sd68719476651;
+      15: atan_q = 64'sd34359738357;
+      16: atan_q = 64'sd17179869183;
       default: atan_q = 64'sd1 <<< (CordicFrac - i);
     endcase
   endfunction

@@ -32,11 +32,11 @@ uint64_t isqrt(uint64_t x) {
 
 int64_t round_ld(long double v) { return static_cast<int64_t>(std::llround(v)); }
 
-// The exact product of two codes. Every product of the datapath is below 2^80 in magnitude
+// The exact product of two codes. Every product of the datapath is below 2^96 in magnitude
 // (docs/setup_hw.md#datapath; log2, exp2, A and dpsi below 2^63: the RTL's 64-bit products).
 i128 prod(i128 a, i128 b) {
   const i128 p = a * b;
-  if (p >= (i128{1} << 80) || p <= -(i128{1} << 80)) throw std::logic_error("setup_fixed: a product beyond 80 bits");
+  if (p >= (i128{1} << 96) || p <= -(i128{1} << 96)) throw std::logic_error("setup_fixed: a product beyond 96 bits");
   return p;
 }
 
@@ -156,11 +156,11 @@ Vec normalize(const Vec& v) {
   i128 sq = 0;
   for (int64_t c : v) sq += prod(c, c);
   if (sq == 0) return {0, 0, 0};
-  // m = sq 4^k in [2^36, 2^38); 1/sqrt(sq) = 2^k r 2^-55, so u = v r 2^(k - 19) in Q36.
+  // m = sq 4^k in [2^44, 2^46); 1/sqrt(sq) = 2^k r 2^-67, so u = v r 2^(k - 23) in Q44.
   const int k = static_cast<int>(std::floor((kRsqrtInBits - bit_width128(sq)) / 2.0));
   const auto m = static_cast<uint64_t>(k >= 0 ? sq << (2 * k) : sq >> (-2 * k));
   const i128 r = rsqrt_norm(m);
-  const int s = kRsqrtInBits / 2 + kRsqrtFrac - kUnitFrac - k;  // 19 - k
+  const int s = kRsqrtInBits / 2 + kRsqrtFrac - kUnitFrac - k;  // 23 - k
   Vec u{};
   for (int i = 0; i < 3; ++i) u[static_cast<size_t>(i)] = static_cast<int64_t>(rshift_round(prod(v[static_cast<size_t>(i)], r), s));
   return u;
@@ -200,7 +200,7 @@ Polar cordic_vectoring(int64_t x, int64_t y) {
 int64_t log2_unit(int64_t a) {
   if (a <= 0) throw std::logic_error("log2_unit: non-positive argument");
   const int p = std::bit_width(static_cast<uint64_t>(a)) - 1;
-  const int64_t mant = p <= kUnitFrac ? a << (kUnitFrac - p) : a >> (p - kUnitFrac);  // [2^36, 2^37)
+  const int64_t mant = p <= kUnitFrac ? a << (kUnitFrac - p) : a >> (p - kUnitFrac);  // [2^44, 2^45)
   const auto idx = static_cast<size_t>((mant >> (kUnitFrac - kLogAddrBits)) & ((1 << kLogAddrBits) - 1));
   const i128 eps = prod(mant, log_recip_table()[idx]) - (i128{1} << (kUnitFrac + kLogRecipFrac));
   const i128 e = rshift_round(eps, kUnitFrac + kLogRecipFrac - kLogFrac);  // Q30, |e| < 2^-10
@@ -316,7 +316,7 @@ Result setup_fixed(const device::GeoSpan& g, const device::GeoFormat& gf, const 
   }
   const Polar p = cordic_vectoring(t.cos_t1 * one(up), t.nu * one(up));
   t.lambda = p.angle;
-  // A = (A K) (1/K): A K rounded to Q30 first, the product (below 2^62) rounded to Q36.
+  // A = (A K) (1/K): A K rounded to Q30 first, the product (below 2^62) rounded to Q44.
   t.a = static_cast<int64_t>(rshift_round(prod(rshift_round(p.mag_k, kCordicFrac - kGainFrac), cordic_inv_gain()),
                                           2 * kGainFrac - kUnitFrac));
 

@@ -37,24 +37,25 @@ __extension__ using i128 = __int128;
 __extension__ using u128 = unsigned __int128;
 
 // ---- The widths, each defined here once (docs/setup_hw.md#widths) ----
-// The narrowest that keep the setup within 0.01 % + 1 LSB of the scalar double setup
-// (docs/setup_hw.md#error-budget, measured): with 35 unit-vector fraction bits or fewer the
-// setup exceeds it (the worst: spans with a tiny chord and a saturated C).
-inline constexpr int kUnitFrac = 36;                  // unit vectors and dot products: Q36 (|value| < 8)
-inline constexpr int kRsqrtInBits = kUnitFrac + 2;    // normalized radicand m in [2^36, 2^38)
-inline constexpr int kRsqrtFrac = kUnitFrac;          // r = 2^55 / sqrt(m) in (2^36, 2^37]: Q36 of 1/sqrt(m / 2^38)
-inline constexpr int kRsqrtAddrBits = 12;             // seed address m >> 26 in [1024, 4096): 3072 words
+// The unit vectors keep Q44: with 36 fraction bits the setup still meets 0.01 % + 1 LSB on
+// the tests' spans but gives another status than the scalar setup on near-opposite halfway
+// codes, with 35 or fewer it exceeds the allowance (docs/setup_hw.md#error-budget, measured).
+// The rest is narrowed to what the registers need.
+inline constexpr int kUnitFrac = 44;                  // unit vectors and dot products: Q44 (|value| < 8)
+inline constexpr int kRsqrtInBits = kUnitFrac + 2;    // normalized radicand m in [2^44, 2^46)
+inline constexpr int kRsqrtFrac = kUnitFrac;          // r = 2^67 / sqrt(m) in (2^44, 2^45]: Q44 of 1/sqrt(m / 2^46)
+inline constexpr int kRsqrtAddrBits = 12;             // seed address m >> 34 in [1024, 4096): 3072 words
 inline constexpr int kRsqrtSeedFrac = 16;             // seed word, Q16 (17 bits)
 inline constexpr int kRsqrtSteps = 2;                 // Newton-Raphson steps after the seed
-inline constexpr int kCordicFrac = kUnitFrac + 6;     // CORDIC x, y and angles: Q42 (6 guard bits)
-inline constexpr int kCordicIters = kUnitFrac + 4;    // vectoring iterations (residual angle < 2^-39)
+inline constexpr int kCordicFrac = kUnitFrac + 6;     // CORDIC x, y and angles: Q50 (6 guard bits)
+inline constexpr int kCordicIters = kUnitFrac + 4;    // vectoring iterations (residual angle < 2^-47)
 inline constexpr int kGammaFrac = 30;                 // gamma rounded to Q30 for the product with 1/l
 inline constexpr int kGainFrac = 30;                  // A K rounded to Q30 for the product with 1/K (Q30)
 inline constexpr int kLogFrac = 30;                   // log2 A, n log2 A, 2^f: Q30
 inline constexpr int kLogAddrBits = 10;               // log2 and exp2 table addresses
 inline constexpr int kLogRecipFrac = 12;              // log2 table: reciprocal of the interval, Q12
 inline constexpr int kRecipLenFrac = 31;              // 1/l table: mantissa round(2^(31 + s) / l), s = floor(log2 l)
-inline constexpr int kChordFloor = 16;                // Q36 codes (2^-32): H2 -+ H1 below it in every component
+inline constexpr int kChordFloor = 16;                // Q44 codes (2^-40): H2 -+ H1 below it in every component
                                                       // is gamma = 0 (flat) or gamma = pi (opposite halfway)
 
 // Round-half-up arithmetic shift right (s >= 1) or exact shift left (s <= 0).
@@ -62,25 +63,25 @@ constexpr i128 rshift_round(i128 x, int s) {
   return s <= 0 ? x * (i128{1} << -s) : (x + (i128{1} << (s - 1))) >> s;
 }
 
-using Vec = std::array<int64_t, 3>;  // Q36 components {x, y, z}
+using Vec = std::array<int64_t, 3>;  // Q44 components {x, y, z}
 
 // ---- Primitives, exposed for the tests and the RTL's block tests ----
-// Reciprocal square root of a normalized radicand m in [2^36, 2^38): Q36 of 2^19 / sqrt(m).
+// Reciprocal square root of a normalized radicand m in [2^44, 2^46): Q44 of 2^23 / sqrt(m).
 int64_t rsqrt_norm(uint64_t m);
-// A vector of any common scale (integer codes or Q36) scaled to unit length, Q36; 0 stays 0.
+// A vector of any common scale (integer codes or Q44) scaled to unit length, Q44; 0 stays 0.
 Vec normalize(const Vec& v);
-// Sum of the exact products, rounded once: Q36.
+// Sum of the exact products, rounded once: Q44.
 int64_t dot(const Vec& a, const Vec& b);
 // S_u(v) = v - 2 (v.u) u.
 Vec reflect(const Vec& v, const Vec& u);
-// CORDIC vectoring of (x, y) (Q42): angle atan2(y, x) in (-pi, pi] up to the residual, Q42,
-// and the magnitude times the CORDIC gain K, Q42.
+// CORDIC vectoring of (x, y) (Q50): angle atan2(y, x) in (-pi, pi] up to the residual, Q50,
+// and the magnitude times the CORDIC gain K, Q50.
 struct Polar {
   int64_t angle = 0;
   int64_t mag_k = 0;
 };
 Polar cordic_vectoring(int64_t x, int64_t y);
-// log2 of a positive Q36 value, Q30.
+// log2 of a positive Q44 value, Q30.
 int64_t log2_unit(int64_t a);
 // code * 2^(e / 2^30), rounded, saturated to `max_code` (e Q30; `saturated` says so).
 uint32_t scale_exp2(uint32_t code, int64_t e, uint32_t max_code, bool* saturated = nullptr);
@@ -105,12 +106,12 @@ const PolyConsts& poly_consts();
 struct Trace {
   std::array<Vec, 4> unit{};  // N1, N2, H1, He normalized
   Vec h2{};                   // the rotated He
-  int64_t cos_t1 = 0, x = 0;  // N1.H1, H1.H2 (Q36)
+  int64_t cos_t1 = 0, x = 0;  // N1.H1, H1.H2 (Q44)
   bool flat = false, opposite_normals = false, opposite_halfway = false;
-  int64_t w_len = 0, nu = 0;  // |W|, N1.u (Q36)
-  int64_t gamma = 0;          // Q42
-  int64_t lambda = 0;         // Q42
-  int64_t a = 0;              // A, Q36
+  int64_t w_len = 0, nu = 0;  // |W|, N1.u (Q44)
+  int64_t gamma = 0;          // Q50
+  int64_t lambda = 0;         // Q50
+  int64_t a = 0;              // A, Q44
   int64_t log2_a = 0;         // Q30
 };
 

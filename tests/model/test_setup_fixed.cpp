@@ -147,6 +147,25 @@ TEST_CASE("fixed setup: every hard case gets the scalar setup's status and pixel
   WARN("fixed setup, " << hard_cases().size() << " hard cases: worst " << worst << " of the allowance");
 }
 
+TEST_CASE("fixed setup: near-opposite halfway codes get the scalar setup's status and pixels", "[setup_fixed]") {
+  // He one to a few codes away from -H1 (N1 = N2): |H1 + H2| from about 1e-11 up, above the
+  // scalar setup's opposite-halfway threshold of 1e-12, so an ordinary span there; the
+  // fixed-point floor must sit below it (docs/setup_hw.md#error-budget).
+  const int d = GENERATE(0, 1, 2, 3, 5, 30);
+  const int y = GENERATE(1, 7);
+  GeoSpan g;
+  g.n1 = g.n2 = {0, 0, 65536};
+  g.h1 = {131071, y, 0};
+  g.he = {-131071 + d, -y, 0};
+  g.n = 100, g.len = 100, g.scale = 30000;
+  INFO("d " << d << ", y " << y);
+  const hf::Result got = hf::setup_fixed(g, kGeo, kFmt);
+  const Ref ref = reference(g);
+  CHECK(got.status == ref.status);
+  CHECK(ref.status == (d == 0 ? SetupStatus::opposite_halfway : SetupStatus::ok));
+  CHECK(host::compare_pixels(got.span.reg, ref.reg, kFmt).ok());
+}
+
 TEST_CASE("fixed setup agrees with the scalar setup on random spans", "[setup_fixed]") {
   const char* env = std::getenv("SPECULAR_SETUP_FIXED_SPANS");
   const size_t total = env ? std::strtoull(env, nullptr, 10) : 20000;
