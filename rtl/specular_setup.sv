@@ -33,10 +33,10 @@
 //   19, 20   y = S_m(He) (He for opposite normals)      21, 22: H2 = S_N1(y)
 //   23       cos t1, x = H1.H2, the flat and opposite-halfway tests   24: W
 //   25..33   normalize W                                34: |W|, N1.u
-//   35..75   two CORDIC vectorings: gamma; lambda and A K
-//   76       gamma (0 flat, pi opposite halfway), A, psi0, floor(log2 l); the 1/l ROM is read
-//   77       dpsi                                       77..81: log2 A
-//   82       n log2 A                                   83..88: C
+//   35..83   two CORDIC vectorings: gamma; lambda and A K
+//   84       gamma (0 flat, pi opposite halfway), A, psi0, floor(log2 l); the 1/l ROM is read
+//   85       dpsi                                       85..89: log2 A
+//   90       n log2 A                                   91..96: C
 //   then     the output buffer
 // Patent block numbers do not apply: the patent leaves the setup to the host.
 
@@ -113,11 +113,11 @@ module specular_setup #(
   localparam int TW      = TTest + 1;                // 24
   localparam int TU      = TW + NormStages;          // 33
   localparam int TNu     = TU + 1;                   // 34
-  localparam int TCordic = TNu + CordicStages;       // 75
-  localparam int TRegs   = TCordic + 1;              // 76
-  localparam int TLog    = TRegs + LogStages;        // 81
-  localparam int TE      = TLog + 1;                 // 82
-  localparam int TC      = TE + ExpStages;           // 88
+  localparam int TCordic = TNu + CordicStages;       // 83
+  localparam int TRegs   = TCordic + 1;              // 84
+  localparam int TLog    = TRegs + LogStages;        // 89
+  localparam int TE      = TLog + 1;                 // 90
+  localparam int TC      = TE + ExpStages;           // 96
   localparam int OutBits = CBits + 2 * AngleBits + NBits + LenBits + TagBits + 3;
 
   if (VecBits < 2 || VecBits > 24 || TagBits < 1) begin : gen_param_check
@@ -318,137 +318,137 @@ module specular_setup #(
     end
   end
 
-  // ---- tau 35 .. 75: CORDIC ----
-  logic signed [CordicW-1:0] gamma_angle, gamma_mag_unused, lambda_75, amag_75;
+  // ---- tau 35 .. 83: CORDIC ----
+  logic signed [CordicW-1:0] gamma_angle, gamma_mag_unused, lambda_83, amag_83;
   specular_setup_cordic u_cordic_gamma (
     .clk_i (clk_i), .en_i (adv), .x_i (x_34 <<< Up), .y_i (wl_34 <<< Up),
     .angle_o (gamma_angle), .mag_o (gamma_mag_unused)
   );
   specular_setup_cordic u_cordic_lambda (
     .clk_i (clk_i), .en_i (adv), .x_i (cos_t1_34 <<< Up), .y_i (nu_34 <<< Up),
-    .angle_o (lambda_75), .mag_o (amag_75)
+    .angle_o (lambda_83), .mag_o (amag_83)
   );
-  logic flat_75, opp_h_75;
+  logic flat_83, opp_h_83;
   specular_delay #(.Width(2), .Depth(TCordic - TTest), .Reset(1'b0)) u_dly_flags (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({flat_23, opp_h_23}), .q_o ({flat_75, opp_h_75})
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({flat_23, opp_h_23}), .q_o ({flat_83, opp_h_83})
   );
   logic unused_flat_34;
   assign unused_flat_34 = flat_34;
 
-  // Sideband from tau 0: len at tau 75 (the 1/l ROM), n at tau 81, scale at tau 82, the rest
-  // at tau 88.
-  logic [LenBits-1:0] len_75, len_88;
-  logic [NBits-1:0]   n_81, n_88;
-  logic [CBits-1:0]   scale_82;
-  logic [TagBits-1:0] tag_88;
-  logic               invalid_88, undefined_88, opp_n_88, opp_h_88;
+  // Sideband from tau 0: len at tau 83 (the 1/l ROM), n at tau 89, scale at tau 90, the rest
+  // at tau 96.
+  logic [LenBits-1:0] len_83, len_96;
+  logic [NBits-1:0]   n_89, n_96;
+  logic [CBits-1:0]   scale_90;
+  logic [TagBits-1:0] tag_96;
+  logic               invalid_96, undefined_96, opp_n_96, opp_h_96;
   specular_delay #(.Width(LenBits), .Depth(TCordic), .Reset(1'b0)) u_dly_len (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (len_q), .q_o (len_75)
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (len_q), .q_o (len_83)
   );
   specular_delay #(.Width(NBits), .Depth(TLog), .Reset(1'b0)) u_dly_n (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n_q), .q_o (n_81)
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n_q), .q_o (n_89)
   );
   specular_delay #(.Width(CBits), .Depth(TE), .Reset(1'b0)) u_dly_scale (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (scale_q), .q_o (scale_82)
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (scale_q), .q_o (scale_90)
   );
   specular_delay #(.Width(LenBits + NBits + TagBits + 3), .Depth(TC), .Reset(1'b0)) u_dly_out (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv),
     .d_i ({len_q, n_q, tag_q, invalid, undefined, opp_normals}),
-    .q_o ({len_88, n_88, tag_88, invalid_88, undefined_88, opp_n_88})
+    .q_o ({len_96, n_96, tag_96, invalid_96, undefined_96, opp_n_96})
   );
   specular_delay #(.Width(1), .Depth(TC - TTest), .Reset(1'b0)) u_dly_opph (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (opp_h_23), .q_o (opp_h_88)
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (opp_h_23), .q_o (opp_h_96)
   );
 
-  // ---- tau 76: gamma, A, psi0, s = floor(log2 l); the 1/l ROM ----
-  logic signed [CordicW-1:0] gamma_76;
-  logic signed [specular_setup_pkg::AmpW-1:0] a_76;
-  logic [AngleBits-1:0] psi0_76, psi0_88;
-  logic [RecipLenFrac:0] recip_76;
-  logic [3:0] lshift_d, lshift_76;
+  // ---- tau 84: gamma, A, psi0, s = floor(log2 l); the 1/l ROM ----
+  logic signed [CordicW-1:0] gamma_84;
+  logic signed [specular_setup_pkg::AmpW-1:0] a_84;
+  logic [AngleBits-1:0] psi0_84, psi0_96;
+  logic [RecipLenFrac:0] recip_84;
+  logic [3:0] lshift_d, lshift_84;
   always_comb begin
     lshift_d = '0;
     for (int b = 0; b < LenBits; b++) begin
-      if (len_75[b]) lshift_d = 4'(b);
+      if (len_83[b]) lshift_d = 4'(b);
     end
   end
   // A K rounded to Q30 (< 2.4: 33 bits) for the product with 1/K.
-  logic signed [GainFrac+2:0] ak_75;
-  assign ak_75 = (GainFrac + 3)'(specular_setup_pkg::rshift_round64(64'(amag_75), CordicFrac - GainFrac));
+  logic signed [GainFrac+2:0] ak_83;
+  assign ak_83 = (GainFrac + 3)'(specular_setup_pkg::rshift_round64(64'(amag_83), CordicFrac - GainFrac));
   always_ff @(posedge clk_i) begin
     if (adv) begin
-      gamma_76  <= flat_75 ? '0 : opp_h_75 ? Pi
+      gamma_84  <= flat_83 ? '0 : opp_h_83 ? Pi
                  : gamma_angle < 0 ? '0 : gamma_angle > Pi ? Pi : gamma_angle;
       // A = (A K) (1/K): A K rounded to Q30 first, 1/K in Q30, the product (< 2^62) to Q44.
-      a_76      <= AmpW'(specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(ak_75), InvGain),
+      a_84      <= AmpW'(specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(ak_83), InvGain),
                                                          2 * GainFrac - UnitFrac));
-      psi0_76   <= AngleBits'(specular_setup_pkg::rshift_round(128'sd0 - 128'(lambda_75), CordicFrac - AngleFrac));
-      lshift_76 <= lshift_d;
+      psi0_84   <= AngleBits'(specular_setup_pkg::rshift_round(128'sd0 - 128'(lambda_83), CordicFrac - AngleFrac));
+      lshift_84 <= lshift_d;
     end
   end
   specular_rom #(.Width(RecipLenFrac + 1), .AddrBits(LenBits), .File(RecipLenFile)) u_recip_len_rom (
-    .clk_i (clk_i), .en_i (adv), .addr_i (len_75), .data_o (recip_76)
+    .clk_i (clk_i), .en_i (adv), .addr_i (len_83), .data_o (recip_84)
   );
   specular_delay #(.Width(AngleBits), .Depth(TC - TRegs), .Reset(1'b0)) u_dly_psi0 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (psi0_76), .q_o (psi0_88)
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (psi0_84), .q_o (psi0_96)
   );
-  logic a_pos_88;
+  logic a_pos_96;
   specular_delay #(.Width(1), .Depth(TC - TRegs), .Reset(1'b0)) u_dly_apos (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (a_76 > 0), .q_o (a_pos_88)
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (a_84 > 0), .q_o (a_pos_96)
   );
 
-  // ---- tau 77: dpsi ----
-  logic [AngleBits-1:0] dpsi_77, dpsi_88;
-  logic signed [GammaW-1:0] gamma30_76;  // gamma rounded to Q30
-  assign gamma30_76 = GammaW'(specular_setup_pkg::rshift_round64(64'(gamma_76), CordicFrac - GammaFrac));
+  // ---- tau 85: dpsi ----
+  logic [AngleBits-1:0] dpsi_85, dpsi_96;
+  logic signed [GammaW-1:0] gamma30_84;  // gamma rounded to Q30
+  assign gamma30_84 = GammaW'(specular_setup_pkg::rshift_round64(64'(gamma_84), CordicFrac - GammaFrac));
   always_ff @(posedge clk_i) begin
     if (adv) begin
       // gamma rounded to Q30, times the mantissa of 1/l, shifted by s = floor(log2 l).
-      dpsi_77 <= AngleBits'(specular_setup_pkg::rshift_round64(
-                     specular_setup_pkg::mul64(64'(gamma30_76), 64'(recip_76)),
-                     GammaFrac + RecipLenFrac + 32'(lshift_76) - AngleFrac));
+      dpsi_85 <= AngleBits'(specular_setup_pkg::rshift_round64(
+                     specular_setup_pkg::mul64(64'(gamma30_84), 64'(recip_84)),
+                     GammaFrac + RecipLenFrac + 32'(lshift_84) - AngleFrac));
     end
   end
   specular_delay #(.Width(AngleBits), .Depth(TC - TRegs - 1), .Reset(1'b0)) u_dly_dpsi (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (dpsi_77), .q_o (dpsi_88)
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (dpsi_85), .q_o (dpsi_96)
   );
 
-  // ---- tau 77 .. 88: C = scale 2^(n log2 A) ----
-  logic signed [specular_setup_pkg::LogW-1:0] log2_81;
-  logic signed [specular_setup_pkg::ExpW-1:0] e_82;
+  // ---- tau 85 .. 96: C = scale 2^(n log2 A) ----
+  logic signed [specular_setup_pkg::LogW-1:0] log2_89;
+  logic signed [specular_setup_pkg::ExpW-1:0] e_90;
   specular_setup_log2 #(.LogRecipFile(LogRecipFile), .LogValueFile(LogValueFile)) u_log2 (
-    .clk_i (clk_i), .en_i (adv), .a_i (a_76), .log2_o (log2_81)
+    .clk_i (clk_i), .en_i (adv), .a_i (a_84), .log2_o (log2_89)
   );
   always_ff @(posedge clk_i) begin
-    if (adv) e_82 <= specular_setup_pkg::ExpW'(64'($signed({1'b0, n_81})) * 64'(log2_81));
+    if (adv) e_90 <= specular_setup_pkg::ExpW'(64'($signed({1'b0, n_89})) * 64'(log2_89));
   end
-  logic [CBits-1:0] c_88;
+  logic [CBits-1:0] c_96;
   logic             sat_88_unused;
   specular_setup_exp2 #(.CBits(CBits), .Exp2File(Exp2File)) u_exp2 (
-    .clk_i (clk_i), .en_i (adv), .e_i (e_82), .scale_i (scale_82), .c_o (c_88), .sat_o (sat_88_unused)
+    .clk_i (clk_i), .en_i (adv), .e_i (e_90), .scale_i (scale_90), .c_o (c_96), .sat_o (sat_88_unused)
   );
 
-  // ---- tau 88: the descriptor; then the output buffer ----
-  logic valid_88;
+  // ---- tau 96: the descriptor; then the output buffer ----
+  logic valid_96;
   specular_delay #(.Width(1), .Depth(TC), .Reset(1'b1)) u_dly_valid (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (in_valid_q), .q_o (valid_88)
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (in_valid_q), .q_o (valid_96)
   );
-  logic             zero_88;
-  logic [2:0]       status_88;
+  logic             zero_96;
+  logic [2:0]       status_96;
   logic [OutBits-1:0] out_d, out_q;
   always_comb begin
-    zero_88   = invalid_88 || undefined_88;
-    status_88 = invalid_88 ? 3'd1 : undefined_88 ? 3'd2 : opp_h_88 ? 3'd4 : opp_n_88 ? 3'd3 : 3'd0;
-    out_d = {zero_88 || !a_pos_88 ? CBits'(0) : c_88,
-             zero_88 ? AngleBits'(0) : psi0_88,
-             zero_88 ? AngleBits'(0) : dpsi_88,
-             n_88, len_88, tag_88, status_88};
+    zero_96   = invalid_96 || undefined_96;
+    status_96 = invalid_96 ? 3'd1 : undefined_96 ? 3'd2 : opp_h_96 ? 3'd4 : opp_n_96 ? 3'd3 : 3'd0;
+    out_d = {zero_96 || !a_pos_96 ? CBits'(0) : c_96,
+             zero_96 ? AngleBits'(0) : psi0_96,
+             zero_96 ? AngleBits'(0) : dpsi_96,
+             n_96, len_96, tag_96, status_96};
   end
   specular_out_buf #(.Width(OutBits)) u_out_buf (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
     .adv_o      (adv),
-    .in_valid_i (valid_88),
+    .in_valid_i (valid_96),
     .in_data_i  (out_d),
     .px_valid_o (span_valid_o),
     .px_ready_i (span_ready_i),

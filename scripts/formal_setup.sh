@@ -19,13 +19,13 @@
 #
 # --bounded: the bounded fallback on the intact RTL: the properties alone
 # (FV_PROPERTIES_ONLY, no invariants) checked by a bounded model check from reset over
-# FORMAL_DEPTH cycles (default Latency + 6 = 96: a span accepted in the first cycle after
+# FORMAL_DEPTH cycles (default Latency + 6 = 104: a span accepted in the first cycle after
 # reset reaches the output at cycle Latency + 1). Exit 0 when no property fails.
 #
 # --mutant NAME copies the files of rtl/specular.f into OUT_DIR, applies one mutation to the
 # copy of rtl/specular_setup.sv (never to rtl/), leaves out the strengthening invariants
 # (FV_PROPERTIES_ONLY) and runs a bounded model check from reset (FORMAL_DEPTH cycles,
-# default Latency + 6 = 96, as --bounded); exit 0 only if the solver finds a counterexample. The mutant
+# default Latency + 6 = 104, as --bounded); exit 0 only if the solver finds a counterexample. The mutant
 # runs keep the datapath cut (the mutations are in the control).
 # Mutations (one line each):
 #   valid_no_reset       the valid delay line has no reset: a span in flight survives a
@@ -134,10 +134,10 @@ if [ -z "$mutant" ] && [ -z "$bounded" ]; then
 "
 fi
 # The datapath cut: every descriptor field but the tag where it enters the output buffer
-# (tau 88), and the flags of tau 0 (their products feed the sideband line). Each becomes a
+# (tau 96), and the flags of tau 0 (their products feed the sideband line). Each becomes a
 # free value every clock ($anyseq). No property constrains these values, so the cut model has
 # every behaviour of the core and more: a proof of the cut model holds for the core.
-cut_wires="c_88 psi0_88 dpsi_88 a_pos_88 opp_h_88 n_88 len_88 invalid_88 undefined_88 opp_n_88 invalid undefined opp_normals"
+cut_wires="c_96 psi0_96 dpsi_96 a_pos_96 opp_h_96 n_96 len_96 invalid_96 undefined_96 opp_n_96 invalid undefined opp_normals"
 cuts=""
 for w in $cut_wires; do
   cuts+="  select -assert-count 1 w:u_dut.${w}

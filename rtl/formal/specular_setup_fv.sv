@@ -9,8 +9,8 @@
 // `ifdef FORMAL; this file is not in the filelist rtl/specular.f.
 //
 // ABSTRACTION (in scripts/formal_setup.sh, documented in rtl/formal/README.md): the script
-// cuts the arithmetic datapath where it reaches the descriptor (the wires c_88, psi0_88,
-// dpsi_88, a_pos_88, opp_h_88, n_88, len_88 and the status flags become free values every
+// cuts the arithmetic datapath where it reaches the descriptor (the wires c_96, psi0_96,
+// dpsi_96, a_pos_96, opp_h_96, n_96, len_96 and the status flags become free values every
 // clock) and removes the logic left without a reader. What remains is the control: the
 // input register's valid, the valid delay line, the tag's delay line, the output buffer.
 // No property below constrains a cut value, so the proof covers the real datapath.
@@ -51,9 +51,9 @@
 module specular_setup_fv #(
   parameter int VecBits = 18,
   parameter int TagBits = 2,
-  // Registers after the input register (the core's tau of the descriptor, TC = 88); set by
+  // Registers after the input register (the core's tau of the descriptor, TC = 96); set by
   // scripts/formal_setup.sh from the length of the valid delay line.
-  parameter int Depth   = 88
+  parameter int Depth   = 96
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
