@@ -2,7 +2,6 @@
 // Unit tests of the golden model (model/device/device_model) and the ROM images (model/device/rom_image)
 // against hand-computed values of the header contract, with synthetic ROMs whose contents
 // make every stage visible (identity cos ROM, power-of-two coefficients).
-#define CATCH_CONFIG_MAIN  // single-file test executable
 #include "decoder_table.hpp"
 #include "device_model.hpp"
 #include "rom_image.hpp"
