@@ -4,7 +4,7 @@
 // phong_stream_fv: formal property harness of phong_stream's handshakes (geometry span in,
 // pixels out; docs/interfaces.md#geometry-span-interface, docs/phong_hw.md). Run by
 // scripts/formal_phong.sh: Yosys read_verilog -formal, Yosys sat -tempinduct (base case from
-// reset plus induction: an unbounded proof), or a bounded model check from reset.
+// reset plus induction: an unbounded proof), or a bounded model check from reset (ABC bmc3).
 // Everything below the instance is under `ifdef FORMAL; this file is not in the filelist
 // rtl/specular.f.
 //
