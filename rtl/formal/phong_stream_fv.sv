@@ -30,7 +30,7 @@
 // px_last_o, o_idx the transfers since the last one.
 //   P1 stall    after a cycle with px_valid_o && !px_ready_i, px_valid_o is still high and
 //               px_intensity_o, px_last_o, px_tag_o are unchanged
-//   P2 owed     px_valid_o -> accepted spans != n_done: no pixel without an accepted span
+//   P2 open     px_valid_o -> accepted spans != n_done: no pixel without an accepted span
 //               that is not yet complete (after a reset, none before an accept)
 //   P3 order    the solver picks any span number K (the free input f_k_i, constant); the
 //               harness records that span's l and tag at its accept. While px_valid_o is
