@@ -14,8 +14,8 @@ all: build
 help:
 	@echo "make sim     build everything, run the RTL regression (every build configuration, the stream, scenes)"
 	@echo "make test    build everything, run every test with ctest (what CI runs)"
-	@echo "make formal-long  the slow formal checks of specular_setup (ctest label formal_long)"
-	@echo "make formal  the formal proofs alone (specular_stream's handshakes, specular_axil's AXI4-Lite rules) and their mutants"
+	@echo "make formal-long  the slow formal checks of specular_setup and phong_stream (ctest label formal_long)"
+	@echo "make formal  the formal proofs alone (specular_stream's handshakes, specular_axil's AXI4-Lite rules, phong_stream's bounded check) and their mutants"
 	@echo "make roms    regenerate every configuration's ROM hex files and roms/build_configs.cmake (romgen --all)"
 	@echo "make stage-table  rewrite docs/pipeline.md's stage table from rtl/specular_pkg.sv"
 	@echo "make vcd     write VCD timing diagrams to $(BUILD)/vcd and draw the 4-pixel one"
@@ -45,7 +45,7 @@ test: build
 formal: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -R '^rtl_formal_'
 
-# The slow formal checks of specular_setup (rtl/formal/README.md#specular_setup-the-span-handshakes):
+# The slow formal checks of specular_setup and phong_stream (rtl/formal/README.md):
 # minutes to hours, so outside make test and make formal.
 formal-long: deps
 	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DSPECULAR_FORMAL_LONG=ON > /dev/null
