@@ -466,12 +466,42 @@ done
 
 [ "$elab_only" = 1 ] && exit "$failed"
 
+# The commit of the RTL the runs used, for docs/fpga_figures.json ("-modified": rtl/ differs from it).
+rtl_commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
+if [ "$rtl_commit" != unknown ] && [ -n "$(git -C "$root" status --porcelain -- rtl roms 2>/dev/null)" ]; then
+  rtl_commit+="-modified"
+fi
 rc=0
-python3 - "$out" "$strict" "${run_dirs[@]}" <<'PY' || rc=$?
-import json, os, sys
-out, strict, dirs = sys.argv[1], sys.argv[2] == "1", sys.argv[3:]
+python3 - "$out" "$strict" "$rtl_commit" "${run_dirs[@]}" <<'PY' || rc=$?
+import json, os, re, sys
+out, strict, rtl, dirs = sys.argv[1], sys.argv[2] == "1", sys.argv[3], sys.argv[4:]
 runs = [json.load(open(os.path.join(d, "result.json"))) for d in dirs]
 json.dump({"runs": runs}, open(os.path.join(out, "summary.json"), "w"), indent=1)
+# The synthesis-only results (ECP5 counts, and iCE40 runs whose Yosys counts exceed the part)
+# in the shape of docs/fpga_figures.json's "synthesis_runs", to paste there.
+entries = []
+for r in runs:
+    if r["status"] not in ("synthesis only", "does not fit") or (r["device"] != "ecp5" and r.get("nextpnr_run", True)):
+        continue
+    y = r["yosys"]
+    e = {"core": r["core"]}
+    if r.get("phong_config"):
+        e["config"] = r["phong_config"]
+    e["part"] = {"hx8k": "HX8K ct256", "up5k": "UP5K sg48", "ecp5": "ECP5"}[r["device"]]
+    e["rtl"] = rtl
+    e["tools"] = "Yosys " + re.sub(r"^Yosys (\S+).*", r"\1", r.get("yosys_version", "?"))
+    e["synthesis"] = r["synthesis"].replace(" -top", "").strip()
+    e["synthesis_only"] = True
+    if r["device"] == "ecp5":
+        e.update({"lut4": y["lut4"], "ccu2c": y["ccu2c"], "ffs": y["ff"], "mult18x18d": y["mult18x18d"],
+                  "dp16kd": y["dp16kd"], "smallest_lfe5u": r.get("smallest_lfe5u")})
+    else:
+        e.update({"fit": False, "sb_lut4": y["lut4"], "ffs": y["ff"], "brams": y["bram"], "dsps": y["dsp"],
+                  "lcs_needed_at_least": r["lcs_needed_at_least"], "lcs_available": r["lcs_available"]})
+    e["yosys_seconds"] = r["synthesis_seconds"]
+    entries.append(e)
+with open(os.path.join(out, "figures_entries.json"), "w") as f:
+    f.write("[\n" + ",\n".join("  " + json.dumps(e) for e in entries) + "\n]\n")
 ecp5 = [r for r in runs if r["device"] == "ecp5"]
 runs = [r for r in runs if r["device"] != "ecp5"]
 
@@ -532,7 +562,7 @@ if ecp5:
 md += rows + [""] + notes + erows
 open(os.path.join(out, "summary.md"), "w").write("\n".join(md) + "\n")
 print("\n".join(rows + [""] + notes + erows))
-print(f"\nwrote {os.path.join(out, 'summary.json')} and summary.md")
+print(f"\nwrote {os.path.join(out, 'summary.json')}, summary.md and figures_entries.json")
 bad = [r for r in runs if r["fit"] is None]
 if strict:
     bad += [r for r in runs if r["fit"] is False or (r["fit"] and not r.get("timing_met"))]
