@@ -10,7 +10,7 @@
 #   scripts/fpga.sh [--top unit|stream|axil|phong|setup|system|all] [--device hx8k|up5k|ecp5|all]
 #                   [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N]
 #                   [--freq-hx8k MHZ] [--freq-up5k MHZ] [--flatten|--no-flatten]
-#                   [--strict] [--fresh] [--elaborate-only]
+#                   [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only]
 #
 #   --top         the core in the harness fpga_ooc (its parameter Top): unit
 #                 (specular_unit), stream (specular_stream), axil (specular_axil: the
@@ -46,6 +46,8 @@
 #                 and stat -top sums the hierarchy). Default: hierarchical for setup and
 #                 system (flat, their synth_ecp5 did not finish in 40 minutes), flat for the
 #                 others (the figures of rtl/fpga/README.md#measured)
+#   --yosys-timeout  stop a Yosys run after S seconds (default 0: no limit, or
+#                 FPGA_YOSYS_TIMEOUT); the run is then "synthesis timed out", exit status 1
 #   --strict      exit 1 when a run does not fit or misses its frequency target
 #   --fresh       re-run even when sources, parameters, ROM files and tools are unchanged
 #                 (otherwise an unchanged run's result is reused)
@@ -69,7 +71,7 @@ me=scripts/fpga.sh
 
 die_usage() {
   echo "$me: $*" >&2
-  echo "usage: $me [--top unit|stream|axil|phong|setup|system|all] [--device hx8k|up5k|ecp5|all] [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--flatten|--no-flatten] [--strict] [--fresh] [--elaborate-only]" >&2
+  echo "usage: $me [--top unit|stream|axil|phong|setup|system|all] [--device hx8k|up5k|ecp5|all] [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--flatten|--no-flatten] [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only]" >&2
   exit 2
 }
 
@@ -77,6 +79,7 @@ top_arg=all
 dev_arg=
 phong_cfg=
 flatten=auto
+yosys_timeout=${FPGA_YOSYS_TIMEOUT:-0}
 out=build/fpga
 seed=${FPGA_SEED:-1}
 freq_hx8k=100
@@ -97,6 +100,7 @@ while [ $# -gt 0 ]; do
     --phong-config) need_value "$@"; phong_cfg=$2; shift 2 ;;
     --flatten)   flatten=yes; shift ;;
     --no-flatten) flatten=no; shift ;;
+    --yosys-timeout) need_value "$@"; yosys_timeout=$2; shift 2 ;;
     --seed)      need_value "$@"; seed=$2; shift 2 ;;
     --freq-hx8k) need_value "$@"; freq_hx8k=$2; shift 2 ;;
     --freq-up5k) need_value "$@"; freq_up5k=$2; shift 2 ;;
@@ -104,7 +108,7 @@ while [ $# -gt 0 ]; do
     --fresh)     fresh=1; shift ;;
     --elaborate-only) elab_only=1; shift ;;
     -h|--help)   sed -n '4,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
-    *)           die_usage "unknown argument '$1' (allowed: --top, --device, --out, --param, --phong-config, --seed, --freq-hx8k, --freq-up5k, --flatten, --no-flatten, --strict, --fresh, --elaborate-only, --help)" ;;
+    *)           die_usage "unknown argument '$1' (allowed: --top, --device, --out, --param, --phong-config, --seed, --freq-hx8k, --freq-up5k, --flatten, --no-flatten, --yosys-timeout, --strict, --fresh, --elaborate-only, --help)" ;;
   esac
 done
 
@@ -139,6 +143,7 @@ if [ -n "$phong_cfg" ]; then
     params+=("$g")
   done < <(grep -o '"-G[^ ]*"' <<< "$cfg_line" | sed 's/^"//; s/"$//')
 fi
+[[ "$yosys_timeout" =~ ^[0-9]+$ ]] || die_usage "--yosys-timeout must be a whole number of seconds, 0 for no limit (got '$yosys_timeout')"
 [[ "$seed" =~ ^[0-9]+$ ]] || die_usage "--seed must be a non-negative integer (got '$seed')"
 for f in "$freq_hx8k" "$freq_up5k"; do
   [[ "$f" =~ ^[0-9]+([.][0-9]+)?$ ]] && awk -v f="$f" 'BEGIN { exit !(f > 0) }' ||
@@ -269,10 +274,12 @@ for top in "${tops[@]}"; do
     echo "$me: $top on $dev: Yosys $synth ..."
     t0=$(date +%s)
     synth_rc=0
-    yosys -q -l "$dir/yosys.log" -s "$dir/synth.ys" > /dev/null 2>&1 || synth_rc=$?
+    timeout "$yosys_timeout" yosys -q -l "$dir/yosys.log" -s "$dir/synth.ys" > /dev/null 2>&1 || synth_rc=$?
     t_synth=$(date +%s)
     pnr_rc=-1
-    if [ "$synth_rc" != 0 ]; then
+    if [ "$synth_rc" = 124 ] && [ "$yosys_timeout" != 0 ]; then
+      echo "$me: Yosys did not finish $top on $dev in $yosys_timeout s (--yosys-timeout)" >&2
+    elif [ "$synth_rc" != 0 ]; then
       echo "$me: Yosys failed on $top ($dir/yosys.log):" >&2
       tail -n 15 "$dir/yosys.log" >&2
     elif [ "$dev" != ecp5 ]; then
@@ -356,7 +363,10 @@ if dev == "ecp5":
     y["lut4_positions"] = y["lut4"] + 2 * y["ccu2c"]
     res["yosys"] = y
     res["fit"] = None
-    if int(synth_rc) != 0:
+    if int(synth_rc) == 124:  # timeout(1): --yosys-timeout
+        res["status"] = "synthesis timed out"
+        res["reason"] = f"Yosys did not finish in {synth_secs} s (--yosys-timeout)"
+    elif int(synth_rc) != 0:
         res["status"] = "synthesis failed"
         res["reason"] = "Yosys failed, see yosys.log"
     else:
@@ -377,7 +387,11 @@ res["yosys"] = {"lut4": cells.get("SB_LUT4", 0),
                 "bram": cells.get("SB_RAM40_4K", 0),
                 "dsp": cells.get("SB_MAC16", 0)}
 res["lcs_available"] = {"hx8k": 7680, "up5k": 5280}[dev]
-if int(synth_rc) != 0:
+if int(synth_rc) == 124:  # timeout(1): --yosys-timeout
+    res["status"] = "synthesis timed out"
+    res["fit"] = None
+    res["reason"] = f"Yosys did not finish in {synth_secs} s (--yosys-timeout)"
+elif int(synth_rc) != 0:
     res["status"] = "synthesis failed"
     res["fit"] = None
     res["reason"] = "Yosys failed, see yosys.log"

@@ -25,6 +25,7 @@ expect "--param must be NAME=VALUE" --param CosAddrBits
 expect "--param name must be a Verilog identifier" --param 9x=1
 expect "string value must not contain quotes" --param 'CosRomFile=a"b'
 expect "--seed must be a non-negative integer" --seed abc
+expect "--yosys-timeout must be a whole number of seconds, 0 for no limit \(got '1h'\)" --top setup --yosys-timeout 1h
 expect "must be a positive number of MHz" --freq-hx8k 0
 expect "--out needs a value" --out
 expect "unknown argument '--bogus' \(allowed: .*--flatten, --no-flatten" --bogus
