@@ -398,7 +398,7 @@ elif int(synth_rc) != 0:
 elif nofit:
     res["status"] = "does not fit"
     res["fit"] = False
-    res["reason"] = nofit
+    res["reason"] = re.sub(r"^does not fit: ", "", nofit)
     res["lcs_needed_at_least"] = max(res["yosys"]["lut4"], res["yosys"]["ff"])
     res["nextpnr_run"] = False
 else:
