@@ -25,7 +25,7 @@
 #                 only) or all (the three); a comma-separated list names several. Default:
 #                 hx8k,up5k, and ecp5 too when --top is setup or system
 #   --out         output directory (default build/fpga); one folder per run, TOP_DEVICE/,
-#                 and summary.json, summary.md
+#                 and summary.json, summary.md, figures_entries.json
 #   --param       a core parameter by name, e.g. --param CosAddrBits=9
 #                 --param CosRomFile=build/roms9/cos_k_1_2_4_16.hex (repeatable; paths
 #                 relative to the repository root). Interface widths (CBits, AngleBits,
