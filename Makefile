@@ -76,7 +76,8 @@ lint: build
 
 # Out-of-context place and route of specular_unit and specular_stream (harnesses in
 # rtl/fpga/) on the iCE40-HX8K and UP5K; prints and writes $(BUILD)/fpga/summary.md.
-# FPGA_ARGS passes options, e.g. FPGA_ARGS="--param CosAddrBits=9 --param CosRomFile=DIR/cos.hex".
+# FPGA_ARGS passes options, e.g. FPGA_ARGS="--param CosAddrBits=9 --param CosRomFile=DIR/cos.hex";
+# FPGA_ARGS="--top setup" (or system): the setup's iCE40 fit and synth_ecp5 counts (rtl/fpga/README.md).
 FPGA_ARGS ?=
 fpga: deps
 	bash scripts/fpga.sh --out $(BUILD)/fpga $(FPGA_ARGS)

@@ -5,20 +5,27 @@
 # synth_ice40, then nextpnr-ice40, of the harnesses in rtl/fpga/ (registered IO around
 # specular_unit, specular_stream and specular_axil), and a summary of LUTs, FFs, block RAMs, DSPs, Fmax
 # and pixels per second per harness and device. `make fpga` runs it; so does `make report`.
+# On the ECP5, Yosys synth_ecp5 cell counts only (synthesis only; no ECP5 place and route here).
 #
-#   scripts/fpga.sh [--top unit|stream|axil|phong|all] [--device hx8k|up5k|all] [--out DIR]
-#                   [--param NAME=VALUE]... [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ]
-#                   [--strict] [--fresh] [--elaborate-only]
+#   scripts/fpga.sh [--top unit|stream|axil|phong|setup|system|all] [--device hx8k|up5k|ecp5|all]
+#                   [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N]
+#                   [--freq-hx8k MHZ] [--freq-up5k MHZ] [--flatten|--no-flatten]
+#                   [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only]
 #
 #   --top         the core in the harness fpga_ooc (its parameter Top): unit
 #                 (specular_unit), stream (specular_stream), axil (specular_axil: the
 #                 AXI4-Lite core), all (default: those three) or phong (phong_stream, the
 #                 per-pixel Blinn-Phong competitor of docs/phong_hw.md; its configurations
-#                 by --param, roms/phong/phong_configs.cmake)
+#                 by --param or --phong-config, roms/phong/phong_configs.cmake), setup
+#                 (specular_setup, the scanline setup in hardware, docs/setup_hw.md) or
+#                 system (specular_system: the setup, then the stream)
 #   --device      hx8k (iCE40-HX8K, package ct256, LUT multipliers), up5k (iCE40-UP5K,
-#                 package sg48, synth_ice40 -dsp: SB_MAC16 multipliers) or all (default)
+#                 package sg48, synth_ice40 -dsp: SB_MAC16 multipliers), ecp5 (Yosys
+#                 synth_ecp5 counts: LUT4, CCU2C, MULT18X18D, DP16KD, TRELLIS_FF; synthesis
+#                 only) or all (the three); a comma-separated list names several. Default:
+#                 hx8k,up5k, and ecp5 too when --top is setup or system
 #   --out         output directory (default build/fpga); one folder per run, TOP_DEVICE/,
-#                 and summary.json, summary.md
+#                 and summary.json, summary.md, figures_entries.json
 #   --param       a core parameter by name, e.g. --param CosAddrBits=9
 #                 --param CosRomFile=build/roms9/cos_k_1_2_4_16.hex (repeatable; paths
 #                 relative to the repository root). Interface widths (CBits, AngleBits,
@@ -28,18 +35,35 @@
 #                 set and the core's own defaults apply to the rest. Integers and Verilog
 #                 literals (40'h...) are passed as numbers, anything else as a string.
 #                 FPGA_PARAMS="NAME=VALUE NAME=VALUE" in the environment adds more.
+#   --phong-config  with --top phong: the parameters of a configuration of
+#                 roms/phong/phong_configs.cmake (n1000, n128, n64, ...); the run's folder
+#                 is phong_NAME_DEVICE/
 #   --seed        nextpnr placement seed (default 1, or FPGA_SEED)
 #   --freq-hx8k, --freq-up5k   nextpnr timing targets in MHz (default 100 and 50)
+#   --flatten, --no-flatten  synthesize flat (Yosys flattens the harness and the core, then
+#                 optimizes across the blocks) or hierarchically (synth_* -noflatten: each
+#                 distinct block module is synthesized once, however often it is instantiated,
+#                 and stat -top sums the hierarchy). Default: hierarchical for setup and
+#                 system (flat, their synth_ecp5 did not finish in 40 minutes), flat for the
+#                 others (the figures of rtl/fpga/README.md#measured)
+#   --yosys-timeout  stop a Yosys run after S seconds (default 0: no limit, or
+#                 FPGA_YOSYS_TIMEOUT); the run is then "synthesis timed out", exit status 1
 #   --strict      exit 1 when a run does not fit or misses its frequency target
 #   --fresh       re-run even when sources, parameters, ROM files and tools are unchanged
 #                 (otherwise an unchanged run's result is reused)
 #   --elaborate-only  only elaborate the harnesses in Yosys (hierarchy -check), no synthesis
 #
-# A design that does not fit (nextpnr "Unable to place ...") is a result, reported as
-# fit = no with nextpnr's reason, not an error. Missed timing is a result too (nextpnr runs
-# with --timing-allow-fail; the achieved Fmax is reported against the target).
-# Exit status: 0 done, 1 a tool failed (or --strict and a run failed to fit or close
-# timing), 2 bad arguments.
+# A design that does not fit is a result, reported as fit = no with the reason, not an
+# error: when Yosys' counts already exceed the iCE40 part (logic cells needed, at least the
+# larger of SB_LUT4 and flip-flops, as each logic cell holds one LUT4 and one flip-flop;
+# block RAMs; SB_MAC16) nextpnr is not run ("does not fit: N LC needed, 7680 available"),
+# otherwise nextpnr's own "Unable to place ...". Missed timing is a result too (nextpnr
+# runs with --timing-allow-fail; the achieved Fmax is reported against the target). An
+# ECP5 run is synthesis only: its result is Yosys' counts, and the smallest LFE5U part
+# whose LUT4 positions (LUT4 + 2 CCU2C), MULT18X18D, DP16KD and flip-flops hold them
+# (fit = null: no ECP5 place and route here).
+# Exit status: 0 done (fitting or not), 1 a tool failed (or --strict and an iCE40 run
+# failed to fit or close timing), 2 bad arguments.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -47,12 +71,15 @@ me=scripts/fpga.sh
 
 die_usage() {
   echo "$me: $*" >&2
-  echo "usage: $me [--top unit|stream|axil|phong|all] [--device hx8k|up5k|all] [--out DIR] [--param NAME=VALUE]... [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--strict] [--fresh] [--elaborate-only]" >&2
+  echo "usage: $me [--top unit|stream|axil|phong|setup|system|all] [--device hx8k|up5k|ecp5|all] [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--flatten|--no-flatten] [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only]" >&2
   exit 2
 }
 
 top_arg=all
-dev_arg=all
+dev_arg=
+phong_cfg=
+flatten=auto
+yosys_timeout=${FPGA_YOSYS_TIMEOUT:-0}
 out=build/fpga
 seed=${FPGA_SEED:-1}
 freq_hx8k=100
@@ -70,6 +97,10 @@ while [ $# -gt 0 ]; do
     --device)    need_value "$@"; dev_arg=$2; shift 2 ;;
     --out)       need_value "$@"; out=$2; shift 2 ;;
     --param)     need_value "$@"; params+=("$2"); shift 2 ;;
+    --phong-config) need_value "$@"; phong_cfg=$2; shift 2 ;;
+    --flatten)   flatten=yes; shift ;;
+    --no-flatten) flatten=no; shift ;;
+    --yosys-timeout) need_value "$@"; yosys_timeout=$2; shift 2 ;;
     --seed)      need_value "$@"; seed=$2; shift 2 ;;
     --freq-hx8k) need_value "$@"; freq_hx8k=$2; shift 2 ;;
     --freq-up5k) need_value "$@"; freq_up5k=$2; shift 2 ;;
@@ -77,20 +108,42 @@ while [ $# -gt 0 ]; do
     --fresh)     fresh=1; shift ;;
     --elaborate-only) elab_only=1; shift ;;
     -h|--help)   sed -n '4,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
-    *)           die_usage "unknown argument '$1' (allowed: --top, --device, --out, --param, --seed, --freq-hx8k, --freq-up5k, --strict, --fresh, --elaborate-only, --help)" ;;
+    *)           die_usage "unknown argument '$1' (allowed: --top, --device, --out, --param, --phong-config, --seed, --freq-hx8k, --freq-up5k, --flatten, --no-flatten, --yosys-timeout, --strict, --fresh, --elaborate-only, --help)" ;;
   esac
 done
 
 case "$top_arg" in
-  unit|stream|axil|phong) tops=("$top_arg") ;;
+  unit|stream|axil|phong|setup|system) tops=("$top_arg") ;;
   all)         tops=(unit stream axil) ;;
-  *) die_usage "--top must be one of unit, stream, axil, phong, all (got '$top_arg')" ;;
+  *) die_usage "--top must be one of unit, stream, axil, phong, setup, system, all (got '$top_arg')" ;;
 esac
-case "$dev_arg" in
-  hx8k|up5k) devices=("$dev_arg") ;;
-  all)       devices=(hx8k up5k) ;;
-  *) die_usage "--device must be one of hx8k, up5k, all (got '$dev_arg')" ;;
-esac
+if [ -z "$dev_arg" ]; then
+  case "$top_arg" in setup|system) dev_arg=hx8k,up5k,ecp5 ;; *) dev_arg=hx8k,up5k ;; esac
+fi
+devices=()
+IFS=, read -r -a dev_list <<< "$dev_arg"
+[ "${#dev_list[@]}" -gt 0 ] || die_usage "--device must be one of hx8k, up5k, ecp5, all (got '$dev_arg')"
+for d in "${dev_list[@]}"; do
+  case "$d" in
+    hx8k|up5k|ecp5) [[ " ${devices[*]+"${devices[*]}"} " == *" $d "* ]] || devices+=("$d") ;;
+    all)            devices=(hx8k up5k ecp5) ;;
+    *) die_usage "--device must be one of hx8k, up5k, ecp5, all, or a comma-separated list of them (got '$dev_arg')" ;;
+  esac
+done
+# --phong-config: the -G flags of roms/phong/phong_configs.cmake as --param NAME=VALUE.
+if [ -n "$phong_cfg" ]; then
+  [ "$top_arg" = phong ] || die_usage "--phong-config needs --top phong (got --top $top_arg)"
+  cfg_file="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/roms/phong/phong_configs.cmake"
+  cfg_line=$(grep "^set(PHONG_CONFIG_${phong_cfg}_RTL_ARGS " "$cfg_file" 2>/dev/null || true)
+  [[ "$phong_cfg" =~ ^[A-Za-z0-9_]+$ ]] && [ -n "$cfg_line" ] ||
+    die_usage "--phong-config must be one of $(sed -n 's/^set(PHONG_CONFIGS \(.*\))$/\1/p' "$cfg_file" | tr ' ' ',') (got '$phong_cfg')"
+  while read -r g; do
+    g=${g#-G}
+    g=${g//\\\"/}
+    params+=("$g")
+  done < <(grep -o '"-G[^ ]*"' <<< "$cfg_line" | sed 's/^"//; s/"$//')
+fi
+[[ "$yosys_timeout" =~ ^[0-9]+$ ]] || die_usage "--yosys-timeout must be a whole number of seconds, 0 for no limit (got '$yosys_timeout')"
 [[ "$seed" =~ ^[0-9]+$ ]] || die_usage "--seed must be a non-negative integer (got '$seed')"
 for f in "$freq_hx8k" "$freq_up5k"; do
   [[ "$f" =~ ^[0-9]+([.][0-9]+)?$ ]] && awk -v f="$f" 'BEGIN { exit !(f > 0) }' ||
@@ -118,7 +171,7 @@ for p in "${params[@]+"${params[@]}"}"; do
   if [[ "$harness_widths" == *" $name "* ]]; then harness_chparam+=("$arg"); else core_chparam+=("$arg"); fi
 done
 
-for tool in yosys nextpnr-ice40 python3; do
+for tool in yosys python3 $([[ " ${devices[*]} " == *" hx8k "* || " ${devices[*]} " == *" up5k "* ]] && echo nextpnr-ice40); do
   command -v "$tool" > /dev/null || { echo "$me: $tool is not installed (scripts/install-deps.sh installs it)" >&2; exit 1; }
 done
 
@@ -137,9 +190,10 @@ sources+=(rtl/fpga/fpga_ooc_io.sv rtl/fpga/fpga_ooc.sv)
 
 harness=fpga_ooc
 # fpga_ooc's parameter Top for each --top (rtl/fpga/fpga_ooc.sv).
-top_id_of()  { case "$1" in unit) echo 0 ;; stream) echo 1 ;; axil) echo 2 ;; phong) echo 3 ;; esac; }
+top_id_of()  { case "$1" in unit) echo 0 ;; stream) echo 1 ;; axil) echo 2 ;; phong) echo 3 ;;
+                            setup) echo 4 ;; system) echo 5 ;; esac; }
 core_of()    { case "$1" in unit) echo specular_unit ;; stream) echo specular_stream ;; axil) echo specular_axil ;;
-                            phong) echo phong_stream ;; esac; }
+                            phong) echo phong_stream ;; setup) echo specular_setup ;; system) echo specular_system ;; esac; }
 
 # Everything a run's result depends on: sources, ROM files (the defaults in roms/ and any
 # file named by a parameter), parameters, options, this script and the tool versions.
@@ -161,12 +215,22 @@ run_dirs=()
 for top in "${tops[@]}"; do
   top_id=$(top_id_of "$top")
   core=$(core_of "$top")
+  # Hierarchical synthesis (synth_* -noflatten, stat -top): the default for the setup and
+  # the system, whose flat synth_ecp5 did not finish in 40 minutes (rtl/fpga/README.md#ecp5).
+  hier=0
+  case "$flatten" in
+    no)   hier=1 ;;
+    auto) case "$top" in setup|system) hier=1 ;; esac ;;
+  esac
   for dev in "${devices[@]}"; do
-    dir="$out/${top}_${dev}"
+    dir="$out/${top}${phong_cfg:+_$phong_cfg}_${dev}"
     mkdir -p "$dir"
+    noflat=""
+    [ "$hier" = 1 ] && noflat=" -noflatten"
     case "$dev" in
-      hx8k) pnr_dev="--hx8k --package ct256"; freq=$freq_hx8k; dsp="" ;;
-      up5k) pnr_dev="--up5k --package sg48";  freq=$freq_up5k; dsp=" -dsp" ;;
+      hx8k) pnr_dev="--hx8k --package ct256"; freq=$freq_hx8k; synth="synth_ice40$noflat" ;;
+      up5k) pnr_dev="--up5k --package sg48";  freq=$freq_up5k; synth="synth_ice40 -dsp$noflat" ;;
+      ecp5) pnr_dev="";                       freq=0;          synth="synth_ecp5$noflat" ;;
     esac
     {
       echo "read_verilog -sv -defer${incflags} ${sources[*]}"
@@ -178,8 +242,13 @@ for top in "${tops[@]}"; do
         echo "proc"
         echo "check -assert"
       else
-        echo "synth_ice40 -top $harness$dsp -json $dir/$harness.json"
-        echo "tee -q -o $dir/stat.txt stat"
+        echo "$synth -top $harness"
+        # stat -top: the totals of the whole hierarchy (each module times its instances)
+        echo "tee -q -o $dir/stat.txt stat -top $harness"
+        if [ "$dev" != ecp5 ]; then
+          [ "$hier" = 1 ] && echo "flatten"
+          echo "write_json $dir/$harness.json"
+        fi
       fi
     } > "$dir/synth.ys"
 
@@ -194,40 +263,75 @@ for top in "${tops[@]}"; do
       continue
     fi
 
-    key=$(run_key "$top" "$dev" "$freq" "$seed")
+    key=$(run_key "$top" "$dev" "$freq" "$seed" "$synth")
     if [ "$fresh" = 0 ] && [ -f "$dir/result.json" ] && [ "$(cat "$dir/key" 2>/dev/null)" = "$key" ]; then
       echo "$me: $top on $dev unchanged since the last run, result reused ($dir)"
       run_dirs+=("$dir")
       continue
     fi
-    rm -f "$dir/result.json" "$dir/key" "$dir/report.json" "$dir/stat.txt"
+    rm -f "$dir/result.json" "$dir/key" "$dir/report.json" "$dir/stat.txt" "$dir/nofit.txt" "$dir/nextpnr.log"
 
-    echo "$me: $top on $dev: Yosys synth_ice40$dsp ..."
+    echo "$me: $top on $dev: Yosys $synth ..."
     t0=$(date +%s)
     synth_rc=0
-    yosys -q -l "$dir/yosys.log" -s "$dir/synth.ys" > /dev/null 2>&1 || synth_rc=$?
+    timeout "$yosys_timeout" yosys -q -l "$dir/yosys.log" -s "$dir/synth.ys" > /dev/null 2>&1 || synth_rc=$?
+    t_synth=$(date +%s)
     pnr_rc=-1
-    if [ "$synth_rc" = 0 ]; then
-      echo "$me: $top on $dev: nextpnr-ice40 $pnr_dev --freq $freq --seed $seed ..."
-      pnr_rc=0
-      # shellcheck disable=SC2086
-      nextpnr-ice40 $pnr_dev --json "$dir/$harness.json" --freq "$freq" --seed "$seed" \
-        --pcf-allow-unconstrained --timing-allow-fail --report "$dir/report.json" \
-        -l "$dir/nextpnr.log" -q > /dev/null 2>&1 || pnr_rc=$?
-    else
+    if [ "$synth_rc" = 124 ] && [ "$yosys_timeout" != 0 ]; then
+      echo "$me: Yosys did not finish $top on $dev in $yosys_timeout s (--yosys-timeout)" >&2
+    elif [ "$synth_rc" != 0 ]; then
       echo "$me: Yosys failed on $top ($dir/yosys.log):" >&2
       tail -n 15 "$dir/yosys.log" >&2
+    elif [ "$dev" != ecp5 ]; then
+      # Yosys' counts against the part: when they already exceed it, nextpnr is not run.
+      python3 - "$dir/stat.txt" "$dev" > "$dir/nofit.txt" <<'PY2'
+import re, sys
+from collections import Counter
+text = open(sys.argv[1], errors="replace").read()
+if "=== design hierarchy ===" in text:  # stat -top of a hierarchy: the totals follow it
+    text = text.split("=== design hierarchy ===", 1)[1]
+cells = Counter()
+for m in re.finditer(r"^\s+(SB_\w+)\s+(\d+)\s*$", text, re.M):
+    cells[m[1]] += int(m[2])
+lut, ff = cells["SB_LUT4"], sum(v for k, v in cells.items() if k.startswith("SB_DFF"))
+lc_avail, ram_avail, dsp_avail = {"hx8k": (7680, 32, 0), "up5k": (5280, 30, 8)}[sys.argv[2]]
+lc = max(lut, ff)  # a logic cell holds one LUT4 and one flip-flop: at least this many
+why = []
+if lc > lc_avail:
+    why.append(f"{lc} LC needed ({'flip-flops' if ff >= lut else 'SB_LUT4'}; at least), {lc_avail} available")
+if cells["SB_RAM40_4K"] > ram_avail:
+    why.append(f"{cells['SB_RAM40_4K']} SB_RAM40_4K needed, {ram_avail} available")
+if cells["SB_MAC16"] > dsp_avail:
+    why.append(f"{cells['SB_MAC16']} SB_MAC16 needed, {dsp_avail} available")
+if why:
+    print("does not fit: " + "; ".join(why) + " (Yosys counts; nextpnr not run)")
+PY2
+      if [ -s "$dir/nofit.txt" ]; then
+        echo "$me: $top on $dev: $(cat "$dir/nofit.txt")"
+      else
+        echo "$me: $top on $dev: nextpnr-ice40 $pnr_dev --freq $freq --seed $seed ..."
+        pnr_rc=0
+        # shellcheck disable=SC2086
+        nextpnr-ice40 $pnr_dev --json "$dir/$harness.json" --freq "$freq" --seed "$seed" \
+          --pcf-allow-unconstrained --timing-allow-fail --report "$dir/report.json" \
+          -l "$dir/nextpnr.log" -q > /dev/null 2>&1 || pnr_rc=$?
+      fi
     fi
     t1=$(date +%s)
     python3 - "$dir" "$top" "$dev" "$harness" "$core" "$freq" "$seed" "$synth_rc" "$pnr_rc" \
-      "$((t1 - t0))" "${params[@]+"${params[@]}"}" <<'PY'
-import json, os, re, sys
-d, top, dev, harness, core, freq, seed, synth_rc, pnr_rc, secs = sys.argv[1:11]
-params = sys.argv[11:]
+      "$((t1 - t0))" "$((t_synth - t0))" "$synth" "$phong_cfg" "${params[@]+"${params[@]}"}" <<'PY'
+import json, os, re, subprocess, sys
+d, top, dev, harness, core, freq, seed, synth_rc, pnr_rc, secs, synth_secs, synth, phong_cfg = sys.argv[1:14]
+params = sys.argv[14:]
 res = {"top": top, "harness": harness, "core": core, "device": dev,
-       "part": {"hx8k": "iCE40-HX8K ct256", "up5k": "iCE40-UP5K sg48"}[dev],
-       "dsp_mapping": dev == "up5k", "target_mhz": float(freq), "seed": int(seed),
-       "params": params, "seconds": int(secs), "dir": d}
+       "part": {"hx8k": "iCE40-HX8K ct256", "up5k": "iCE40-UP5K sg48", "ecp5": "ECP5 (LFE5U)"}[dev],
+       "synthesis": synth, "hierarchical": "-noflatten" in synth,
+       "dsp_mapping": dev != "hx8k", "target_mhz": float(freq) if dev != "ecp5" else None,
+       "seed": int(seed) if dev != "ecp5" else None, "params": params,
+       "seconds": int(secs), "synthesis_seconds": int(synth_secs), "dir": d,
+       "yosys_version": subprocess.run(["yosys", "-V"], capture_output=True, text=True).stdout.strip()}
+if phong_cfg:
+    res["phong_config"] = phong_cfg
 
 def read(p):
     try:
@@ -235,21 +339,68 @@ def read(p):
     except OSError:
         return ""
 
+stat = read(os.path.join(d, "stat.txt"))
+if "=== design hierarchy ===" in stat:  # stat -top of a hierarchy: the totals follow it
+    stat = stat.split("=== design hierarchy ===", 1)[1]
 cells = {}
-for line in read(os.path.join(d, "stat.txt")).splitlines():
-    m = re.match(r"\s+(SB_\w+|\$\S+)\s+(\d+)\s*$", line)
+for line in stat.splitlines():
+    m = re.match(r"\s+(SB_\w+|[A-Z][A-Z0-9_]+|\$\S+)\s+(\d+)\s*$", line)
     if m:
         cells[m[1]] = cells.get(m[1], 0) + int(m[2])
+log = read(os.path.join(d, "nextpnr.log"))
+nofit = read(os.path.join(d, "nofit.txt")).strip()
+# ECP5 parts (LFE5U, data sheet): LUT4 positions and flip-flops (thousands, as the data
+# sheet gives them), 18x18 multipliers, EBR blocks (DP16KD).
+LFE5U = [("LFE5U-12", 12000, 28, 32), ("LFE5U-25", 24000, 28, 56),
+         ("LFE5U-45", 44000, 72, 108), ("LFE5U-85", 84000, 156, 208)]
+if dev == "ecp5":
+    y = {"lut4": cells.get("LUT4", 0), "ccu2c": cells.get("CCU2C", 0),
+         "ff": cells.get("TRELLIS_FF", 0), "mult18x18d": cells.get("MULT18X18D", 0),
+         "dp16kd": cells.get("DP16KD", 0), "pfumx": cells.get("PFUMX", 0),
+         "l6mux21": cells.get("L6MUX21", 0), "lutram": cells.get("TRELLIS_DPR16X4", 0),
+         "alu54b": cells.get("ALU54B", 0)}
+    # a CCU2C (two bits of carry chain) takes the two LUT4 positions of a slice
+    y["lut4_positions"] = y["lut4"] + 2 * y["ccu2c"]
+    res["yosys"] = y
+    res["fit"] = None
+    if int(synth_rc) == 124:  # timeout(1): --yosys-timeout
+        res["status"] = "synthesis timed out"
+        res["reason"] = f"Yosys did not finish in {synth_secs} s (--yosys-timeout)"
+    elif int(synth_rc) != 0:
+        res["status"] = "synthesis failed"
+        res["reason"] = "Yosys failed, see yosys.log"
+    else:
+        res["status"] = "synthesis only"
+        res["note"] = "synthesis only; no ECP5 place and route here"
+        need = (y["lut4_positions"], y["mult18x18d"], y["dp16kd"], y["ff"])
+        part = next((p for p in LFE5U if need[0] <= p[1] and need[1] <= p[2] and need[2] <= p[3] and need[3] <= p[1]), None)
+        res["smallest_lfe5u"] = part[0] if part else None
+        res["reason"] = (f"synthesis only: the counts fit {part[0]} (not placed)" if part else
+                         f"synthesis only: more than the largest LFE5U-85 (84k LUT4, 156 MULT18X18D, 208 DP16KD)")
+        res["over_lfe5u_45"] = {"lut4_positions": round(need[0] / 44000, 2), "mult18x18d": round(need[1] / 72, 2),
+                                "dp16kd": round(need[2] / 108, 2), "ff": round(need[3] / 44000, 2)}
+    json.dump(res, open(os.path.join(d, "result.json"), "w"), indent=1)
+    sys.exit(0)
 res["yosys"] = {"lut4": cells.get("SB_LUT4", 0),
                 "ff": sum(v for k, v in cells.items() if k.startswith("SB_DFF")),
                 "carry": cells.get("SB_CARRY", 0),
                 "bram": cells.get("SB_RAM40_4K", 0),
                 "dsp": cells.get("SB_MAC16", 0)}
-log = read(os.path.join(d, "nextpnr.log"))
-if int(synth_rc) != 0:
+res["lcs_available"] = {"hx8k": 7680, "up5k": 5280}[dev]
+if int(synth_rc) == 124:  # timeout(1): --yosys-timeout
+    res["status"] = "synthesis timed out"
+    res["fit"] = None
+    res["reason"] = f"Yosys did not finish in {synth_secs} s (--yosys-timeout)"
+elif int(synth_rc) != 0:
     res["status"] = "synthesis failed"
     res["fit"] = None
     res["reason"] = "Yosys failed, see yosys.log"
+elif nofit:
+    res["status"] = "does not fit"
+    res["fit"] = False
+    res["reason"] = re.sub(r"^does not fit: ", "", nofit)
+    res["lcs_needed_at_least"] = max(res["yosys"]["lut4"], res["yosys"]["ff"])
+    res["nextpnr_run"] = False
 else:
     nofit = re.search(r"(Unable to place[^\n]*|[^\n]*no BELs remaining[^\n]*|[^\n]*[Dd]esign (is )?too (large|big)[^\n]*)", log)
     rep = {}
@@ -317,24 +468,59 @@ res["luts"] = (res.get("nextpnr", {}).get("ICESTORM_LC", {}) or {}).get("used") 
 json.dump(res, open(os.path.join(d, "result.json"), "w"), indent=1)
 PY
     st=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["status"])' "$dir/result.json")
-    if [ "$st" = "placed and routed" ] || [ "$st" = "does not fit" ]; then
+    if [ "$st" = "placed and routed" ] || [ "$st" = "does not fit" ] || [ "$st" = "synthesis only" ]; then
       echo "$key" > "$dir/key"
     else
       failed=1
     fi
-    echo "$me: $top on $dev: $st ($((t1 - t0)) s)"
+    echo "$me: $top on $dev: $st ($((t1 - t0)) s; Yosys $((t_synth - t0)) s)"
     run_dirs+=("$dir")
   done
 done
 
 [ "$elab_only" = 1 ] && exit "$failed"
 
+# The commit of the RTL the runs used, for docs/fpga_figures.json ("-modified": rtl/ differs from it).
+rtl_commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
+if [ "$rtl_commit" != unknown ] && [ -n "$(git -C "$root" status --porcelain -- rtl roms 2>/dev/null)" ]; then
+  rtl_commit+="-modified"
+fi
 rc=0
-python3 - "$out" "$strict" "${run_dirs[@]}" <<'PY' || rc=$?
-import json, os, sys
-out, strict, dirs = sys.argv[1], sys.argv[2] == "1", sys.argv[3:]
+python3 - "$out" "$strict" "$rtl_commit" "${run_dirs[@]}" <<'PY' || rc=$?
+import json, os, re, sys
+out, strict, rtl, dirs = sys.argv[1], sys.argv[2] == "1", sys.argv[3], sys.argv[4:]
 runs = [json.load(open(os.path.join(d, "result.json"))) for d in dirs]
 json.dump({"runs": runs}, open(os.path.join(out, "summary.json"), "w"), indent=1)
+# The synthesis-only results (ECP5 counts, and iCE40 runs whose Yosys counts exceed the part)
+# in the shape of docs/fpga_figures.json's "synthesis_runs", to paste there.
+entries = []
+for r in runs:
+    if r["status"] not in ("synthesis only", "does not fit") or (r["device"] != "ecp5" and r.get("nextpnr_run", True)):
+        continue
+    y = r["yosys"]
+    e = {"core": r["core"]}
+    if r.get("phong_config"):
+        e["config"] = r["phong_config"]
+    e["part"] = {"hx8k": "HX8K ct256", "up5k": "UP5K sg48", "ecp5": "ECP5"}[r["device"]]
+    e["rtl"] = rtl
+    e["tools"] = "Yosys " + re.sub(r"^Yosys (\S+).*", r"\1", r.get("yosys_version", "?"))
+    e["synthesis"] = r["synthesis"].replace(" -top", "").strip()
+    e["synthesis_only"] = True
+    if r["device"] == "ecp5":
+        e.update({"lut4": y["lut4"], "ccu2c": y["ccu2c"], "ffs": y["ff"], "mult18x18d": y["mult18x18d"],
+                  "dp16kd": y["dp16kd"], "smallest_lfe5u": r.get("smallest_lfe5u")})
+    else:
+        e.update({"fit": False, "sb_lut4": y["lut4"], "ffs": y["ff"], "brams": y["bram"], "dsps": y["dsp"],
+                  "lcs_needed_at_least": r["lcs_needed_at_least"], "lcs_available": r["lcs_available"]})
+    e["yosys_seconds"] = r["synthesis_seconds"]
+    entries.append(e)
+with open(os.path.join(out, "figures_entries.json"), "w") as f:
+    f.write("[\n" + ",\n".join("  " + json.dumps(e) for e in entries) + "\n]\n")
+ecp5 = [r for r in runs if r["device"] == "ecp5"]
+runs = [r for r in runs if r["device"] != "ecp5"]
+
+def name(r):
+    return r["core"] + (f" {r['phong_config']}" if r.get("phong_config") else "")
 
 def n(v):
     return "-" if v is None else str(v)
@@ -353,12 +539,14 @@ for r in runs:
         bram, dsp = y["bram"], y["dsp"]
     lc = r.get("luts")
     lcs = f"{lc} / {npr['ICESTORM_LC']['available']}" if lc is not None and "ICESTORM_LC" in npr else "-"
+    if r.get("lcs_needed_at_least") is not None:  # Yosys' counts exceed the part: nextpnr not run
+        lcs = f">= {r['lcs_needed_at_least']} / {r['lcs_available']}"
     fmax = r.get("fmax_mhz")
     f = "-" if fmax is None else f"{fmax:.2f}" + ("" if r.get("timing_met") else " (missed)")
     pps = "-" if fmax is None else f"{fmax * 1e6:.3g}"
-    rows.append(f"| {r['core']} | {r['part']} | {fit} | {lcs} | {y['lut4']} | {y['ff']} | {bram} | {dsp} | {f} | {r['target_mhz']:g} | {pps} |")
+    rows.append(f"| {name(r)} | {r['part']} | {fit} | {lcs} | {y['lut4']} | {y['ff']} | {bram} | {dsp} | {f} | {r['target_mhz']:g} | {pps} |")
     if r["fit"] is not True:
-        notes.append(f"- {r['core']} on {r['part']}: {r['status']}: {r.get('reason', '')}")
+        notes.append(f"- {name(r)} on {r['part']}: {r['status']}: {r.get('reason', '')}")
     cp = r.get("critical_path")
     if cp:
         notes.append(f"- {r['core']} on {r['part']}: critical path {cp['total_ns']} ns ({cp['logic_levels']} logic cells, "
@@ -370,10 +558,25 @@ md = ["# Out-of-context place and route (scripts/fpga.sh)", "",
       "seed and frequency target shown; LCs are logic cells used after packing (a LUT4 and/or a flip-flop each); "
       "SB_LUT4 and FFs are Yosys' cell counts (harness included); pixels per second = Fmax at one pixel per clock.",
       "", "Parameter overrides: " + (", ".join(f"`{p}`" for p in params) if params else "none (the core's defaults)"), ""]
-md += rows + [""] + notes
+if not runs:
+    rows, notes = [], []
+erows = []
+if ecp5:
+    erows = ["", "ECP5: Yosys `synth_ecp5`, synthesis only; no ECP5 place and route here (LUT4 positions = LUT4 + 2 CCU2C; "
+             "the smallest LFE5U part whose LUT4 positions, MULT18X18D, DP16KD and flip-flops hold the counts):", "",
+             "| core | synthesis | LUT4 | CCU2C | LUT4 positions | TRELLIS_FF | MULT18X18D | DP16KD | smallest LFE5U | Yosys (s) |",
+             "|---|---|---|---|---|---|---|---|---|---|"]
+    for r in ecp5:
+        y = r["yosys"]
+        if r["status"] != "synthesis only":
+            erows.append(f"| {name(r)} | `{r['synthesis']}` | {r['status']} | | | | | | | {r['synthesis_seconds']} |")
+            continue
+        erows.append(f"| {name(r)} | `{r['synthesis']}` | {y['lut4']} | {y['ccu2c']} | {y['lut4_positions']} | {y['ff']} | "
+                     f"{y['mult18x18d']} | {y['dp16kd']} | {r['smallest_lfe5u'] or 'none (over LFE5U-85)'} | {r['synthesis_seconds']} |")
+md += rows + [""] + notes + erows
 open(os.path.join(out, "summary.md"), "w").write("\n".join(md) + "\n")
-print("\n".join(rows + [""] + notes))
-print(f"\nwrote {os.path.join(out, 'summary.json')} and summary.md")
+print("\n".join(rows + [""] + notes + erows))
+print(f"\nwrote {os.path.join(out, 'summary.json')}, summary.md and figures_entries.json")
 bad = [r for r in runs if r["fit"] is None]
 if strict:
     bad += [r for r in runs if r["fit"] is False or (r["fit"] and not r.get("timing_met"))]

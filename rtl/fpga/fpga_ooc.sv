@@ -4,7 +4,8 @@
 // fpga_ooc: the out-of-context place-and-route harness (registered IO, five pins: clk_i,
 // rst_ni, sdi_i, load_i, xor_o) around one top level of the core, chosen by Top (0 unit,
 // 1 stream, 2 axil; 3 phong: phong_stream, the per-pixel Blinn-Phong competitor of
-// docs/phong_hw.md). See
+// docs/phong_hw.md; 4 setup: specular_setup, the scanline setup in hardware, and 5 system:
+// specular_system, setup then stream, docs/setup_hw.md). See
 // fpga_ooc_io.sv for the pins and rtl/fpga/README.md for the flow (scripts/fpga.sh). Not
 // part of the device.
 //
@@ -19,12 +20,18 @@
 //           arvalid, araddr[AddrWidth], arprot[3], rready, m_axis_px_tready
 //   phong   geo_valid, n1, n2, h1, he [3*VecBits each], n[NBits], len[LenBits],
 //           scale[CBits], tag[TagBits], px_ready
+//   setup   geo_valid, n1, n2, h1, he [3*VecBits each], n[NBits], len[LenBits],
+//           scale[CBits], tag[TagBits], span_ready
+//   system  as phong (the last bit px_ready)
 // Output parity, over:
 //   unit    intensity_o, valid_o, busy_o
 //   stream  span_ready_o, px_valid_o, px_intensity_o, px_last_o, px_tag_o
 //   axil    awready, wready, bresp, bvalid, arready, rdata, rresp, rvalid,
 //           m_axis_px_tdata, m_axis_px_tvalid, m_axis_px_tlast, m_axis_px_tuser, irq_o
 //   phong   geo_ready_o, px_valid_o, px_intensity_o, px_last_o, px_tag_o
+//   setup   geo_ready_o, span_valid_o, span_c_o, span_psi0_o, span_dpsi_o, span_n_o,
+//           span_len_o, span_tag_o, span_status_o
+//   system  as phong
 //
 // Parameters: the interface widths are passed through to the core (TagBits to the stream
 // and the AXI4-Lite core, AddrWidth to the latter only; specular_axil's registers are 32
@@ -37,7 +44,7 @@
 
 module fpga_ooc #(
   parameter int Top       = 1,   // the core: 0 specular_unit, 1 specular_stream, 2 specular_axil,
-                                 // 3 phong_stream
+                                 // 3 phong_stream, 4 specular_setup, 5 specular_system
   parameter int CBits     = 16,
   parameter int AngleBits = 32,
   parameter int NBits     = 10,
@@ -57,14 +64,19 @@ module fpga_ooc #(
   localparam int TopStream = 1;
   localparam int TopAxil   = 2;
   localparam int TopPhong  = 3;
+  localparam int TopSetup  = 4;
+  localparam int TopSystem = 5;
 
   localparam int PxBits  = ((CBits + 7) / 8) * 8;   // AXI4-Stream TDATA: whole bytes
   localparam int InBits  = (Top == TopUnit)   ? 5 + CBits + 2 * AngleBits + NBits + LenBits + 1
                          : (Top == TopStream) ? 2 + CBits + 2 * AngleBits + NBits + LenBits + TagBits
-                         : (Top == TopPhong)  ? 2 + 12 * VecBits + NBits + LenBits + CBits + TagBits
+                         : (Top == TopPhong || Top == TopSetup || Top == TopSystem)
+                                              ? 2 + 12 * VecBits + NBits + LenBits + CBits + TagBits
                          :                     2 * AddrWidth + 48;
   localparam int OutBits = (Top == TopUnit)   ? CBits + 2
-                         : (Top == TopStream || Top == TopPhong) ? 3 + CBits + TagBits
+                         : (Top == TopStream || Top == TopPhong || Top == TopSystem)
+                                              ? 3 + CBits + TagBits
+                         : (Top == TopSetup)  ? 2 + CBits + 2 * AngleBits + NBits + LenBits + TagBits + 3
                          :                     41 + PxBits + 3 + TagBits;
 
   logic               core_rst_n;
@@ -242,8 +254,87 @@ module fpga_ooc #(
       .px_last_o      (px_last),
       .px_tag_o       (px_tag)
     );
+  end else if (Top == TopSetup) begin : gen_setup
+    logic                 geo_valid, geo_ready, span_valid, span_ready;
+    logic [3*VecBits-1:0] n1, n2, h1, he;
+    logic [NBits-1:0]     n, span_n;
+    logic [LenBits-1:0]   len, span_len;
+    logic [CBits-1:0]     scale, span_c;
+    logic [AngleBits-1:0] span_psi0, span_dpsi;
+    logic [TagBits-1:0]   tag, span_tag;
+    logic [2:0]           span_status;
+
+    assign {geo_valid, n1, n2, h1, he, n, len, scale, tag, span_ready} = core_in;
+    assign core_out = {geo_ready, span_valid, span_c, span_psi0, span_dpsi, span_n, span_len,
+                       span_tag, span_status};
+
+    // specular_setup's register widths are fixed (C 16, angles 32, n 10, l 11): with other
+    // CBits, AngleBits, NBits or LenBits the port widths differ and elaboration says so.
+    specular_setup #(
+      .VecBits (VecBits),
+      .TagBits (TagBits)
+    ) u_core (
+      .clk_i         (clk_i),
+      .rst_ni        (core_rst_n),
+      .geo_valid_i   (geo_valid),
+      .geo_ready_o   (geo_ready),
+      .geo_n1_i      (n1),
+      .geo_n2_i      (n2),
+      .geo_h1_i      (h1),
+      .geo_he_i      (he),
+      .geo_n_i       (n),
+      .geo_len_i     (len),
+      .geo_scale_i   (scale),
+      .geo_tag_i     (tag),
+      .span_valid_o  (span_valid),
+      .span_ready_i  (span_ready),
+      .span_c_o      (span_c),
+      .span_psi0_o   (span_psi0),
+      .span_dpsi_o   (span_dpsi),
+      .span_n_o      (span_n),
+      .span_len_o    (span_len),
+      .span_tag_o    (span_tag),
+      .span_status_o (span_status)
+    );
+  end else if (Top == TopSystem) begin : gen_system
+    logic                 geo_valid, geo_ready, px_valid, px_ready, px_last;
+    logic [3*VecBits-1:0] n1, n2, h1, he;
+    logic [NBits-1:0]     n;
+    logic [LenBits-1:0]   len;
+    logic [CBits-1:0]     scale, px_intensity;
+    logic [TagBits-1:0]   tag, px_tag;
+
+    assign {geo_valid, n1, n2, h1, he, n, len, scale, tag, px_ready} = core_in;
+    assign core_out = {geo_ready, px_valid, px_intensity, px_last, px_tag};
+
+    specular_system #(
+      .CBits     (CBits),
+      .AngleBits (AngleBits),
+      .NBits     (NBits),
+      .LenBits   (LenBits),
+      .TagBits   (TagBits),
+      .VecBits   (VecBits)
+    ) u_core (
+      .clk_i          (clk_i),
+      .rst_ni         (core_rst_n),
+      .geo_valid_i    (geo_valid),
+      .geo_ready_o    (geo_ready),
+      .geo_n1_i       (n1),
+      .geo_n2_i       (n2),
+      .geo_h1_i       (h1),
+      .geo_he_i       (he),
+      .geo_n_i        (n),
+      .geo_len_i      (len),
+      .geo_scale_i    (scale),
+      .geo_tag_i      (tag),
+      .px_valid_o     (px_valid),
+      .px_ready_i     (px_ready),
+      .px_intensity_o (px_intensity),
+      .px_last_o      (px_last),
+      .px_tag_o       (px_tag)
+    );
   end else begin : gen_top_check
-    `SPEC_PARAM_ERROR("fpga_ooc: Top must be 0 (unit), 1 (stream), 2 (axil) or 3 (phong)")
+    `SPEC_PARAM_ERROR("fpga_ooc: Top must be 0 (unit), 1 (stream), 2 (axil), 3 (phong), 4 (setup) or 5 (system)")
   end
 
 endmodule

@@ -283,6 +283,51 @@ FPGA_TABLES = [
     for cores in (("specular_unit", "specular_stream"), ("specular_axil",))
 ]
 
+def synth_key(e):
+    """A synthesis-only entry's table key: its core (with the Phong configuration) and part."""
+    return (e["core"] + (f" {e['config']}" if e.get("config") else ""), e["part"])
+
+
+def synth_entry(d, k):
+    for e in d.fpga.get("synthesis_runs", []):
+        if synth_key(e) == k:
+            return e
+    raise KeyError(f"{k[0]} {k[1]} not in docs/fpga_figures.json's synthesis_runs")
+
+
+# rtl/fpga/README.md's synthesis-only tables (docs/fpga_figures.json "synthesis_runs"): ECP5
+# counts (LFE5U-45: 44k LUT4 positions, 72 MULT18X18D; a CCU2C takes two LUT4 positions) and
+# the iCE40 runs that Yosys' counts already rule out.
+SYNTH_ECP5_COLUMNS = {
+    "synthesis": lambda d, k: f"`{synth_entry(d, k)['synthesis']}`",
+    "LUT4": lambda d, k: synth_entry(d, k)["lut4"],
+    "CCU2C": lambda d, k: synth_entry(d, k)["ccu2c"],
+    "TRELLIS_FF": lambda d, k: synth_entry(d, k)["ffs"],
+    "MULT18X18D": lambda d, k: synth_entry(d, k)["mult18x18d"],
+    "DP16KD": lambda d, k: synth_entry(d, k)["dp16kd"],
+    "x LFE5U-45 LUT4": lambda d, k: (synth_entry(d, k)["lut4"] + 2 * synth_entry(d, k)["ccu2c"]) / 44000,
+    "x LFE5U-45 MULT18X18D": lambda d, k: synth_entry(d, k)["mult18x18d"] / 72,
+    "smallest LFE5U": lambda d, k: synth_entry(d, k)["smallest_lfe5u"] or "none",
+    "Yosys (s)": lambda d, k: synth_entry(d, k)["yosys_seconds"],
+    "RTL": lambda d, k: f"`{synth_entry(d, k)['rtl']}`",
+}
+SYNTH_ICE40_COLUMNS = {
+    "synthesis": lambda d, k: f"`{synth_entry(d, k)['synthesis']}`",
+    "fit": lambda d, k: {False: "no", True: "yes"}[synth_entry(d, k)["fit"]],
+    "SB_LUT4": lambda d, k: synth_entry(d, k)["sb_lut4"],
+    "FFs": lambda d, k: synth_entry(d, k)["ffs"],
+    "BRAMs": lambda d, k: synth_entry(d, k)["brams"],
+    "DSPs": lambda d, k: synth_entry(d, k)["dsps"],
+    "LCs needed (at least)": lambda d, k: f"{synth_entry(d, k)['lcs_needed_at_least']} / {synth_entry(d, k)['lcs_available']}",
+    "x the part": lambda d, k: synth_entry(d, k)["lcs_needed_at_least"] / synth_entry(d, k)["lcs_available"],
+    "Yosys (s)": lambda d, k: synth_entry(d, k)["yosys_seconds"],
+    "RTL": lambda d, k: f"`{synth_entry(d, k)['rtl']}`",
+}
+SYNTH_TABLES = [
+    (F, "| core | part | synthesis | LUT4 |", SYNTH_ECP5_COLUMNS, lambda e: e["part"] == "ECP5"),
+    (F, "| core | part | synthesis | fit |", SYNTH_ICE40_COLUMNS, lambda e: e["part"] != "ECP5"),
+]
+
 # Where every number must be a figure above or a constant below: (document, start, end) regular
 # expressions; the region runs from the start match to the end match.
 FIGURE_REGIONS = [
@@ -292,6 +337,7 @@ FIGURE_REGIONS = [
     (R, r"Measured figures and known limits:", r"## Timing diagrams"),
     (R, r"## System speed", r"## Where the measured figures live"),
     (F, r"## Measured", r"On the HX8K the AXI4-Lite core meets"),
+    (F, r"<!-- synthesis-only figures -->", r"<!-- end of the synthesis-only figures -->"),
 ]
 # Numbers in those regions that are not measurements: definitions, goals, budgets, settings.
 NOT_MEASURED = [
@@ -404,6 +450,13 @@ def check(root, specular=None, listing=False):
         keys = [(r["core"], r["part"]) for r in d.fpga["runs"] if r["core"] in cores]
         check_table(doc, texts[doc], header, "docs/fpga_figures.json runs of " + "/".join(cores), keys,
                     fpga_table(), 2, compare, covered, errors, row_filter=lambda cells: cells[0] in cores)
+
+    for doc, header, columns, which in SYNTH_TABLES:
+        keys = [synth_key(e) for e in d.fpga.get("synthesis_runs", []) if which(e)]
+        if not keys and header not in texts[doc]:
+            continue  # no such runs yet, and no table
+        check_table(doc, texts[doc], header, "docs/fpga_figures.json synthesis_runs", keys, columns, 2,
+                    compare, covered, errors)
 
     # Coverage: every number in a measured region is a figure or a stated constant.
     for doc, start, end in FIGURE_REGIONS:
@@ -524,6 +577,13 @@ def self_test(root, specular):
         # The scene timing case: replace bunny's device ns/px with a different value.
         bunny = d.best(d.scene("bunny"), "device")
         cases[3] = ("a scene timing tampered", R, f"| {bunny:.2f} |", f"| {bunny + 1:.2f} |", "device of bunny")
+        # A synthesis-only count tampered in the JSON: the table's cell no longer agrees.
+        ecp5 = [e for e in d.fpga.get("synthesis_runs", []) if e["part"] == "ECP5"]
+        if ecp5:
+            e = ecp5[0]
+            cases.append(("a synthesis-only count tampered", "docs/fpga_figures.json",
+                          f'"mult18x18d": {e["mult18x18d"]}', f'"mult18x18d": {e["mult18x18d"] + 1}',
+                          f"MULT18X18D of {synth_key(e)}"))
         if specular:
             cases.append(("the float-model figure tampered", R, "measured 1.09%", "measured 1.01%",
                           "patent float model at n = 3"))

@@ -16,13 +16,17 @@ expect() {  # expect REGEX ARGS...: exit 2 and stderr matching REGEX
     echo "ok: fpga.sh $* -> exit 2: $(head -n 1 <<< "$err")"
   fi
 }
-expect "--device must be one of hx8k, up5k, all \(got 'virtex7'\)" --device virtex7
-expect "--top must be one of unit, stream, axil, phong, all \(got 'core'\)" --top core
+expect "--device must be one of hx8k, up5k, ecp5, all, or a comma-separated list of them \(got 'virtex7'\)" --device virtex7
+expect "--top must be one of unit, stream, axil, phong, setup, system, all \(got 'core'\)" --top core
+expect "--device must be one of hx8k, up5k, ecp5, all, or a comma-separated list of them \(got 'hx8k,ecp6'\)" --top setup --device hx8k,ecp6
+expect "--phong-config must be one of n1000,n128,.* \(got 'n7'\)" --top phong --phong-config n7
+expect "--phong-config needs --top phong \(got --top setup\)" --top setup --phong-config n64
 expect "--param must be NAME=VALUE" --param CosAddrBits
 expect "--param name must be a Verilog identifier" --param 9x=1
 expect "string value must not contain quotes" --param 'CosRomFile=a"b'
 expect "--seed must be a non-negative integer" --seed abc
+expect "--yosys-timeout must be a whole number of seconds, 0 for no limit \(got '1h'\)" --top setup --yosys-timeout 1h
 expect "must be a positive number of MHz" --freq-hx8k 0
 expect "--out needs a value" --out
-expect "unknown argument '--bogus'" --bogus
+expect "unknown argument '--bogus' \(allowed: .*--flatten, --no-flatten" --bogus
 exit $fail
