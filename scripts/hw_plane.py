@@ -183,6 +183,49 @@ def fmt(v):
     return "n/a" if v is None else f"{v:.3g}"
 
 
+def ecp5_runs(path=os.path.join(ROOT, "docs", "fpga_figures.json")):
+    """The ECP5 synthesis entries of docs/fpga_figures.json (scripts/fpga.sh --device ecp5, the same
+    harness and hierarchical flow for every core): name -> entry, for specular_system and each
+    phong_stream configuration."""
+    try:
+        with open(path) as f:
+            runs = json.load(f).get("synthesis_runs", [])
+    except (OSError, ValueError):
+        return {}
+    out = {}
+    for e in runs:
+        if e.get("part") == "ECP5" and e.get("core") in ("specular_system", "phong_stream"):
+            out[e["core"] if e["core"] == "specular_system" else f"phong {e.get('config')}"] = e
+    return out
+
+
+def write_system_cost(w, runs):
+    """The device with its setup in hardware against the Phong cores, ECP5 synthesis counts."""
+    sysc = runs.get("specular_system")
+    phong = sorted((k, v) for k, v in runs.items() if k.startswith("phong "))
+    if not sysc or not phong:
+        w("The device with its setup in hardware (`specular_system`): no ECP5 counts in docs/fpga_figures.json.\n")
+        return
+    w("The device with its setup in hardware (`specular_system`, `SetupII` = 1: one span per clock, so one pixel per "
+      "clock on spans of every length) against the Phong cores, Yosys `synth_ecp5` in the same harness and flow "
+      "(`scripts/fpga.sh --device ecp5`; synthesis only, no ECP5 place and route here; from docs/fpga_figures.json, "
+      "not measured in this run):\n")
+    w("| core | RTL | LUT4 | CCU2C | MULT18X18D | DP16KD | FF | LUT4 / Phong's |")
+    w("|---|---|---|---|---|---|---|---|")
+    w(f"| specular_system | {sysc['rtl']} | {sysc['lut4']} | {sysc['ccu2c']} | {sysc['mult18x18d']} | "
+      f"{sysc['dp16kd']} | {sysc['ffs']} | - |")
+    for k, v in phong:
+        w(f"| {k} | {v['rtl']} | {v['lut4']} | {v['ccu2c']} | {v['mult18x18d']} | {v['dp16kd']} | {v['ffs']} | "
+          f"system {sysc['lut4'] / v['lut4']:.1f} x |")
+    w("")
+    worst = min(sysc["lut4"] / v["lut4"] for _, v in phong)
+    w(f"With the setup in hardware at one span per clock, the device system takes at least **{worst:.1f} x** the "
+      f"LUT4 of every Phong configuration and {sysc['mult18x18d']} MULT18X18D against "
+      f"{max(v['mult18x18d'] for _, v in phong)}: per-pixel Phong costs less per pixel for every n and every span "
+      "length. The device wins only where its setup stays on the host (the ratios above), or where a setup shared "
+      "over several clocks (`SetupII` > 1, not built) meets spans long enough to hide it.\n")
+
+
 def plot(rows, path, plt):
     pts = [r for r in rows if r["cost"] is not None]
     if not pts:
@@ -271,6 +314,7 @@ def write(w, rows, phong, sim, n_step, synth_ran):
             w(f"- n <= {rng}: {c['device']} against {c['phong']}: the Phong core takes "
               f"**{c['lut4_ratio']:.1f} x** the device's LUT4 and {c['cost_ratio']:.1f} x its LUT4 + FF.")
     w("")
+    write_system_cost(w, ecp5_runs())
     # Clocks per pixel per scene.
     ph, ds, sy = (sim or {}).get("phong", {}), (sim or {}).get("scenes_stream", {}), (sim or {}).get("system")
     if ph or ds:
