@@ -517,7 +517,7 @@ class Report:
     # ---------------------------------------------------------------- text
     # The configurations of the per-scene comparison: (key, label, ratio of phong_sleef's time to the device's).
     SYSTEM_CONFIGS = (
-        ("default", "as scene_bench defines it (setup_batch's automatic path, AVX-512 here; AVX2 shading)",
+        ("default", "as scene_bench defines it (setup_batch's automatic path: the widest instruction set of the machine; AVX2 shading)",
          lambda x: x["speedup_vs_phong_sleef"]["device"]),
         ("avx2", "AVX2 throughout", lambda x: x.get("isa_matched", {}).get("avx2", {}).get("speedup")),
         ("avx512", "AVX-512 throughout (Phong with SLEEF powf16)",
