@@ -3,7 +3,8 @@
 //
 // specular_setup: the scanline setup in hardware (docs/setup_hw.md). Geometry spans in
 // (docs/interfaces.md#geometry-span-interface), specular_stream's span descriptors out
-// (C, psi0, dpsi, n, l, tag) and the setup's status, one span per clock. Bit-exact golden
+// (C, psi0, dpsi, n, l, tag) and the setup's status, one span per clock (SetupII = 1) or
+// at most one every SetupII clocks (docs/setup_hw.md#sharing-over-setupii-clocks). Bit-exact golden
 // model: host::fixed::setup_fixed (model/host/setup_fixed.hpp), whose steps and widths are
 // those below.
 //
@@ -23,7 +24,8 @@
 // geo_ready_o is a register (the buffer's room): high when the pipeline advances at the next
 // edge; every stage is enabled by it, so a stall freezes the whole pipeline. With
 // span_ready_i high, one span per clock is accepted and emitted (SetupII = 1), Latency
-// clocks after its acceptance.
+// clocks after its acceptance. With SetupII > 1, geo_ready_o is also low at the advancing
+// clocks whose count modulo SetupII is not 0 (a function of registers still).
 //
 // Pipeline (tau: registers after the input register; the golden model's steps):
 //   0        the input register; decode: invalid_input, undefined_halfway, opposite normals
@@ -48,6 +50,9 @@ module specular_setup #(
   // 1: the end halfway vector equals the first (a directional light and a viewer at
   // infinity): geo_he_i is ignored and its normalizer is not built.
   parameter bit HeEqH1        = 1'b0,
+  // Initiation interval: at most one span every SetupII clocks (1, 2 or 4), the hardware
+  // shared over those clocks (docs/setup_hw.md#sharing-over-setupii-clocks).
+  parameter int SetupII       = 1,
   parameter     RsqrtSeedFile = "roms/setup/rsqrt_seed.hex",
   parameter     LogRecipFile  = "roms/setup/log_recip.hex",
   parameter     LogValueFile  = "roms/setup/log_value.hex",
@@ -123,6 +128,9 @@ module specular_setup #(
   if (VecBits < 2 || VecBits > 24 || TagBits < 1) begin : gen_param_check
     `SPEC_PARAM_ERROR("specular_setup: VecBits must be in 2..24 and TagBits >= 1")
   end
+  if (SetupII != 1 && SetupII != 2 && SetupII != 4) begin : gen_ii_check
+    `SPEC_PARAM_ERROR("specular_setup: SetupII must be 1, 2 or 4")
+  end
 
   typedef logic signed [VecW-1:0] comp_t;
   typedef struct packed {
@@ -132,7 +140,28 @@ module specular_setup #(
   } vec_t;
 
   logic adv;
-  assign geo_ready_o = adv;
+  logic geo_take;  // the input register takes geo_valid_i (at an advancing clock)
+  // Spacing (docs/setup_hw.md#sharing-over-setupii-clocks): with SetupII > 1 a span is
+  // accepted only when the count of advancing clocks modulo SetupII (phase_q) is 0, so every
+  // span in flight sits at a position congruent to every other's modulo SetupII, and after
+  // an accept geo_ready_o is low for the next SetupII - 1 advancing clocks. A stall freezes
+  // the count; reset clears it. geo_ready_o stays a function of registers.
+  if (SetupII == 1) begin : gen_ii1
+    assign geo_ready_o = adv;
+    assign geo_take    = geo_valid_i;
+  end else begin : gen_ii
+    localparam int PhaseBits = $clog2(SetupII);
+    logic [PhaseBits-1:0] phase_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        phase_q <= '0;
+      end else if (adv) begin
+        phase_q <= phase_q + PhaseBits'(1);  // SetupII is a power of two: wraps at SetupII
+      end
+    end
+    assign geo_ready_o = adv && phase_q == '0;
+    assign geo_take    = geo_valid_i && phase_q == '0;
+  end
 
   // ---- tau 0: the input register ----
   logic                 in_valid_q;
@@ -145,7 +174,7 @@ module specular_setup #(
     if (!rst_ni) begin
       in_valid_q <= 1'b0;
     end else if (adv) begin
-      in_valid_q <= geo_valid_i;
+      in_valid_q <= geo_take;
     end
   end
   always_ff @(posedge clk_i) begin
@@ -253,6 +282,10 @@ module specular_setup #(
   vec_t n1_19, n1_20, n1_21, n1_22, h1_19, h1_20, h1_21, h1_22;
   logic signed [63:0] s1_19, s2_21, cos_t1_23, x_23;
   logic flat_23, opp_h_23;
+  vec_t wv_23;
+  logic signed [63:0] ws_23;
+  assign wv_23 = opp_h_23 ? n1_23 : h2_23;
+  assign ws_23 = opp_h_23 ? cos_t1_23 : x_23;
   always_ff @(posedge clk_i) begin
     if (adv) begin
       // tau 19
@@ -284,7 +317,10 @@ module specular_setup #(
       h1_23 <= h1_22;
       n1_23 <= n1_22;
       // tau 24
-      w_q <= opp_h_23 ? {sub_scaled(n1_23.z, cos_t1_23, h1_23.z, UnitFrac), sub_scaled(n1_23.y, cos_t1_23, h1_23.y, UnitFrac), sub_scaled(n1_23.x, cos_t1_23, h1_23.x, UnitFrac)} : {sub_scaled(h2_23.z, x_23, h1_23.z, UnitFrac), sub_scaled(h2_23.y, x_23, h1_23.y, UnitFrac), sub_scaled(h2_23.x, x_23, h1_23.x, UnitFrac)};
+      // W = H2 - x H1, or N1 - cos t1 H1 for opposite halfway vectors: the operands are
+      // selected first, one scaled subtraction (the same H1 and shift in both arms).
+      w_q <= {sub_scaled(wv_23.z, ws_23, h1_23.z, UnitFrac), sub_scaled(wv_23.y, ws_23, h1_23.y, UnitFrac),
+              sub_scaled(wv_23.x, ws_23, h1_23.x, UnitFrac)};
     end
   end
 
