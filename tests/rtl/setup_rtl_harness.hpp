@@ -75,8 +75,11 @@ struct Stats {
 // Offers `spans` in order (each held until accepted), with the given probabilities per
 // cycle of offering, of span_ready_i and of an asynchronous reset; spans in flight at a reset
 // are dropped, the one offered is offered again. Ends with span_ready_i high until empty.
+// he_eq_h1: for a model with HeEqH1 = 1, geo_he_i carries garbage and the golden model gets
+// He = H1.
 template <class M>
-Stats run(M& m, const std::vector<device::GeoSpan>& spans, double p_valid, double p_ready, double p_reset, uint64_t seed) {
+Stats run(M& m, const std::vector<device::GeoSpan>& spans, double p_valid, double p_ready, double p_reset, uint64_t seed,
+          bool he_eq_h1 = false) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   Stats st;
@@ -89,7 +92,11 @@ Stats run(M& m, const std::vector<device::GeoSpan>& spans, double p_valid, doubl
   while (next < spans.size() || !expected.empty()) {
     if (!offering && next < spans.size() && u01(rng) < p_valid) offering = true;
     m.geo_valid_i = offering;
-    if (offering) drive(m, spans[next]);
+    if (offering) {
+      device::GeoSpan g = spans[next];
+      if (he_eq_h1) g.he = {static_cast<int32_t>(next % 977) - 400, 7, -static_cast<int32_t>(next % 131)};
+      drive(m, g);
+    }
     const bool draining = next >= spans.size();
     m.span_ready_i = draining || u01(rng) < p_ready;
     m.eval();
@@ -111,7 +118,9 @@ Stats run(M& m, const std::vector<device::GeoSpan>& spans, double p_valid, doubl
     const bool accept = offering && m.geo_ready_o;
     tick(m);
     if (accept) {
-      expected.push_back(golden(spans[next]));
+      device::GeoSpan g = spans[next];
+      if (he_eq_h1) g.he = g.h1;
+      expected.push_back(golden(g));
       ++st.accepted, ++next, offering = false;
     }
     if (p_reset > 0.0 && u01(rng) < p_reset) {

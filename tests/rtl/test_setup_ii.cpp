@@ -4,10 +4,12 @@
 // host::fixed::setup_fixed, bit for bit, with the checks of tests/rtl/test_setup.cpp (the
 // hard cases; random spans under random gaps, backpressure and resets) and the rate: spans
 // offered back to back with span_ready_i high are accepted exactly one every SetupII clocks.
-// Built only with -DSPECULAR_SETUP_VARIANTS=ON (two Verilator models of their own);
+// And SetupII = 4 with HeEqH1 = 1 (three code normalizer sites). Built only with
+// -DSPECULAR_SETUP_VARIANTS=ON (three Verilator models of their own);
 // SPECULAR_SETUP_RTL_SPANS=N runs N random spans instead of 20,000.
 #include "Vsetup_ii2.h"
 #include "Vsetup_ii4.h"
+#include "Vsetup_ii4_he1.h"
 #include "setup_rtl_harness.hpp"
 
 #include <catch2/catch.hpp>
@@ -108,4 +110,17 @@ TEMPLATE_TEST_CASE("setup RTL, SetupII > 1: one span every SetupII clocks with s
                                  << " clocks");
   CHECK(bad_accept == 0);
   CHECK(bad_out == 0);
+}
+
+TEST_CASE("setup RTL, SetupII 4 with HeEqH1: geo_he_i ignored, He = H1, bit-exact", "[setup_rtl_ii]") {
+  Vsetup_ii4_he1 m;
+  std::vector<device::GeoSpan> spans = geo_cases::random_geo_spans(5000, 31337);
+  const std::vector<device::GeoSpan> hard = hard_spans();
+  spans.insert(spans.end(), hard.begin(), hard.end());
+  const Stats st = run(m, spans, 0.8, 0.7, 0.0, 7, true);
+  INFO(st.first_mismatch);
+  CHECK(st.accepted == spans.size());
+  CHECK(st.checked == spans.size());
+  CHECK(st.mismatches == 0);
+  CHECK(st.hold_violations == 0);
 }
