@@ -441,10 +441,6 @@ module specular_setup #(
     assign r_y  = reflect(he_19, s1_19, m_19);
     assign r_h2 = reflect(y_21, s2_21, n1_21);
   end
-  vec_t wv_23;
-  logic signed [63:0] ws_23;
-  assign wv_23 = opp_h_23 ? n1_23 : h2_23;
-  assign ws_23 = opp_h_23 ? cos_t1_23 : x_23;
   always_ff @(posedge clk_i) begin
     if (adv) begin
       // tau 19
@@ -475,10 +471,14 @@ module specular_setup #(
       h1_23 <= h1_22;
       n1_23 <= n1_22;
       // tau 24
-      // W = H2 - x H1, or N1 - cos t1 H1 for opposite halfway vectors: the operands are
-      // selected first, one scaled subtraction (the same H1 and shift in both arms).
-      w_q <= {sub_scaled(wv_23.z, ws_23, h1_23.z, UnitFrac), sub_scaled(wv_23.y, ws_23, h1_23.y, UnitFrac),
-              sub_scaled(wv_23.x, ws_23, h1_23.x, UnitFrac)};
+      // W = H2 - x H1, or N1 - cos t1 H1 for opposite halfway vectors. Both arms are
+      // written out: Yosys' share pass merges their products into one (the same H1), and
+      // selecting the operands first instead cost 9 more MULT18X18D on the ECP5
+      // (docs/setup_hw.md#sharing-over-setupii-clocks).
+      w_q <= opp_h_23 ? {sub_scaled(n1_23.z, cos_t1_23, h1_23.z, UnitFrac), sub_scaled(n1_23.y, cos_t1_23, h1_23.y, UnitFrac),
+                         sub_scaled(n1_23.x, cos_t1_23, h1_23.x, UnitFrac)}
+                      : {sub_scaled(h2_23.z, x_23, h1_23.z, UnitFrac), sub_scaled(h2_23.y, x_23, h1_23.y, UnitFrac),
+                         sub_scaled(h2_23.x, x_23, h1_23.x, UnitFrac)};
     end
   end
 
