@@ -3,7 +3,8 @@
 //
 // specular_setup: the scanline setup in hardware (docs/setup_hw.md). Geometry spans in
 // (docs/interfaces.md#geometry-span-interface), specular_stream's span descriptors out
-// (C, psi0, dpsi, n, l, tag) and the setup's status, one span per clock. Bit-exact golden
+// (C, psi0, dpsi, n, l, tag) and the setup's status, one span per clock (SetupII = 1) or
+// at most one every SetupII clocks (docs/setup_hw.md#sharing-over-setupii-clocks). Bit-exact golden
 // model: host::fixed::setup_fixed (model/host/setup_fixed.hpp), whose steps and widths are
 // those below.
 //
@@ -23,7 +24,8 @@
 // geo_ready_o is a register (the buffer's room): high when the pipeline advances at the next
 // edge; every stage is enabled by it, so a stall freezes the whole pipeline. With
 // span_ready_i high, one span per clock is accepted and emitted (SetupII = 1), Latency
-// clocks after its acceptance.
+// clocks after its acceptance. With SetupII > 1, geo_ready_o is also low at the advancing
+// clocks whose count modulo SetupII is not 0 (a function of registers still).
 //
 // Pipeline (tau: registers after the input register; the golden model's steps):
 //   0        the input register; decode: invalid_input, undefined_halfway, opposite normals
@@ -38,6 +40,17 @@
 //   85       dpsi                                       85..89: log2 A
 //   90       n log2 A                                   91..96: C
 //   then     the output buffer
+// The tau above and the suffixes of the signals are SetupII = 1's. Sharing
+// (docs/setup_hw.md#sharing-over-setupii-clocks: one instance serves sites whose input
+// positions differ modulo SetupII, the site picked by the valid bit of its position, vld):
+//   SetupII 2  the code normalizers on two instances (N1, H1 and N2, He; H1 and He enter at
+//              tau 1); the bisector's and W's normalizer on one; the six dot products on
+//              three (cos t1 computed at tau 19); the two CORDICs on one (lambda's a clock
+//              behind gamma's: every step from the CORDICs on one tau later)
+//   SetupII 4  the code normalizers on one instance (N1, N2, H1, He entering at tau 0, 1,
+//              2, 3: every step from the bisector on one tau later); the two Q44
+//              normalizers on one; the dot products on two; the two reflections' scaled
+//              subtractions on one; the CORDICs on one (one more tau)
 // Patent block numbers do not apply: the patent leaves the setup to the host.
 
 `include "specular_assert.svh"
@@ -48,6 +61,9 @@ module specular_setup #(
   // 1: the end halfway vector equals the first (a directional light and a viewer at
   // infinity): geo_he_i is ignored and its normalizer is not built.
   parameter bit HeEqH1        = 1'b0,
+  // Initiation interval: at most one span every SetupII clocks (1, 2 or 4), the hardware
+  // shared over those clocks (docs/setup_hw.md#sharing-over-setupii-clocks).
+  parameter int SetupII       = 1,
   parameter     RsqrtSeedFile = "roms/setup/rsqrt_seed.hex",
   parameter     LogRecipFile  = "roms/setup/log_recip.hex",
   parameter     LogValueFile  = "roms/setup/log_value.hex",
@@ -105,15 +121,25 @@ module specular_setup #(
   localparam int LenBits   = 11;
   localparam int MaxN      = 1000;
   localparam int Up        = CordicFrac - UnitFrac;  // Q44 -> Q50
-  // tau of each step's output (see the header).
-  localparam int TNorm1  = NormStages;               // 9
+  // Sharing (docs/setup_hw.md#sharing-over-setupii-clocks). The normalizers of the codes:
+  // sites N1, N2, H1, He (j = 0 .. 3; He not with HeEqH1) on ceil(sites / SetupII) instances,
+  // site j on instance j mod CodeInst, entering Off(j) = j / CodeInst clocks late.
+  localparam int CodeSites = HeEqH1 ? 3 : 4;
+  localparam int CodeInst  = (CodeSites + SetupII - 1) / SetupII;
+  localparam int OffN2     = 1 / CodeInst;
+  localparam int OffH1     = 2 / CodeInst;
+  localparam int OffHe     = HeEqH1 ? OffH1 : 3 / CodeInst;  // He = H1 with HeEqH1
+  // The two CORDICs on one instance (SetupII > 1): lambda's enters a clock after gamma's.
+  localparam int CordicSkew = SetupII > 1 ? 1 : 0;
+  // tau of each step's output (see the header; the numbers are SetupII = 1's).
+  localparam int TNorm1  = NormStages + OffN2;       // 9: N1 and N2 (the bisector's input)
   localparam int TNorm2  = TNorm1 + NormStages;      // 18
   localparam int TH2     = TNorm2 + 4;               // 22
   localparam int TTest   = TH2 + 1;                  // 23
   localparam int TW      = TTest + 1;                // 24
   localparam int TU      = TW + NormStages;          // 33
   localparam int TNu     = TU + 1;                   // 34
-  localparam int TCordic = TNu + CordicStages;       // 83
+  localparam int TCordic = TNu + CordicStages + CordicSkew;  // 83
   localparam int TRegs   = TCordic + 1;              // 84
   localparam int TLog    = TRegs + LogStages;        // 89
   localparam int TE      = TLog + 1;                 // 90
@@ -122,6 +148,14 @@ module specular_setup #(
 
   if (VecBits < 2 || VecBits > 24 || TagBits < 1) begin : gen_param_check
     `SPEC_PARAM_ERROR("specular_setup: VecBits must be in 2..24 and TagBits >= 1")
+  end
+  if (SetupII != 1 && SetupII != 2 && SetupII != 4) begin : gen_ii_check
+    `SPEC_PARAM_ERROR("specular_setup: SetupII must be 1, 2 or 4")
+  end
+  // The bisector's and W's normalizer share one instance: their input positions must differ
+  // modulo SetupII.
+  if (SetupII > 1 && (TW - TNorm1) % SetupII == 0) begin : gen_share_check
+    `SPEC_PARAM_ERROR("specular_setup: the bisector's and W's normalizer collide modulo SetupII")
   end
 
   typedef logic signed [VecW-1:0] comp_t;
@@ -132,7 +166,28 @@ module specular_setup #(
   } vec_t;
 
   logic adv;
-  assign geo_ready_o = adv;
+  logic geo_take;  // the input register takes geo_valid_i (at an advancing clock)
+  // Spacing (docs/setup_hw.md#sharing-over-setupii-clocks): with SetupII > 1 a span is
+  // accepted only when the count of advancing clocks modulo SetupII (phase_q) is 0, so every
+  // span in flight sits at a position congruent to every other's modulo SetupII, and after
+  // an accept geo_ready_o is low for the next SetupII - 1 advancing clocks. A stall freezes
+  // the count; reset clears it. geo_ready_o stays a function of registers.
+  if (SetupII == 1) begin : gen_ii1
+    assign geo_ready_o = adv;
+    assign geo_take    = geo_valid_i;
+  end else begin : gen_ii
+    localparam int PhaseBits = $clog2(SetupII);
+    logic [PhaseBits-1:0] phase_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        phase_q <= '0;
+      end else if (adv) begin
+        phase_q <= phase_q + PhaseBits'(1);  // SetupII is a power of two: wraps at SetupII
+      end
+    end
+    assign geo_ready_o = adv && phase_q == '0;
+    assign geo_take    = geo_valid_i && phase_q == '0;
+  end
 
   // ---- tau 0: the input register ----
   logic                 in_valid_q;
@@ -145,7 +200,7 @@ module specular_setup #(
     if (!rst_ni) begin
       in_valid_q <= 1'b0;
     end else if (adv) begin
-      in_valid_q <= geo_valid_i;
+      in_valid_q <= geo_take;
     end
   end
   always_ff @(posedge clk_i) begin
@@ -162,15 +217,11 @@ module specular_setup #(
   end
 
   // Decode (combinational on tau 0).
-  vec_t c1, c2, c3, c4;
+  vec_t c1, c2;
   assign c1 = {VecW'($signed(n1_q[3*VecBits-1:2*VecBits])), VecW'($signed(n1_q[2*VecBits-1:VecBits])),
                VecW'($signed(n1_q[VecBits-1:0]))};
   assign c2 = {VecW'($signed(n2_q[3*VecBits-1:2*VecBits])), VecW'($signed(n2_q[2*VecBits-1:VecBits])),
                VecW'($signed(n2_q[VecBits-1:0]))};
-  assign c3 = {VecW'($signed(h1_q[3*VecBits-1:2*VecBits])), VecW'($signed(h1_q[2*VecBits-1:VecBits])),
-               VecW'($signed(h1_q[VecBits-1:0]))};
-  assign c4 = {VecW'($signed(he_q[3*VecBits-1:2*VecBits])), VecW'($signed(he_q[2*VecBits-1:VecBits])),
-               VecW'($signed(he_q[VecBits-1:0]))};
   logic invalid, undefined, opp_normals;
   logic signed [63:0] cr_x, cr_y, cr_z, cdot;
   always_comb begin
@@ -183,46 +234,101 @@ module specular_setup #(
     opp_normals = cr_x == 0 && cr_y == 0 && cr_z == 0 && cdot < 0;
   end
 
-  // ---- Normalizers ----
+  // The valid bit of every position (vld[t]: a span at tau t), which selects the site of a
+  // shared instance; SetupII = 1 shares nothing and builds none.
+  logic [TC:0] vld;
+  if (SetupII == 1) begin : gen_vld_none
+    assign vld = '0;
+  end else begin : gen_vld
+    logic [TC:1] vld_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        vld_q <= '0;
+      end else if (adv) begin
+        vld_q <= {vld_q[TC-1:1], in_valid_q};
+      end
+    end
+    assign vld = {vld_q, in_valid_q};
+  end
+
+  // ---- Normalizers of the codes: site j from tau Off(j) to NormStages + Off(j) ----
+  // Flat arrays (Yosys 0.23 has no multi-dimensional packed arrays): site j's code is
+  // code[j*CodeW +: CodeW], instance i's unit vector code_unit[i*VecTBits +: VecTBits].
+  localparam int CodeW = 3 * VecBits;
+  logic [CodeSites*CodeW-1:0]   code, code_dl;
+  logic [CodeSites-1:0]         code_pick;  // site j's span is at its entry position
+  logic [CodeInst*VecTBits-1:0] code_unit;
   vec_t n1u, n2u, h1u, heu, mu, uu, w_q;
-  specular_setup_norm #(.InW(VecBits), .RsqrtSeedFile(RsqrtSeedFile)) u_norm_n1 (
-    .clk_i (clk_i), .en_i (adv), .x_i (c1.x[VecBits-1:0]), .y_i (c1.y[VecBits-1:0]), .z_i (c1.z[VecBits-1:0]), .x_o (n1u.x), .y_o (n1u.y), .z_o (n1u.z)
-  );
-  specular_setup_norm #(.InW(VecBits), .RsqrtSeedFile(RsqrtSeedFile)) u_norm_n2 (
-    .clk_i (clk_i), .en_i (adv), .x_i (c2.x[VecBits-1:0]), .y_i (c2.y[VecBits-1:0]), .z_i (c2.z[VecBits-1:0]), .x_o (n2u.x), .y_o (n2u.y), .z_o (n2u.z)
-  );
-  specular_setup_norm #(.InW(VecBits), .RsqrtSeedFile(RsqrtSeedFile)) u_norm_h1 (
-    .clk_i (clk_i), .en_i (adv), .x_i (c3.x[VecBits-1:0]), .y_i (c3.y[VecBits-1:0]), .z_i (c3.z[VecBits-1:0]), .x_o (h1u.x), .y_o (h1u.y), .z_o (h1u.z)
-  );
+  assign code[3*CodeW-1:0] = {h1_q, n2_q, n1_q};
+  if (!HeEqH1) begin : gen_code_he
+    assign code[4*CodeW-1 -: CodeW] = he_q;
+  end
+  for (genvar j = 0; j < CodeSites; j++) begin : gen_code_site
+    specular_delay #(.Width(CodeW), .Depth(j / CodeInst), .Reset(1'b0)) u_dly_code (
+      .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (code[j*CodeW +: CodeW]), .q_o (code_dl[j*CodeW +: CodeW])
+    );
+    assign code_pick[j] = vld[j / CodeInst];
+  end
+  for (genvar i = 0; i < CodeInst; i++) begin : gen_norm_code
+    // (no struct inside a generate block: Yosys 0.23 cannot resolve its members there)
+    logic [CodeW-1:0]  sel;
+    logic [VecW-1:0]   ux, uy, uz;
+    always_comb begin
+      sel = code_dl[i*CodeW +: CodeW];  // the site entering at offset 0, unless a later one's span is there
+      for (int j = i + CodeInst; j < CodeSites; j = j + CodeInst) begin
+        if (code_pick[j]) sel = code_dl[j*CodeW +: CodeW];
+      end
+    end
+    specular_setup_norm #(.InW(VecBits), .RsqrtSeedFile(RsqrtSeedFile)) u_norm (
+      .clk_i (clk_i), .en_i (adv),
+      .x_i (sel[VecBits-1:0]), .y_i (sel[2*VecBits-1:VecBits]), .z_i (sel[3*VecBits-1:2*VecBits]),
+      .x_o (ux), .y_o (uy), .z_o (uz)
+    );
+    assign code_unit[i*VecTBits +: VecTBits] = {uz, uy, ux};
+  end
+  assign n1u = code_unit[0 +: VecTBits];
+  assign n2u = code_unit[(1 % CodeInst)*VecTBits +: VecTBits];
+  assign h1u = code_unit[(2 % CodeInst)*VecTBits +: VecTBits];
   if (HeEqH1) begin : gen_he_eq_h1
     assign heu = h1u;
-    logic unused_c4;
-    assign unused_c4 = ^c4;
   end else begin : gen_he
-    specular_setup_norm #(.InW(VecBits), .RsqrtSeedFile(RsqrtSeedFile)) u_norm_he (
-      .clk_i (clk_i), .en_i (adv), .x_i (c4.x[VecBits-1:0]), .y_i (c4.y[VecBits-1:0]), .z_i (c4.z[VecBits-1:0]), .x_o (heu.x), .y_o (heu.y), .z_o (heu.z)
-    );
+    assign heu = code_unit[(3 % CodeInst)*VecTBits +: VecTBits];
   end
-  // tau 9 -> 18: the bisector.
-  specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_m (
-    .clk_i (clk_i), .en_i (adv),
-    .x_i (n1u.x + n2u.x), .y_i (n1u.y + n2u.y), .z_i (n1u.z + n2u.z),
-    .x_o (mu.x), .y_o (mu.y), .z_o (mu.z)
-  );
-  // tau 24 -> 33: u.
-  specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_w (
-    .clk_i (clk_i), .en_i (adv), .x_i (w_q.x), .y_i (w_q.y), .z_i (w_q.z), .x_o (uu.x), .y_o (uu.y), .z_o (uu.z)
-  );
 
-  // Vectors beside the normalizers: N1 and H1 from tau 9 to 18, He too.
+  // ---- Normalizers of the bisector (tau TNorm1 -> TNorm2) and of W (tau TW -> TU) ----
+  vec_t n1m, msum;  // N1 at TNorm1, N1 + N2
+  specular_delay #(.Width(VecTBits), .Depth(OffN2), .Reset(1'b0)) u_dly_n1m (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n1u), .q_o (n1m)
+  );
+  assign msum = {n1m.z + n2u.z, n1m.y + n2u.y, n1m.x + n2u.x};
+  if (SetupII == 1) begin : gen_norm_q44
+    specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_m (
+      .clk_i (clk_i), .en_i (adv), .x_i (msum.x), .y_i (msum.y), .z_i (msum.z), .x_o (mu.x), .y_o (mu.y), .z_o (mu.z)
+    );
+    specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_w (
+      .clk_i (clk_i), .en_i (adv), .x_i (w_q.x), .y_i (w_q.y), .z_i (w_q.z), .x_o (uu.x), .y_o (uu.y), .z_o (uu.z)
+    );
+  end else begin : gen_norm_q44_shared
+    logic [VecTBits-1:0] sel;
+    logic [VecW-1:0]     ux, uy, uz;
+    assign sel = vld[TW] ? w_q : msum;
+    specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_mw (
+      .clk_i (clk_i), .en_i (adv), .x_i (sel[VecW-1:0]), .y_i (sel[2*VecW-1:VecW]), .z_i (sel[3*VecW-1:2*VecW]),
+      .x_o (ux), .y_o (uy), .z_o (uz)
+    );
+    assign mu = {uz, uy, ux};
+    assign uu = {uz, uy, ux};
+  end
+
+  // Vectors beside the bisector's normalizer: N1, H1 and He to TNorm2 (18).
   vec_t n1_18, h1_18, he_18;
   specular_delay #(.Width(VecTBits), .Depth(NormStages), .Reset(1'b0)) u_dly_n1 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n1u), .q_o (n1_18)
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n1m), .q_o (n1_18)
   );
-  specular_delay #(.Width(VecTBits), .Depth(NormStages), .Reset(1'b0)) u_dly_h1 (
+  specular_delay #(.Width(VecTBits), .Depth(TNorm2 - NormStages - OffH1), .Reset(1'b0)) u_dly_h1 (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (h1u), .q_o (h1_18)
   );
-  specular_delay #(.Width(VecTBits), .Depth(NormStages), .Reset(1'b0)) u_dly_he (
+  specular_delay #(.Width(VecTBits), .Depth(TNorm2 - NormStages - OffHe), .Reset(1'b0)) u_dly_he (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (heu), .q_o (he_18)
   );
   // Opposite normals at tau 19.
@@ -247,36 +353,117 @@ module specular_setup #(
   function automatic logic within_floor(input logic signed [VecW-1:0] d);
     within_floor = d <= Floor && d >= -Floor;
   endfunction
+  // On whole vec_t words ({z, y, x}; Yosys 0.23 takes no struct arguments).
+  function automatic logic signed [63:0] dotv(input logic [VecTBits-1:0] a, input logic [VecTBits-1:0] b);
+    dotv = dot(a[VecW-1:0], a[2*VecW-1:VecW], a[3*VecW-1:2*VecW], b[VecW-1:0], b[2*VecW-1:VecW], b[3*VecW-1:2*VecW]);
+  endfunction
+  // v - s u 2^(43 - 44): a reflection's v - 2 (v.u) u.
+  function automatic logic [VecTBits-1:0] reflect(input logic [VecTBits-1:0] v, input logic signed [63:0] sc,
+                                                  input logic [VecTBits-1:0] u);
+    reflect = {sub_scaled(v[3*VecW-1:2*VecW], sc, u[3*VecW-1:2*VecW], UnitFrac - 1),
+               sub_scaled(v[2*VecW-1:VecW], sc, u[2*VecW-1:VecW], UnitFrac - 1),
+               sub_scaled(v[VecW-1:0], sc, u[VecW-1:0], UnitFrac - 1)};
+  endfunction
 
   // ---- tau 19 .. 24: the rotation, the tests, W ----
   vec_t he_19, m_19, y_20, y_21, h2_22, h2_23, h1_23, n1_23;
   vec_t n1_19, n1_20, n1_21, n1_22, h1_19, h1_20, h1_21, h1_22;
   logic signed [63:0] s1_19, s2_21, cos_t1_23, x_23;
   logic flat_23, opp_h_23;
+  vec_t w_33, n1_33, n1_24;
+
+  // The dot products (one stage each): s1 = He.m at tau 18, s2 = y.N1 at 20, x = H1.H2 at 22,
+  // |W| = u.W and N1.u at 33, and cos t1 = N1.H1 (at 22, or at 19 when shared). Shared
+  // (input positions distinct modulo SetupII, relative to tau 18: s1 0, cos 1, s2 2, x 4,
+  // |W| and N1.u 15): SetupII = 2 {s1, |W|}, {s2, N1.u}, {x, cos}; SetupII = 4
+  // {s1, cos, s2, |W|}, {x, N1.u}.
+  localparam int TCos = SetupII == 1 ? TTest - 1 : TNorm2 + 1;
+  logic signed [63:0] d_s1, d_s2, d_cos, d_x;
+  logic signed [CordicW-1:0] d_wl, d_nu;  // |value| < 2^(CordicW-1-UnitFrac)
+  if (SetupII == 1) begin : gen_dot
+    assign d_s1  = dotv(he_18, mu);
+    assign d_s2  = dotv(y_20, n1_20);
+    assign d_cos = dotv(n1_22, h1_22);
+    assign d_x   = dotv(h1_22, h2_22);
+    assign d_wl  = CordicW'(dotv(uu, w_33));
+    assign d_nu  = CordicW'(dotv(n1_33, uu));
+  end else if (SetupII == 2) begin : gen_dot2
+    logic signed [63:0] r0, r1, r2;
+    assign r0    = vld[TU] ? dotv(uu, w_33) : dotv(he_18, mu);
+    assign r1    = vld[TU] ? dotv(n1_33, uu) : dotv(y_20, n1_20);
+    assign r2    = vld[TCos] ? dotv(n1_19, h1_19) : dotv(h1_22, h2_22);
+    assign d_s1  = r0;
+    assign d_wl  = CordicW'(r0);
+    assign d_s2  = r1;
+    assign d_nu  = CordicW'(r1);
+    assign d_x   = r2;
+    assign d_cos = r2;
+  end else begin : gen_dot4
+    logic [VecTBits-1:0] a0, b0, a1, b1;
+    logic signed [63:0]  r0, r1;
+    always_comb begin
+      {a0, b0} = {he_18, mu};
+      if (vld[TCos]) {a0, b0} = {n1_19, h1_19};
+      if (vld[TNorm2 + 2]) {a0, b0} = {y_20, n1_20};
+      if (vld[TU]) {a0, b0} = {uu, w_33};
+      {a1, b1} = vld[TU] ? {n1_33, uu} : {h1_22, h2_22};
+    end
+    assign r0    = dotv(a0, b0);
+    assign r1    = dotv(a1, b1);
+    assign d_s1  = r0;
+    assign d_cos = r0;
+    assign d_s2  = r0;
+    assign d_wl  = CordicW'(r0);
+    assign d_x   = r1;
+    assign d_nu  = CordicW'(r1);
+  end
+  // cos t1 to tau 23.
+  if (SetupII == 1) begin : gen_cos
+    always_ff @(posedge clk_i) begin
+      if (adv) cos_t1_23 <= d_cos;
+    end
+  end else begin : gen_cos_early
+    specular_delay #(.Width(64), .Depth(TTest - TCos), .Reset(1'b0)) u_dly_cos (
+      .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (d_cos), .q_o (cos_t1_23)
+    );
+  end
+  // The reflections (tau 19 and 21): one instance for both with SetupII = 4 (positions 2
+  // apart).
+  vec_t r_y, r_h2;
+  if (SetupII == 4) begin : gen_refl_shared
+    logic [VecTBits-1:0] rv, ru, rr;
+    logic signed [63:0]  rs;
+    assign {rv, rs, ru} = vld[TNorm2 + 3] ? {y_21, s2_21, n1_21} : {he_19, s1_19, m_19};
+    assign rr   = reflect(rv, rs, ru);
+    assign r_y  = rr;
+    assign r_h2 = rr;
+  end else begin : gen_refl
+    assign r_y  = reflect(he_19, s1_19, m_19);
+    assign r_h2 = reflect(y_21, s2_21, n1_21);
+  end
   always_ff @(posedge clk_i) begin
     if (adv) begin
       // tau 19
-      s1_19 <= dot(he_18.x, he_18.y, he_18.z, mu.x, mu.y, mu.z);
+      s1_19 <= d_s1;
       he_19 <= he_18;
       m_19  <= mu;
       n1_19 <= n1_18;
       h1_19 <= h1_18;
       // tau 20
-      y_20  <= opp_n_19 ? he_19 : {sub_scaled(he_19.z, s1_19, m_19.z, UnitFrac - 1), sub_scaled(he_19.y, s1_19, m_19.y, UnitFrac - 1), sub_scaled(he_19.x, s1_19, m_19.x, UnitFrac - 1)};
+      y_20  <= opp_n_19 ? he_19 : r_y;
       n1_20 <= n1_19;
       h1_20 <= h1_19;
       // tau 21
-      s2_21 <= dot(y_20.x, y_20.y, y_20.z, n1_20.x, n1_20.y, n1_20.z);
+      s2_21 <= d_s2;
       y_21  <= y_20;
       n1_21 <= n1_20;
       h1_21 <= h1_20;
       // tau 22
-      h2_22 <= {sub_scaled(y_21.z, s2_21, n1_21.z, UnitFrac - 1), sub_scaled(y_21.y, s2_21, n1_21.y, UnitFrac - 1), sub_scaled(y_21.x, s2_21, n1_21.x, UnitFrac - 1)};
+      h2_22 <= r_h2;
       n1_22 <= n1_21;
       h1_22 <= h1_21;
       // tau 23
-      cos_t1_23 <= dot(n1_22.x, n1_22.y, n1_22.z, h1_22.x, h1_22.y, h1_22.z);
-      x_23      <= dot(h1_22.x, h1_22.y, h1_22.z, h2_22.x, h2_22.y, h2_22.z);
+      x_23      <= d_x;
       flat_23   <= within_floor(h2_22.x - h1_22.x) && within_floor(h2_22.y - h1_22.y) && within_floor(h2_22.z - h1_22.z);
       opp_h_23  <= !(within_floor(h2_22.x - h1_22.x) && within_floor(h2_22.y - h1_22.y) && within_floor(h2_22.z - h1_22.z)) &&
                    within_floor(h2_22.x + h1_22.x) && within_floor(h2_22.y + h1_22.y) && within_floor(h2_22.z + h1_22.z);
@@ -284,12 +471,18 @@ module specular_setup #(
       h1_23 <= h1_22;
       n1_23 <= n1_22;
       // tau 24
-      w_q <= opp_h_23 ? {sub_scaled(n1_23.z, cos_t1_23, h1_23.z, UnitFrac), sub_scaled(n1_23.y, cos_t1_23, h1_23.y, UnitFrac), sub_scaled(n1_23.x, cos_t1_23, h1_23.x, UnitFrac)} : {sub_scaled(h2_23.z, x_23, h1_23.z, UnitFrac), sub_scaled(h2_23.y, x_23, h1_23.y, UnitFrac), sub_scaled(h2_23.x, x_23, h1_23.x, UnitFrac)};
+      // W = H2 - x H1, or N1 - cos t1 H1 for opposite halfway vectors. Both arms are
+      // written out: Yosys' share pass merges their products into one (the same H1), and
+      // selecting the operands first instead cost 9 more MULT18X18D on the ECP5
+      // (docs/setup_hw.md#sharing-over-setupii-clocks).
+      w_q <= opp_h_23 ? {sub_scaled(n1_23.z, cos_t1_23, h1_23.z, UnitFrac), sub_scaled(n1_23.y, cos_t1_23, h1_23.y, UnitFrac),
+                         sub_scaled(n1_23.x, cos_t1_23, h1_23.x, UnitFrac)}
+                      : {sub_scaled(h2_23.z, x_23, h1_23.z, UnitFrac), sub_scaled(h2_23.y, x_23, h1_23.y, UnitFrac),
+                         sub_scaled(h2_23.x, x_23, h1_23.x, UnitFrac)};
     end
   end
 
   // Beside the W normalizer: W, N1 (tau 24 -> 33), and the flags, x, cos t1 (tau 23 -> 34).
-  vec_t w_33, n1_33, n1_24;
   always_ff @(posedge clk_i) begin
     if (adv) n1_24 <= n1_23;
   end
@@ -312,22 +505,44 @@ module specular_setup #(
   logic signed [CordicW-1:0] wl_34, nu_34;
   always_ff @(posedge clk_i) begin
     if (adv) begin
-      wl_34   <= CordicW'(dot(uu.x, uu.y, uu.z, w_33.x, w_33.y, w_33.z));
-      nu_34   <= flat_33 ? '0 : CordicW'(dot(n1_33.x, n1_33.y, n1_33.z, uu.x, uu.y, uu.z));
+      wl_34   <= d_wl;
+      nu_34   <= flat_33 ? '0 : d_nu;
       flat_34 <= flat_33;
     end
   end
 
   // ---- tau 35 .. 83: CORDIC ----
+  // gamma = atan2(|W|, x); lambda and A K from (cos t1, N1.u). Shared (SetupII > 1): one
+  // instance, lambda's vector entering a clock after gamma's, gamma's angle held a clock.
   logic signed [CordicW-1:0] gamma_angle, gamma_mag_unused, lambda_83, amag_83;
-  specular_setup_cordic u_cordic_gamma (
-    .clk_i (clk_i), .en_i (adv), .x_i (x_34 <<< Up), .y_i (wl_34 <<< Up),
-    .angle_o (gamma_angle), .mag_o (gamma_mag_unused)
-  );
-  specular_setup_cordic u_cordic_lambda (
-    .clk_i (clk_i), .en_i (adv), .x_i (cos_t1_34 <<< Up), .y_i (nu_34 <<< Up),
-    .angle_o (lambda_83), .mag_o (amag_83)
-  );
+  if (SetupII == 1) begin : gen_cordic
+    specular_setup_cordic u_cordic_gamma (
+      .clk_i (clk_i), .en_i (adv), .x_i (x_34 <<< Up), .y_i (wl_34 <<< Up),
+      .angle_o (gamma_angle), .mag_o (gamma_mag_unused)
+    );
+    specular_setup_cordic u_cordic_lambda (
+      .clk_i (clk_i), .en_i (adv), .x_i (cos_t1_34 <<< Up), .y_i (nu_34 <<< Up),
+      .angle_o (lambda_83), .mag_o (amag_83)
+    );
+  end else begin : gen_cordic_shared
+    logic signed [CordicW-1:0] cos_t1_35, nu_35, sel_x, sel_y, angle, mag, gamma_q;
+    always_ff @(posedge clk_i) begin
+      if (adv) begin
+        cos_t1_35 <= cos_t1_34;
+        nu_35     <= nu_34;
+        gamma_q   <= angle;
+      end
+    end
+    assign sel_x = vld[TNu] ? x_34 : cos_t1_35;
+    assign sel_y = vld[TNu] ? wl_34 : nu_35;
+    specular_setup_cordic u_cordic (
+      .clk_i (clk_i), .en_i (adv), .x_i (sel_x <<< Up), .y_i (sel_y <<< Up), .angle_o (angle), .mag_o (mag)
+    );
+    assign gamma_angle      = gamma_q;
+    assign lambda_83        = angle;
+    assign amag_83          = mag;
+    assign gamma_mag_unused = '0;
+  end
   logic flat_83, opp_h_83;
   specular_delay #(.Width(2), .Depth(TCordic - TTest), .Reset(1'b0)) u_dly_flags (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({flat_23, opp_h_23}), .q_o ({flat_83, opp_h_83})

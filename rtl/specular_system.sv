@@ -6,16 +6,18 @@
 // (docs/interfaces.md#geometry-span-interface) into a span descriptor, specular_stream
 // shades its l + 1 pixels. The pixel side is exactly specular_stream's (px_valid_o,
 // px_ready_i, px_intensity_o, px_last_o, px_tag_o, same rules); the geometry side follows
-// the same AXI4-Stream rules, geo_ready_o a register (specular_setup's).
+// the same AXI4-Stream rules, geo_ready_o a function of registers only (specular_setup's).
 //
-// The setup takes a span per clock and the stream a pixel per clock, so with px_ready_i
-// high the system shades one pixel per clock, one-pixel spans back to back included; the
-// setup's two-entry output buffer holds the descriptors while the stream works on a long
-// span. The setup's status is not on the pixel side: a span it resolves to C = 0 gives l + 1
+// The setup takes a span per clock (SetupII = 1; at most one every SetupII clocks otherwise,
+// docs/setup_hw.md#sharing-over-setupii-clocks) and the stream a pixel per clock, so with
+// px_ready_i high and SetupII = 1 the system shades one pixel per clock, one-pixel spans back
+// to back included; the setup's two-entry output buffer holds the descriptors while the
+// stream works on a long span. The setup's status is not on the pixel side: a span it resolves to C = 0 gives l + 1
 // pixels of 0.
 //
 // Parameters: the core's list (rtl/specular_params.svh) with the register formats the setup
-// produces (device::Format's defaults), VecBits, TagBits and the setup's ROM files.
+// produces (device::Format's defaults), VecBits, TagBits, the setup's HeEqH1 and SetupII and
+// its ROM files.
 
 `include "specular_assert.svh"
 `include "specular_params.svh"
@@ -25,6 +27,7 @@ module specular_system #(
   parameter int TagBits       = 16,
   parameter int VecBits       = 18,
   parameter bit HeEqH1        = 1'b0,  // specular_setup's: geo_he_i ignored, He = H1
+  parameter int SetupII       = 1,     // specular_setup's: at most one span every SetupII clocks
   parameter     RsqrtSeedFile = "roms/setup/rsqrt_seed.hex",
   parameter     LogRecipFile  = "roms/setup/log_recip.hex",
   parameter     LogValueFile  = "roms/setup/log_value.hex",
@@ -55,6 +58,9 @@ module specular_system #(
   if (CBits != 16 || CFrac != 15 || AngleBits != 32 || AngleFrac != 28 || NBits != 10 || LenBits != 11) begin : gen_fmt_check
     `SPEC_PARAM_ERROR("specular_system: the register formats must be the defaults (C 16/15, angles 32/28, n 10, l 11)")
   end
+  if (SetupII != 1 && SetupII != 2 && SetupII != 4) begin : gen_ii_check
+    `SPEC_PARAM_ERROR("specular_system: SetupII must be 1, 2 or 4")
+  end
 
   logic                 span_valid, span_ready;
   logic [CBits-1:0]     span_c;
@@ -68,6 +74,7 @@ module specular_system #(
     .VecBits       (VecBits),
     .TagBits       (TagBits),
     .HeEqH1        (HeEqH1),
+    .SetupII       (SetupII),
     .RsqrtSeedFile (RsqrtSeedFile),
     .LogRecipFile  (LogRecipFile),
     .LogValueFile  (LogValueFile),

@@ -11,6 +11,7 @@
 #                   [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N]
 #                   [--freq-hx8k MHZ] [--freq-up5k MHZ] [--flatten|--no-flatten]
 #                   [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only]
+#                   [--setup-ii K]
 #
 #   --top         the core in the harness fpga_ooc (its parameter Top): unit
 #                 (specular_unit), stream (specular_stream), axil (specular_axil: the
@@ -52,6 +53,10 @@
 #   --fresh       re-run even when sources, parameters, ROM files and tools are unchanged
 #                 (otherwise an unchanged run's result is reused)
 #   --elaborate-only  only elaborate the harnesses in Yosys (hierarchy -check), no synthesis
+#   --setup-ii    with --top setup or system: the setup's initiation interval SetupII (1, 2
+#                 or 4: at most one span every K clocks, the hardware shared over them,
+#                 docs/setup_hw.md#sharing-over-setupii-clocks), as --param SetupII=K; the
+#                 run's folder is TOP_iiK_DEVICE/
 #
 # A design that does not fit is a result, reported as fit = no with the reason, not an
 # error: when Yosys' counts already exceed the iCE40 part (logic cells needed, at least the
@@ -71,7 +76,7 @@ me=scripts/fpga.sh
 
 die_usage() {
   echo "$me: $*" >&2
-  echo "usage: $me [--top unit|stream|axil|phong|setup|system|all] [--device hx8k|up5k|ecp5|all] [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--flatten|--no-flatten] [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only]" >&2
+  echo "usage: $me [--top unit|stream|axil|phong|setup|system|all] [--device hx8k|up5k|ecp5|all] [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--flatten|--no-flatten] [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only] [--setup-ii K]" >&2
   exit 2
 }
 
@@ -87,6 +92,7 @@ freq_up5k=50
 strict=0
 fresh=0
 elab_only=0
+setup_ii=
 params=()
 for p in ${FPGA_PARAMS:-}; do params+=("$p"); done
 
@@ -107,8 +113,9 @@ while [ $# -gt 0 ]; do
     --strict)    strict=1; shift ;;
     --fresh)     fresh=1; shift ;;
     --elaborate-only) elab_only=1; shift ;;
+    --setup-ii)  need_value "$@"; setup_ii=$2; shift 2 ;;
     -h|--help)   sed -n '4,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
-    *)           die_usage "unknown argument '$1' (allowed: --top, --device, --out, --param, --phong-config, --seed, --freq-hx8k, --freq-up5k, --flatten, --no-flatten, --yosys-timeout, --strict, --fresh, --elaborate-only, --help)" ;;
+    *)           die_usage "unknown argument '$1' (allowed: --top, --device, --out, --param, --phong-config, --seed, --freq-hx8k, --freq-up5k, --flatten, --no-flatten, --yosys-timeout, --strict, --fresh, --elaborate-only, --setup-ii, --help)" ;;
   esac
 done
 
@@ -142,6 +149,12 @@ if [ -n "$phong_cfg" ]; then
     g=${g//\\\"/}
     params+=("$g")
   done < <(grep -o '"-G[^ ]*"' <<< "$cfg_line" | sed 's/^"//; s/"$//')
+fi
+# --setup-ii: specular_setup's SetupII (rtl/specular_setup.sv), on the setup or the system.
+if [ -n "$setup_ii" ]; then
+  case "$top_arg" in setup|system) ;; *) die_usage "--setup-ii needs --top setup or system (got --top $top_arg)" ;; esac
+  case "$setup_ii" in 1|2|4) params+=("SetupII=$setup_ii") ;;
+    *) die_usage "--setup-ii must be 1, 2 or 4 (got '$setup_ii')" ;; esac
 fi
 [[ "$yosys_timeout" =~ ^[0-9]+$ ]] || die_usage "--yosys-timeout must be a whole number of seconds, 0 for no limit (got '$yosys_timeout')"
 [[ "$seed" =~ ^[0-9]+$ ]] || die_usage "--seed must be a non-negative integer (got '$seed')"
@@ -223,7 +236,7 @@ for top in "${tops[@]}"; do
     auto) case "$top" in setup|system) hier=1 ;; esac ;;
   esac
   for dev in "${devices[@]}"; do
-    dir="$out/${top}${phong_cfg:+_$phong_cfg}_${dev}"
+    dir="$out/${top}${phong_cfg:+_$phong_cfg}${setup_ii:+_ii$setup_ii}_${dev}"
     mkdir -p "$dir"
     noflat=""
     [ "$hier" = 1 ] && noflat=" -noflatten"
@@ -501,6 +514,9 @@ for r in runs:
     e = {"core": r["core"]}
     if r.get("phong_config"):
         e["config"] = r["phong_config"]
+    ii = next((p.split("=", 1)[1] for p in r["params"] if p.startswith("SetupII=")), None)
+    if ii is not None:  # --setup-ii (or --param SetupII=K)
+        e["setup_ii"] = int(ii)
     e["part"] = {"hx8k": "HX8K ct256", "up5k": "UP5K sg48", "ecp5": "ECP5"}[r["device"]]
     e["rtl"] = rtl
     e["tools"] = "Yosys " + re.sub(r"^Yosys (\S+).*", r"\1", r.get("yosys_version", "?"))
@@ -520,7 +536,8 @@ ecp5 = [r for r in runs if r["device"] == "ecp5"]
 runs = [r for r in runs if r["device"] != "ecp5"]
 
 def name(r):
-    return r["core"] + (f" {r['phong_config']}" if r.get("phong_config") else "")
+    ii = next((p for p in r["params"] if p.startswith("SetupII=")), None)
+    return r["core"] + (f" {r['phong_config']}" if r.get("phong_config") else "") + (f" {ii}" if ii else "")
 
 def n(v):
     return "-" if v is None else str(v)
