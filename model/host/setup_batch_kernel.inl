@@ -184,11 +184,16 @@ inline float round_away_f(float x) {
 // noise floor), n, scale, l. `special` = 1 where C lies within the float error
 // of the saturation boundary: the scalar setup decides those, so the flag is the scalar's.
 // Spans the caller does not take from here may hold anything (their results are ignored).
-inline void single_tail(const double* __restrict b_c2, const double* __restrict b_cosr,
-                        const double* __restrict b_t, const double* __restrict b_cos, const double* __restrict b_sin2,
-                        const double* __restrict b_noise, const double* __restrict nexp,
+// T: double (from setup_block_double's double geometry) or float (from setup_block's float
+// geometry).
+// kDirectS (the float geometry): where b_direct is 1, s = 1 - A^2 = (N1.c)^2 / |c|^2 from
+// b_nc = N1.c instead of sin^2 t1 - (N1.u)^2 (docs/scanline_setup.md#single-precision-geometry).
+template <class T, bool kDirectS = false>
+inline void single_tail(const T* __restrict b_c2, const T* __restrict b_cosr,
+                        const T* __restrict b_t, const T* __restrict b_cos, const T* __restrict b_sin2,
+                        const T* __restrict b_noise, const double* __restrict nexp,
                         const double* __restrict scale, const int32_t* __restrict len, int count, const KernelFormat& kf,
-                        const BlockOut& o) {
+                        const BlockOut& o, const T* __restrict b_nc = nullptr, const T* __restrict b_direct = nullptr) {
   double* __restrict oc = o.c;
   double* __restrict op = o.psi0;
   double* __restrict od = o.dpsi;
@@ -223,7 +228,11 @@ inline void single_tail(const double* __restrict b_c2, const double* __restrict 
     const float lambda = atan2_f(qu, cs, 1.0f / ml);
     // A^2 = cos^2 t1 + (N1.u)^2 = 1 - s with s = sin^2 t1 - (N1.u)^2: sin^2 t1 from double,
     // and (N1.u)^2 <= sin^2 t1 so that its float error is small where s is (A near 1).
-    const float s = sin2 - qu * qu;
+    float s = sin2 - qu * qu;
+    if constexpr (kDirectS) {
+      const float nc = static_cast<float>(b_nc[i]) * rs;
+      s = b_direct[i] != T(0) ? nc * nc : s;
+    }
     const float a2 = cs * cs + qu * qu;
     const float lg = log2_f(a2 > 0x1p-100f ? a2 : 0x1p-100f, s);
     const float x = 0.5f * nn * lg;
@@ -308,8 +317,8 @@ inline void double_tail(const double* __restrict b_ord, const double* __restrict
   }
 }
 
-// Spans [0, count) of the arrays (count <= the block size of the caller).
-inline void setup_block(const double* __restrict n1x, const double* __restrict n1y, const double* __restrict n1z,
+// Spans [0, count) of the arrays (count <= the block size of the caller), geometry in double.
+inline void setup_block_double(const double* __restrict n1x, const double* __restrict n1y, const double* __restrict n1z,
                         const double* __restrict n2x, const double* __restrict n2y, const double* __restrict n2z,
                         const double* __restrict h1x, const double* __restrict h1y, const double* __restrict h1z,
                         const double* __restrict hex, const double* __restrict hey, const double* __restrict hez,
@@ -473,6 +482,153 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
   double_tail(g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7], gl, ng, kf, t);
+#pragma GCC diagnostic pop
+  for (int j = 0; j < ng; ++j) {
+    const int i = idx[j];
+    o.c[i] = tc[j], o.psi0[i] = tp[j], o.dpsi[i] = td[j], o.n[i] = tn[j], o.flags[i] = tfl[j], o.special[i] = tsp[j];
+  }
+}
+
+// Copies the inputs of spans idx[0..ng) into the block arrays g[0..13] (n1, n2, h1, he, n,
+// scale) and gl (l).
+inline void gather_inputs(const double* n1x, const double* n1y, const double* n1z, const double* n2x,
+                          const double* n2y, const double* n2z, const double* h1x, const double* h1y,
+                          const double* h1z, const double* hex, const double* hey, const double* hez,
+                          const double* nexp, const double* scale, const int32_t* len, const int* idx, int ng,
+                          double (&g)[14][kBlock], int32_t* gl) {
+  for (int j = 0; j < ng; ++j) {
+    const int i = idx[j];
+    g[0][j] = n1x[i], g[1][j] = n1y[i], g[2][j] = n1z[i], g[3][j] = n2x[i], g[4][j] = n2y[i], g[5][j] = n2z[i];
+    g[6][j] = h1x[i], g[7][j] = h1y[i], g[8][j] = h1z[i], g[9][j] = hex[i], g[10][j] = hey[i], g[11][j] = hez[i];
+    g[12][j] = nexp[i], g[13][j] = scale[i], gl[j] = len[i];
+  }
+}
+
+// Spans [0, count) of the arrays (count <= the block size of the caller). Short spans far
+// from every status threshold take the geometry in float too, and then single_tail
+// (docs/scanline_setup.md#single-precision-geometry): twice the spans per instruction of
+// setup_block_double's stage 1. The others -- long spans, spans near a threshold of the
+// scalar setup (opposite normals, opposite halfway vectors), vectors far from unit length,
+// anything invalid -- are gathered for setup_block_double, which decides them exactly as
+// before, and their results scattered over the float ones.
+inline void setup_block(const double* __restrict n1x, const double* __restrict n1y, const double* __restrict n1z,
+                        const double* __restrict n2x, const double* __restrict n2y, const double* __restrict n2z,
+                        const double* __restrict h1x, const double* __restrict h1y, const double* __restrict h1z,
+                        const double* __restrict hex, const double* __restrict hey, const double* __restrict hez,
+                        const double* __restrict nexp, const double* __restrict scale, const int32_t* __restrict len,
+                        int count, const KernelFormat& kf, const BlockOut& o) {
+  if (!kf.single) {
+    setup_block_double(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, count, kf, o);
+    return;
+  }
+  // The float geometry's margins (docs/scanline_setup.md#single-precision-geometry).
+  constexpr float kNearUnitF = 0x1p-12f;        // |  |v|^2 - 1 | of N1, N2, H1
+  constexpr float kHeLo = 0x1p-20f, kHeHi = 0x1p20f;  // |He|^2
+  constexpr float kOpcMin = 0x1p-8f;             // 1 + N1.N2: far from opposite normals
+  constexpr float kHsMin = 0x1p-16f;             // sin^2 gamma where cos gamma < 0: far from H2 = -H1
+  constexpr float kDirectMin = 0x1p-6f;         // sin^2 gamma: s from N1.c (u well determined)
+  constexpr float kGammaMin = 0x1p-24f;          // sin^2 gamma: u well determined in float
+  const double max_len = static_cast<double>(kSingleMaxLen < kf.max_len ? kSingleMaxLen : kf.max_len);
+  // C = scale A^n with A <= 1 stays 8 codes below the top of register 1 (and so outside
+  // single_tail's band around it): where C saturates, the split of the pixel between C and
+  // psi0 no longer makes pixel 0 independent of how well the float geometry finds u (and
+  // whether it saturates depends on A, ill-conditioned for tiny gamma), so such spans keep
+  // the double geometry.
+  const double max_scale = std::min(0x1p20, (kf.c_top - 8.0) / kf.c_scale);
+  alignas(64) float b_c2[kBlock], b_cosr[kBlock], b_t[kBlock], b_cos[kBlock], b_sin2[kBlock], b_noise[kBlock];
+  alignas(64) float take[kBlock], b_nc[kBlock], b_direct[kBlock];
+  float takes = 0.0f;
+#pragma GCC ivdep
+  for (int i = 0; i < count; ++i) {
+    // Range checks on the double inputs (exact: n and l must be the scalar setup's), as a
+    // double 1/0 converted to float below (mixed-width masks stop the vectorizer).
+    const double nd = nexp[i], sd = scale[i], ld = static_cast<double>(len[i]);
+    double okd = nd >= 1.0 ? 1.0 : 0.0;
+    okd = nd <= kMaxN ? okd : 0.0;
+    okd = ld >= 0.0 ? okd : 0.0;
+    okd = ld <= max_len ? okd : 0.0;
+    okd = sd >= 0.0 ? okd : 0.0;
+    okd = sd <= max_scale ? okd : 0.0;  // also false for NaN
+    float ok = static_cast<float>(okd);
+    double fd = n1x[i] == n2x[i] ? 1.0 : 0.0;
+    fd = n1y[i] == n2y[i] ? fd : 0.0;
+    fd = n1z[i] == n2z[i] ? fd : 0.0;
+    fd = h1x[i] == hex[i] ? fd : 0.0;
+    fd = h1y[i] == hey[i] ? fd : 0.0;
+    fd = h1z[i] == hez[i] ? fd : 0.0;
+    const float flat = static_cast<float>(fd);
+    const float ax0 = static_cast<float>(n1x[i]), ay0 = static_cast<float>(n1y[i]), az0 = static_cast<float>(n1z[i]);
+    const float bx0 = static_cast<float>(n2x[i]), by0 = static_cast<float>(n2y[i]), bz0 = static_cast<float>(n2z[i]);
+    const float hx0 = static_cast<float>(h1x[i]), hy0 = static_cast<float>(h1y[i]), hz0 = static_cast<float>(h1z[i]);
+    const float ex = static_cast<float>(hex[i]), ey = static_cast<float>(hey[i]), ez = static_cast<float>(hez[i]);
+    const float e1 = (ax0 * ax0 + ay0 * ay0 + az0 * az0) - 1.0f;
+    const float e2 = (bx0 * bx0 + by0 * by0 + bz0 * bz0) - 1.0f;
+    const float e3 = (hx0 * hx0 + hy0 * hy0 + hz0 * hz0) - 1.0f;
+    const float d_he = ex * ex + ey * ey + ez * ez;
+    ok = std::fabs(e1) <= kNearUnitF ? ok : 0.0f;  // NaN: not taken
+    ok = std::fabs(e2) <= kNearUnitF ? ok : 0.0f;
+    ok = std::fabs(e3) <= kNearUnitF ? ok : 0.0f;
+    ok = d_he >= kHeLo ? ok : 0.0f;
+    ok = d_he <= kHeHi ? ok : 0.0f;
+    const float r1 = 1.0f + e1 * (-0.5f + 0.375f * e1);
+    const float r2 = 1.0f + e2 * (-0.5f + 0.375f * e2);
+    const float rh = 1.0f + e3 * (-0.5f + 0.375f * e3);
+    const float ax = ax0 * r1, ay = ay0 * r1, az = az0 * r1;
+    const float bx = bx0 * r2, by = by0 * r2, bz = bz0 * r2;
+    const float hx = hx0 * rh, hy = hy0 * rh, hz = hz0 * rh;
+    // 1. G = (1 + c) R He, as setup_block_double.
+    const float sx = ax + bx, sy = ay + by, sz = az + bz;
+    const float opc = 0.5f * (sx * sx + sy * sy + sz * sz);
+    const float vx = ay * sz - az * sy, vy = az * sx - ax * sz, vz = ax * sy - ay * sx;
+    const float wx = vy * ez - vz * ey, wy = vz * ex - vx * ez, wz = vx * ey - vy * ex;
+    const float kx = opc * (ex - wx) + (vy * wz - vz * wy);
+    const float ky = opc * (ey - wy) + (vz * wx - vx * wz);
+    const float kz = opc * (ez - wz) + (vx * wy - vy * wx);
+    // 2. c = H1 x G.
+    const float cx = hy * kz - hz * ky, cy = hz * kx - hx * kz, cz = hx * ky - hy * kx;
+    const float k2 = kx * kx + ky * ky + kz * kz;
+    const float c2 = cx * cx + cy * cy + cz * cz;
+    const float cosr = hx * kx + hy * ky + hz * kz;
+    ok = opc >= kOpcMin ? ok : 0.0f;
+    ok = (cosr < 0.0f) & (c2 <= kHsMin * k2) ? 0.0f : ok;
+    // Flat spans (N1 = N2 and H1 = He exactly): gamma = 0 and N1.u = 0, as the double kernel's
+    // noise floor gives. Any other gamma too small for float to find u (sin gamma < 2^-12)
+    // keeps the double geometry.
+    const bool noise = flat != 0.0f;
+    ok = noise || c2 >= kGammaMin * k2 ? ok : 0.0f;
+    // 3. t = (c x H1).N1; cos t1; sin^2 t1 = |N1 x H1|^2, accurate near t1 = 0 in float.
+    const float ux = cy * hz - cz * hy, uy = cz * hx - cx * hz, uz = cx * hy - cy * hx;
+    const float mx = ay * hz - az * hy, my = az * hx - ax * hz, mz = ax * hy - ay * hx;
+    b_c2[i] = c2;
+    b_cosr[i] = cosr;
+    b_t[i] = noise ? 0.0f : ux * ax + uy * ay + uz * az;
+    b_cos[i] = ax * hx + ay * hy + az * hz;
+    b_sin2[i] = mx * mx + my * my + mz * mz;
+    b_noise[i] = noise ? 1.0f : 0.0f;
+    b_nc[i] = kx * mx + ky * my + kz * mz;  // G.(N1 x H1) = N1.(H1 x G) = N1.c
+    b_direct[i] = c2 >= kDirectMin * k2 ? 1.0f : 0.0f;
+    take[i] = ok;
+    takes += ok;
+  }
+  single_tail<float, true>(b_c2, b_cosr, b_t, b_cos, b_sin2, b_noise, nexp, scale, len, count, kf, o, b_nc, b_direct);
+  const int n_take = static_cast<int>(takes);
+  if (n_take == count) return;
+  // The others through setup_block_double, gathered, and their results scattered.
+  alignas(64) int idx[kBlock];
+  int ng = 0;  // branch-free list
+  for (int i = 0; i < count; ++i) {
+    idx[ng] = i;
+    ng += take[i] > 0.0f ? 0 : 1;
+  }
+  alignas(64) double g[14][kBlock];
+  alignas(64) int32_t gl[kBlock];
+  gather_inputs(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, idx, ng, g, gl);
+  alignas(64) double tc[kBlock], tp[kBlock], td[kBlock], tn[kBlock], tfl[kBlock], tsp[kBlock];
+  const BlockOut t{tc, tp, td, tn, tfl, tsp};
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
+  setup_block_double(g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7], g[8], g[9], g[10], g[11], g[12], g[13], gl, ng,
+                     kf, t);
 #pragma GCC diagnostic pop
   for (int j = 0; j < ng; ++j) {
     const int i = idx[j];
