@@ -136,6 +136,21 @@ size_t run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& o
   alignas(64) int idx_other[kBlock];
   const bool narrow = f.angle_bits <= 32;  // codes fit int32: a vector conversion
   size_t specials = 0;
+  // Whether the kernel tries its float geometry (docs/scanline_setup.md#single-precision-geometry):
+  // after a block where it took less than 3/4 of the spans the next blocks go straight to the
+  // double geometry (the float pass would be wasted on the others), and every kProbe-th
+  // block tries again. Both paths meet the same contract; this only saves time.
+  constexpr int kProbe = 8;
+  bool try_float = true;
+  int since_probe = 0;
+  auto run_kernel = [&](const double* a0, const double* a1, const double* a2, const double* a3, const double* a4,
+                        const double* a5, const double* a6, const double* a7, const double* a8, const double* a9,
+                        const double* a10, const double* a11, const double* a12, const double* a13, const int32_t* al,
+                        int cnt) {
+    const bool t = try_float || ++since_probe >= kProbe;
+    const int took = kernel(a0, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10, a11, a12, a13, al, cnt, kf, o, t);
+    if (took >= 0) try_float = took * 4 >= cnt * 3, since_probe = 0;
+  };
   for (size_t b = 0; b < in.size(); b += kBlock) {
     const int count = static_cast<int>(std::min<size_t>(kBlock, in.size() - b));
     const double *n1x = &in.n1x[b], *n1y = &in.n1y[b], *n1z = &in.n1z[b], *n2x = &in.n2x[b], *n2y = &in.n2y[b],
@@ -155,7 +170,7 @@ size_t run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& o
       flats += t;
     }
     if (flats * kFlatDen < count * kFlatNum) {
-      kernel(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, count, kf, o);
+      run_kernel(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, count);
       specials += static_cast<size_t>(store_block(in, out, b, nullptr, count, o, narrow));
       continue;
     }
@@ -176,7 +191,7 @@ size_t run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& o
         g[6][j] = h1x[i], g[7][j] = h1y[i], g[8][j] = h1z[i], g[9][j] = hex[i], g[10][j] = hey[i], g[11][j] = hez[i];
         g[12][j] = nexp[i], g[13][j] = scale[i], gl[j] = len[i];
       }
-      kernel(g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7], g[8], g[9], g[10], g[11], g[12], g[13], gl, ng, kf, o);
+      run_kernel(g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7], g[8], g[9], g[10], g[11], g[12], g[13], gl, ng);
       store_block(in, out, b, idx_other, ng, o, narrow);
     }
     const uint8_t* st = &out.status[b];

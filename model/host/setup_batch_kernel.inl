@@ -511,15 +511,18 @@ inline void gather_inputs(const double* n1x, const double* n1y, const double* n1
 // scalar setup (opposite normals, opposite halfway vectors), vectors far from unit length,
 // anything invalid -- are gathered for setup_block_double, which decides them exactly as
 // before, and their results scattered over the float ones.
-inline void setup_block(const double* __restrict n1x, const double* __restrict n1y, const double* __restrict n1z,
-                        const double* __restrict n2x, const double* __restrict n2y, const double* __restrict n2z,
-                        const double* __restrict h1x, const double* __restrict h1y, const double* __restrict h1z,
-                        const double* __restrict hex, const double* __restrict hey, const double* __restrict hez,
-                        const double* __restrict nexp, const double* __restrict scale, const int32_t* __restrict len,
-                        int count, const KernelFormat& kf, const BlockOut& o) {
-  if (!kf.single) {
+// `try_float` false: setup_block_double for every span (the driver's choice where the float
+// geometry took too few spans of the previous block). Returns how many spans the float
+// geometry took (-1 when it was not tried).
+inline int setup_block(const double* __restrict n1x, const double* __restrict n1y, const double* __restrict n1z,
+                       const double* __restrict n2x, const double* __restrict n2y, const double* __restrict n2z,
+                       const double* __restrict h1x, const double* __restrict h1y, const double* __restrict h1z,
+                       const double* __restrict hex, const double* __restrict hey, const double* __restrict hez,
+                       const double* __restrict nexp, const double* __restrict scale, const int32_t* __restrict len,
+                       int count, const KernelFormat& kf, const BlockOut& o, bool try_float = true) {
+  if (!kf.single || !try_float) {
     setup_block_double(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, count, kf, o);
-    return;
+    return -1;
   }
   // The float geometry's margins (docs/scanline_setup.md#single-precision-geometry).
   constexpr float kNearUnitF = 0x1p-12f;        // |  |v|^2 - 1 | of N1, N2, H1
@@ -537,7 +540,7 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
   const double max_scale = std::min(0x1p20, (kf.c_top - 8.0) / kf.c_scale);
   alignas(64) float b_c2[kBlock], b_cosr[kBlock], b_t[kBlock], b_cos[kBlock], b_sin2[kBlock], b_noise[kBlock];
   alignas(64) float take[kBlock], b_nc[kBlock], b_direct[kBlock];
-  float takes = 0.0f;
+  int32_t takes = 0;  // an integer count: a float sum would be a serial chain of scalar adds
 #pragma GCC ivdep
   for (int i = 0; i < count; ++i) {
     // Range checks on the double inputs (exact: n and l must be the scalar setup's), as a
@@ -608,11 +611,11 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
     b_nc[i] = kx * mx + ky * my + kz * mz;  // G.(N1 x H1) = N1.(H1 x G) = N1.c
     b_direct[i] = c2 >= kDirectMin * k2 ? 1.0f : 0.0f;
     take[i] = ok;
-    takes += ok;
+    takes += ok > 0.0f ? 1 : 0;
   }
   single_tail<float, true>(b_c2, b_cosr, b_t, b_cos, b_sin2, b_noise, nexp, scale, len, count, kf, o, b_nc, b_direct);
-  const int n_take = static_cast<int>(takes);
-  if (n_take == count) return;
+  const int n_take = takes;
+  if (n_take == count) return n_take;
   // The others through setup_block_double, gathered, and their results scattered.
   alignas(64) int idx[kBlock];
   int ng = 0;  // branch-free list
@@ -634,6 +637,7 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
     const int i = idx[j];
     o.c[i] = tc[j], o.psi0[i] = tp[j], o.dpsi[i] = td[j], o.n[i] = tn[j], o.flags[i] = tfl[j], o.special[i] = tsp[j];
   }
+  return n_take;
 }
 
 // Flat spans: N1 = N2 and H1 = He exactly (every one-pixel span of a rasterizer, and flat
