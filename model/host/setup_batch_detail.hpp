@@ -56,6 +56,17 @@ struct BlockOut {
   double* special;  // 1: not done by the kernel
 };
 
+// The register arrays of a block, for kernels that write them directly.
+struct RegOut {
+  uint32_t* c;
+  int64_t* psi0;
+  int64_t* dpsi;
+  uint32_t* n;
+  uint32_t* len;
+  uint8_t* status;
+  uint8_t* flags;
+};
+
 // Status the block driver writes for spans the kernel leaves to the scalar setup.
 inline constexpr uint8_t kSpecialStatus = 0xff;
 
@@ -121,8 +132,9 @@ inline int store_block(const SpanBatch& in, RegisterBatch& out, size_t base, con
 // `flat` takes every span and `kernel` the others, gathered; otherwise `kernel` takes the
 // whole block in place. Returns how many spans were left to the scalar setup
 // (status kSpecialStatus).
-template <class Kernel, class Flat>
-size_t run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& out, Kernel kernel, Flat flat) {
+template <class Kernel, class Flat, class KernelRegs, class FlatRegs>
+size_t run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& out, Kernel kernel, Flat flat,
+                  KernelRegs kernel_regs, FlatRegs flat_regs) {
   // Measured on the repository scenes: the gathering costs more than the flat kernel saves
   // unless most of the block is flat (dense_mesh: 96 % of its spans; bunny 55 %, spheres 36 %).
   constexpr int kFlatNum = 3, kFlatDen = 4;
@@ -136,21 +148,6 @@ size_t run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& o
   alignas(64) int idx_other[kBlock];
   const bool narrow = f.angle_bits <= 32;  // codes fit int32: a vector conversion
   size_t specials = 0;
-  // Whether the kernel tries its float geometry (docs/scanline_setup.md#single-precision-geometry):
-  // after a block where it took less than 3/4 of the spans the next blocks go straight to the
-  // double geometry (the float pass would be wasted on the others), and every kProbe-th
-  // block tries again. Both paths meet the same contract; this only saves time.
-  constexpr int kProbe = 8;
-  bool try_float = true;
-  int since_probe = 0;
-  auto run_kernel = [&](const double* a0, const double* a1, const double* a2, const double* a3, const double* a4,
-                        const double* a5, const double* a6, const double* a7, const double* a8, const double* a9,
-                        const double* a10, const double* a11, const double* a12, const double* a13, const int32_t* al,
-                        int cnt) {
-    const bool t = try_float || ++since_probe >= kProbe;
-    const int took = kernel(a0, a1, a2, a3, a4, a5, a6, a7, a8, a9, a10, a11, a12, a13, al, cnt, kf, o, t);
-    if (took >= 0) try_float = took * 4 >= cnt * 3, since_probe = 0;
-  };
   for (size_t b = 0; b < in.size(); b += kBlock) {
     const int count = static_cast<int>(std::min<size_t>(kBlock, in.size() - b));
     const double *n1x = &in.n1x[b], *n1y = &in.n1y[b], *n1z = &in.n1z[b], *n2x = &in.n2x[b], *n2y = &in.n2y[b],
@@ -169,16 +166,29 @@ size_t run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& o
       is_flat[i] = t;
       flats += t;
     }
+    const bool direct = narrow && kf.single;  // the kernels write the register arrays themselves
+    const RegOut r{&out.c[b], &out.psi0[b], &out.dpsi[b], &out.n[b], &out.len[b], &out.status[b], &out.flags[b]};
     if (flats * kFlatDen < count * kFlatNum) {
-      run_kernel(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, count);
-      specials += static_cast<size_t>(store_block(in, out, b, nullptr, count, o, narrow));
+      if (direct) {
+        kernel_regs(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, count, kf, r);
+        int block_specials = 0;
+        for (int i = 0; i < count; ++i) block_specials += r.status[i] == kSpecialStatus ? 1 : 0;
+        specials += static_cast<size_t>(block_specials);
+      } else {
+        kernel(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, count, kf, o);
+        specials += static_cast<size_t>(store_block(in, out, b, nullptr, count, o, narrow));
+      }
       continue;
     }
     // Mostly flat: the flat kernel takes the whole block in place (for the other spans it
     // computes values that are overwritten below), then the other spans are gathered for the
     // general kernel and their results scattered over those.
-    flat(n1x, n1y, n1z, h1x, h1y, h1z, nexp, scale, len, count, kf, o);
-    store_block(in, out, b, nullptr, count, o, narrow);
+    if (direct) {
+      flat_regs(n1x, n1y, n1z, h1x, h1y, h1z, nexp, scale, len, count, kf, r);
+    } else {
+      flat(n1x, n1y, n1z, h1x, h1y, h1z, nexp, scale, len, count, kf, o);
+      store_block(in, out, b, nullptr, count, o, narrow);
+    }
     int ng = 0;  // branch-free list of the other spans
     for (int i = 0; i < count; ++i) {
       idx_other[ng] = i;
@@ -191,7 +201,7 @@ size_t run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& o
         g[6][j] = h1x[i], g[7][j] = h1y[i], g[8][j] = h1z[i], g[9][j] = hex[i], g[10][j] = hey[i], g[11][j] = hez[i];
         g[12][j] = nexp[i], g[13][j] = scale[i], gl[j] = len[i];
       }
-      run_kernel(g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7], g[8], g[9], g[10], g[11], g[12], g[13], gl, ng);
+      kernel(g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7], g[8], g[9], g[10], g[11], g[12], g[13], gl, ng, kf, o);
       store_block(in, out, b, idx_other, ng, o, narrow);
     }
     const uint8_t* st = &out.status[b];

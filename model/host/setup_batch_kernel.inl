@@ -184,16 +184,18 @@ inline float round_away_f(float x) {
 // noise floor), n, scale, l. `special` = 1 where C lies within the float error
 // of the saturation boundary: the scalar setup decides those, so the flag is the scalar's.
 // Spans the caller does not take from here may hold anything (their results are ignored).
-// T: double (from setup_block_double's double geometry) or float (from setup_block's float
-// geometry).
-// kDirectS (the float geometry): where b_direct is 1, s = 1 - A^2 = (N1.c)^2 / |c|^2 from
-// b_nc = N1.c instead of sin^2 t1 - (N1.u)^2 (docs/scanline_setup.md#single-precision-geometry).
-template <class T, bool kDirectS = false>
-inline void single_tail(const T* __restrict b_c2, const T* __restrict b_cosr,
-                        const T* __restrict b_t, const T* __restrict b_cos, const T* __restrict b_sin2,
-                        const T* __restrict b_noise, const double* __restrict nexp,
+// kRegs: the register arrays `r` are written directly (the narrow single-precision format,
+// angle codes in int32), instead of the block's double arrays `o`.
+template <bool kRegs = false>
+inline void single_tail(const double* __restrict b_c2, const double* __restrict b_cosr,
+                        const double* __restrict b_t, const double* __restrict b_cos, const double* __restrict b_sin2,
+                        const double* __restrict b_noise, const double* __restrict nexp,
                         const double* __restrict scale, const int32_t* __restrict len, int count, const KernelFormat& kf,
-                        const BlockOut& o, const T* __restrict b_nc = nullptr, const T* __restrict b_direct = nullptr) {
+                        const BlockOut& o, const detail::RegOut* r = nullptr) {
+  alignas(64) int32_t psi[kBlock], dps[kBlock], fl_st[kBlock];  // kRegs: fl_st = flags | status << 8
+  uint32_t* __restrict reg_c = kRegs ? r->c : nullptr;
+  uint32_t* __restrict reg_n = kRegs ? r->n : nullptr;
+  uint32_t* __restrict reg_len = kRegs ? r->len : nullptr;
   double* __restrict oc = o.c;
   double* __restrict op = o.psi0;
   double* __restrict od = o.dpsi;
@@ -228,11 +230,7 @@ inline void single_tail(const T* __restrict b_c2, const T* __restrict b_cosr,
     const float lambda = atan2_f(qu, cs, 1.0f / ml);
     // A^2 = cos^2 t1 + (N1.u)^2 = 1 - s with s = sin^2 t1 - (N1.u)^2: sin^2 t1 from double,
     // and (N1.u)^2 <= sin^2 t1 so that its float error is small where s is (A near 1).
-    float s = sin2 - qu * qu;
-    if constexpr (kDirectS) {
-      const float nc = static_cast<float>(b_nc[i]) * rs;
-      s = b_direct[i] != T(0) ? nc * nc : s;
-    }
+    const float s = sin2 - qu * qu;
     const float a2 = cs * cs + qu * qu;
     const float lg = log2_f(a2 > 0x1p-100f ? a2 : 0x1p-100f, s);
     const float x = 0.5f * nn * lg;
@@ -240,13 +238,54 @@ inline void single_tail(const T* __restrict b_c2, const T* __restrict b_cosr,
     float cq = round_away_f(v);
     const float c_flag = cq <= c_top ? 0.0f : 1.0f;
     cq = cq <= c_top ? cq : c_top;
-    // Written as doubles (the driver's block format), converted here in the float loop.
-    osp[i] = static_cast<double>(std::fabs(v - (c_top + 0.5f)) <= 1e-4f * v + 1.0f ? 1.0f : 0.0f);
-    oc[i] = static_cast<double>(cq);
-    op[i] = static_cast<double>(round_away_f(-lambda * angle_scale) + 0.0f);
-    od[i] = static_cast<double>(l > 0.0f ? round_away_f(gamma * angle_scale * rl) : 0.0f);
-    on[i] = static_cast<double>(round_away_f(nn));
-    ofl[i] = static_cast<double>(c_flag);
+    const float sp = std::fabs(v - (c_top + 0.5f)) <= 1e-4f * v + 1.0f ? 1.0f : 0.0f;
+    const float pq = round_away_f(-lambda * angle_scale) + 0.0f;
+    const float dq = l > 0.0f ? round_away_f(gamma * angle_scale * rl) : 0.0f;
+    if constexpr (kRegs) {
+      reg_c[i] = static_cast<uint32_t>(static_cast<int32_t>(cq));
+      reg_n[i] = static_cast<uint32_t>(static_cast<int32_t>(round_away_f(nn)));
+      reg_len[i] = static_cast<uint32_t>(len[i]);
+      psi[i] = static_cast<int32_t>(pq);
+      dps[i] = static_cast<int32_t>(dq);
+      fl_st[i] = static_cast<int32_t>(c_flag + sp * (256.0f * detail::kSpecialStatus));
+    } else {
+      // Written as doubles (the driver's block format), converted here in the float loop.
+      osp[i] = static_cast<double>(sp);
+      oc[i] = static_cast<double>(cq);
+      op[i] = static_cast<double>(pq);
+      od[i] = static_cast<double>(dq);
+      on[i] = static_cast<double>(round_away_f(nn));
+      ofl[i] = static_cast<double>(c_flag);
+    }
+  }
+  if constexpr (kRegs) {
+    // The 64-bit and 8-bit arrays in loops of their own (mixed with the floats above they stop
+    // the vectorizer).
+    int64_t* __restrict reg_p = r->psi0;
+    int64_t* __restrict reg_d = r->dpsi;
+    uint8_t* __restrict reg_f = r->flags;
+    uint8_t* __restrict reg_s = r->status;
+#pragma GCC ivdep
+    for (int i = 0; i < count; ++i) reg_p[i] = psi[i], reg_d[i] = dps[i];
+#pragma GCC ivdep
+    for (int i = 0; i < count; ++i) {
+      reg_f[i] = static_cast<uint8_t>(fl_st[i] & 0xff);
+      reg_s[i] = static_cast<uint8_t>(fl_st[i] >> 8);
+    }
+  }
+}
+
+// Block results (entry j) to the register arrays: span idx[j], or j when idx is null.
+inline void block_to_regs(const BlockOut& t, const int* idx, int n, const int32_t* len, const detail::RegOut& r) {
+  for (int j = 0; j < n; ++j) {
+    const int i = idx ? idx[j] : j;
+    r.psi0[i] = static_cast<int64_t>(t.psi0[j]);
+    r.dpsi[i] = static_cast<int64_t>(t.dpsi[j]);
+    r.c[i] = static_cast<uint32_t>(static_cast<int32_t>(t.c[j]));
+    r.n[i] = static_cast<uint32_t>(static_cast<int32_t>(t.n[j]));
+    r.len[i] = static_cast<uint32_t>(len[i]);
+    r.flags[i] = static_cast<uint8_t>(static_cast<int32_t>(t.flags[j]));
+    r.status[i] = t.special[j] != 0.0 ? detail::kSpecialStatus : static_cast<uint8_t>(SetupStatus::ok);
   }
 }
 
@@ -317,13 +356,17 @@ inline void double_tail(const double* __restrict b_ord, const double* __restrict
   }
 }
 
-// Spans [0, count) of the arrays (count <= the block size of the caller), geometry in double.
-inline void setup_block_double(const double* __restrict n1x, const double* __restrict n1y, const double* __restrict n1z,
-                        const double* __restrict n2x, const double* __restrict n2y, const double* __restrict n2z,
-                        const double* __restrict h1x, const double* __restrict h1y, const double* __restrict h1z,
-                        const double* __restrict hex, const double* __restrict hey, const double* __restrict hez,
-                        const double* __restrict nexp, const double* __restrict scale, const int32_t* __restrict len,
-                        int count, const KernelFormat& kf, const BlockOut& o) {
+// Spans [0, count) of the arrays (count <= the block size of the caller). kRegs: the results
+// go to the register arrays `r` (single_tail's direct path, the driver's narrow
+// single-precision format), `o` serving as scratch.
+template <bool kRegs>
+inline void setup_block_impl(const double* __restrict n1x, const double* __restrict n1y, const double* __restrict n1z,
+                             const double* __restrict n2x, const double* __restrict n2y, const double* __restrict n2z,
+                             const double* __restrict h1x, const double* __restrict h1y, const double* __restrict h1z,
+                             const double* __restrict hex, const double* __restrict hey, const double* __restrict hez,
+                             const double* __restrict nexp, const double* __restrict scale,
+                             const int32_t* __restrict len, int count, const KernelFormat& kf, const BlockOut& o,
+                             const detail::RegOut* r) {
   // Below the scalar setup's noise floor of the chord |H2 - H1| (16 ulp) gamma is 0.
   constexpr double kChordNoise = 16.0 * 2.220446049250313e-16;
   // Vectors whose squared length lies outside this range go to the scalar setup (it tests
@@ -457,9 +500,10 @@ inline void setup_block_double(const double* __restrict n1x, const double* __res
   const int n_single = static_cast<int>(singles);
   if (n_single == 0) {
     double_tail(b_ord, b_c2, b_cosr, b_t, b_cos, b_noise, nexp, scale, len, count, kf, o);
+    if constexpr (kRegs) block_to_regs(o, nullptr, count, len, *r);
     return;
   }
-  single_tail(b_c2, b_cosr, b_t, b_cos, b_sin2, b_noise, nexp, scale, len, count, kf, o);
+  single_tail<kRegs>(b_c2, b_cosr, b_t, b_cos, b_sin2, b_noise, nexp, scale, len, count, kf, o, r);
   if (n_single == count) return;
   // The others through the double tail, gathered, and their results scattered.
   alignas(64) int idx[kBlock];
@@ -483,161 +527,36 @@ inline void setup_block_double(const double* __restrict n1x, const double* __res
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
   double_tail(g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7], gl, ng, kf, t);
 #pragma GCC diagnostic pop
-  for (int j = 0; j < ng; ++j) {
-    const int i = idx[j];
-    o.c[i] = tc[j], o.psi0[i] = tp[j], o.dpsi[i] = td[j], o.n[i] = tn[j], o.flags[i] = tfl[j], o.special[i] = tsp[j];
+  if constexpr (kRegs) {
+    block_to_regs(t, idx, ng, len, *r);
+  } else {
+    for (int j = 0; j < ng; ++j) {
+      const int i = idx[j];
+      o.c[i] = tc[j], o.psi0[i] = tp[j], o.dpsi[i] = td[j], o.n[i] = tn[j], o.flags[i] = tfl[j], o.special[i] = tsp[j];
+    }
   }
 }
 
-// Copies the inputs of spans idx[0..ng) into the block arrays g[0..13] (n1, n2, h1, he, n,
-// scale) and gl (l).
-inline void gather_inputs(const double* n1x, const double* n1y, const double* n1z, const double* n2x,
-                          const double* n2y, const double* n2z, const double* h1x, const double* h1y,
-                          const double* h1z, const double* hex, const double* hey, const double* hez,
-                          const double* nexp, const double* scale, const int32_t* len, const int* idx, int ng,
-                          double (&g)[14][kBlock], int32_t* gl) {
-  for (int j = 0; j < ng; ++j) {
-    const int i = idx[j];
-    g[0][j] = n1x[i], g[1][j] = n1y[i], g[2][j] = n1z[i], g[3][j] = n2x[i], g[4][j] = n2y[i], g[5][j] = n2z[i];
-    g[6][j] = h1x[i], g[7][j] = h1y[i], g[8][j] = h1z[i], g[9][j] = hex[i], g[10][j] = hey[i], g[11][j] = hez[i];
-    g[12][j] = nexp[i], g[13][j] = scale[i], gl[j] = len[i];
-  }
+inline void setup_block(const double* n1x, const double* n1y, const double* n1z, const double* n2x,
+                        const double* n2y, const double* n2z, const double* h1x, const double* h1y,
+                        const double* h1z, const double* hex, const double* hey, const double* hez,
+                        const double* nexp, const double* scale, const int32_t* len, int count,
+                        const KernelFormat& kf, const BlockOut& o) {
+  setup_block_impl<false>(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, count, kf, o,
+                          nullptr);
 }
 
-// Spans [0, count) of the arrays (count <= the block size of the caller). Short spans far
-// from every status threshold take the geometry in float too, and then single_tail
-// (docs/scanline_setup.md#single-precision-geometry): twice the spans per instruction of
-// setup_block_double's stage 1. The others -- long spans, spans near a threshold of the
-// scalar setup (opposite normals, opposite halfway vectors), vectors far from unit length,
-// anything invalid -- are gathered for setup_block_double, which decides them exactly as
-// before, and their results scattered over the float ones.
-// `try_float` false: setup_block_double for every span (the driver's choice where the float
-// geometry took too few spans of the previous block). Returns how many spans the float
-// geometry took (-1 when it was not tried).
-inline int setup_block(const double* __restrict n1x, const double* __restrict n1y, const double* __restrict n1z,
-                       const double* __restrict n2x, const double* __restrict n2y, const double* __restrict n2z,
-                       const double* __restrict h1x, const double* __restrict h1y, const double* __restrict h1z,
-                       const double* __restrict hex, const double* __restrict hey, const double* __restrict hez,
-                       const double* __restrict nexp, const double* __restrict scale, const int32_t* __restrict len,
-                       int count, const KernelFormat& kf, const BlockOut& o, bool try_float = true) {
-  if (!kf.single || !try_float) {
-    setup_block_double(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, count, kf, o);
-    return -1;
-  }
-  // The float geometry's margins (docs/scanline_setup.md#single-precision-geometry).
-  constexpr float kNearUnitF = 0x1p-12f;        // |  |v|^2 - 1 | of N1, N2, H1
-  constexpr float kHeLo = 0x1p-20f, kHeHi = 0x1p20f;  // |He|^2
-  constexpr float kOpcMin = 0x1p-8f;             // 1 + N1.N2: far from opposite normals
-  constexpr float kHsMin = 0x1p-16f;             // sin^2 gamma where cos gamma < 0: far from H2 = -H1
-  constexpr float kDirectMin = 0x1p-6f;         // sin^2 gamma: s from N1.c (u well determined)
-  constexpr float kGammaMin = 0x1p-24f;          // sin^2 gamma: u well determined in float
-  const double max_len = static_cast<double>(kSingleMaxLen < kf.max_len ? kSingleMaxLen : kf.max_len);
-  // C = scale A^n with A <= 1 stays 8 codes below the top of register 1 (and so outside
-  // single_tail's band around it): where C saturates, the split of the pixel between C and
-  // psi0 no longer makes pixel 0 independent of how well the float geometry finds u (and
-  // whether it saturates depends on A, ill-conditioned for tiny gamma), so such spans keep
-  // the double geometry.
-  const double max_scale = std::min(0x1p20, (kf.c_top - 8.0) / kf.c_scale);
-  alignas(64) float b_c2[kBlock], b_cosr[kBlock], b_t[kBlock], b_cos[kBlock], b_sin2[kBlock], b_noise[kBlock];
-  alignas(64) float take[kBlock], b_nc[kBlock], b_direct[kBlock];
-  int32_t takes = 0;  // an integer count: a float sum would be a serial chain of scalar adds
-#pragma GCC ivdep
-  for (int i = 0; i < count; ++i) {
-    // Range checks on the double inputs (exact: n and l must be the scalar setup's), as a
-    // double 1/0 converted to float below (mixed-width masks stop the vectorizer).
-    const double nd = nexp[i], sd = scale[i], ld = static_cast<double>(len[i]);
-    double okd = nd >= 1.0 ? 1.0 : 0.0;
-    okd = nd <= kMaxN ? okd : 0.0;
-    okd = ld >= 0.0 ? okd : 0.0;
-    okd = ld <= max_len ? okd : 0.0;
-    okd = sd >= 0.0 ? okd : 0.0;
-    okd = sd <= max_scale ? okd : 0.0;  // also false for NaN
-    float ok = static_cast<float>(okd);
-    double fd = n1x[i] == n2x[i] ? 1.0 : 0.0;
-    fd = n1y[i] == n2y[i] ? fd : 0.0;
-    fd = n1z[i] == n2z[i] ? fd : 0.0;
-    fd = h1x[i] == hex[i] ? fd : 0.0;
-    fd = h1y[i] == hey[i] ? fd : 0.0;
-    fd = h1z[i] == hez[i] ? fd : 0.0;
-    const float flat = static_cast<float>(fd);
-    const float ax0 = static_cast<float>(n1x[i]), ay0 = static_cast<float>(n1y[i]), az0 = static_cast<float>(n1z[i]);
-    const float bx0 = static_cast<float>(n2x[i]), by0 = static_cast<float>(n2y[i]), bz0 = static_cast<float>(n2z[i]);
-    const float hx0 = static_cast<float>(h1x[i]), hy0 = static_cast<float>(h1y[i]), hz0 = static_cast<float>(h1z[i]);
-    const float ex = static_cast<float>(hex[i]), ey = static_cast<float>(hey[i]), ez = static_cast<float>(hez[i]);
-    const float e1 = (ax0 * ax0 + ay0 * ay0 + az0 * az0) - 1.0f;
-    const float e2 = (bx0 * bx0 + by0 * by0 + bz0 * bz0) - 1.0f;
-    const float e3 = (hx0 * hx0 + hy0 * hy0 + hz0 * hz0) - 1.0f;
-    const float d_he = ex * ex + ey * ey + ez * ez;
-    ok = std::fabs(e1) <= kNearUnitF ? ok : 0.0f;  // NaN: not taken
-    ok = std::fabs(e2) <= kNearUnitF ? ok : 0.0f;
-    ok = std::fabs(e3) <= kNearUnitF ? ok : 0.0f;
-    ok = d_he >= kHeLo ? ok : 0.0f;
-    ok = d_he <= kHeHi ? ok : 0.0f;
-    const float r1 = 1.0f + e1 * (-0.5f + 0.375f * e1);
-    const float r2 = 1.0f + e2 * (-0.5f + 0.375f * e2);
-    const float rh = 1.0f + e3 * (-0.5f + 0.375f * e3);
-    const float ax = ax0 * r1, ay = ay0 * r1, az = az0 * r1;
-    const float bx = bx0 * r2, by = by0 * r2, bz = bz0 * r2;
-    const float hx = hx0 * rh, hy = hy0 * rh, hz = hz0 * rh;
-    // 1. G = (1 + c) R He, as setup_block_double.
-    const float sx = ax + bx, sy = ay + by, sz = az + bz;
-    const float opc = 0.5f * (sx * sx + sy * sy + sz * sz);
-    const float vx = ay * sz - az * sy, vy = az * sx - ax * sz, vz = ax * sy - ay * sx;
-    const float wx = vy * ez - vz * ey, wy = vz * ex - vx * ez, wz = vx * ey - vy * ex;
-    const float kx = opc * (ex - wx) + (vy * wz - vz * wy);
-    const float ky = opc * (ey - wy) + (vz * wx - vx * wz);
-    const float kz = opc * (ez - wz) + (vx * wy - vy * wx);
-    // 2. c = H1 x G.
-    const float cx = hy * kz - hz * ky, cy = hz * kx - hx * kz, cz = hx * ky - hy * kx;
-    const float k2 = kx * kx + ky * ky + kz * kz;
-    const float c2 = cx * cx + cy * cy + cz * cz;
-    const float cosr = hx * kx + hy * ky + hz * kz;
-    ok = opc >= kOpcMin ? ok : 0.0f;
-    ok = (cosr < 0.0f) & (c2 <= kHsMin * k2) ? 0.0f : ok;
-    // Flat spans (N1 = N2 and H1 = He exactly): gamma = 0 and N1.u = 0, as the double kernel's
-    // noise floor gives. Any other gamma too small for float to find u (sin gamma < 2^-12)
-    // keeps the double geometry.
-    const bool noise = flat != 0.0f;
-    ok = noise || c2 >= kGammaMin * k2 ? ok : 0.0f;
-    // 3. t = (c x H1).N1; cos t1; sin^2 t1 = |N1 x H1|^2, accurate near t1 = 0 in float.
-    const float ux = cy * hz - cz * hy, uy = cz * hx - cx * hz, uz = cx * hy - cy * hx;
-    const float mx = ay * hz - az * hy, my = az * hx - ax * hz, mz = ax * hy - ay * hx;
-    b_c2[i] = c2;
-    b_cosr[i] = cosr;
-    b_t[i] = noise ? 0.0f : ux * ax + uy * ay + uz * az;
-    b_cos[i] = ax * hx + ay * hy + az * hz;
-    b_sin2[i] = mx * mx + my * my + mz * mz;
-    b_noise[i] = noise ? 1.0f : 0.0f;
-    b_nc[i] = kx * mx + ky * my + kz * mz;  // G.(N1 x H1) = N1.(H1 x G) = N1.c
-    b_direct[i] = c2 >= kDirectMin * k2 ? 1.0f : 0.0f;
-    take[i] = ok;
-    takes += ok > 0.0f ? 1 : 0;
-  }
-  single_tail<float, true>(b_c2, b_cosr, b_t, b_cos, b_sin2, b_noise, nexp, scale, len, count, kf, o, b_nc, b_direct);
-  const int n_take = takes;
-  if (n_take == count) return n_take;
-  // The others through setup_block_double, gathered, and their results scattered.
-  alignas(64) int idx[kBlock];
-  int ng = 0;  // branch-free list
-  for (int i = 0; i < count; ++i) {
-    idx[ng] = i;
-    ng += take[i] > 0.0f ? 0 : 1;
-  }
-  alignas(64) double g[14][kBlock];
-  alignas(64) int32_t gl[kBlock];
-  gather_inputs(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, idx, ng, g, gl);
-  alignas(64) double tc[kBlock], tp[kBlock], td[kBlock], tn[kBlock], tfl[kBlock], tsp[kBlock];
-  const BlockOut t{tc, tp, td, tn, tfl, tsp};
-#pragma GCC diagnostic push
-#pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
-  setup_block_double(g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7], g[8], g[9], g[10], g[11], g[12], g[13], gl, ng,
-                     kf, t);
-#pragma GCC diagnostic pop
-  for (int j = 0; j < ng; ++j) {
-    const int i = idx[j];
-    o.c[i] = tc[j], o.psi0[i] = tp[j], o.dpsi[i] = td[j], o.n[i] = tn[j], o.flags[i] = tfl[j], o.special[i] = tsp[j];
-  }
-  return n_take;
+// setup_block writing the register arrays of the block itself (the driver's narrow
+// single-precision format): saves the double block arrays and store_block's pass over them.
+inline void setup_block_regs(const double* n1x, const double* n1y, const double* n1z, const double* n2x,
+                             const double* n2y, const double* n2z, const double* h1x, const double* h1y,
+                             const double* h1z, const double* hex, const double* hey, const double* hez,
+                             const double* nexp, const double* scale, const int32_t* len, int count,
+                             const KernelFormat& kf, const detail::RegOut& r) {
+  alignas(64) double c[kBlock], psi0[kBlock], dpsi[kBlock], n[kBlock], flags[kBlock], special[kBlock];
+  const BlockOut o{c, psi0, dpsi, n, flags, special};
+  setup_block_impl<true>(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, count, kf, o,
+                         &r);
 }
 
 // Flat spans: N1 = N2 and H1 = He exactly (every one-pixel span of a rasterizer, and flat
@@ -762,6 +681,88 @@ inline void flat_block_single(const double* __restrict n1x, const double* __rest
     on[i] = take ? round_away(nexp[i]) : 0.0;
     ofl[i] = take ? c_flag + pflag : 0.0;
     osp[i] = 1.0 - ordinary;
+  }
+}
+
+// flat_block_single writing the register arrays itself (the driver's narrow single-precision
+// format: angle codes fit int32), which saves the double block arrays and store_block's pass
+// over them. Special spans get status kSpecialStatus; the driver counts them.
+inline void flat_block_regs(const double* __restrict n1x, const double* __restrict n1y,
+                            const double* __restrict n1z, const double* __restrict h1x,
+                            const double* __restrict h1y, const double* __restrict h1z,
+                            const double* __restrict nexp, const double* __restrict scale,
+                            const int32_t* __restrict len, int count, const KernelFormat& kf,
+                            const detail::RegOut& r) {
+  constexpr double kPi = 3.14159265358979323846;
+  const double max_len = kf.max_len;
+  const double pi_code = round_away(-kPi * kf.angle_scale);
+  // An int32 code (a float would round it: -pi 2^28 needs 30 bits).
+  const int64_t psi_neg = static_cast<int64_t>(pi_code < kf.angle_lo ? kf.angle_lo : pi_code);
+  const float psi_neg_flag = pi_code < kf.angle_lo ? 2.0f : 0.0f;
+  const float c_scale = static_cast<float>(kf.c_scale), c_top = static_cast<float>(kf.c_top);
+  alignas(64) double b_ord[kBlock], b_cos[kBlock], b_s[kBlock], b_neg[kBlock];
+#pragma GCC ivdep
+  for (int i = 0; i < count; ++i) {
+    const double nn = nexp[i], sc = scale[i], l = static_cast<double>(len[i]);
+    const double d_n1 = n1x[i] * n1x[i] + n1y[i] * n1y[i] + n1z[i] * n1z[i];
+    const double d_h1 = h1x[i] * h1x[i] + h1y[i] * h1y[i] + h1z[i] * h1z[i];
+    const double e1 = d_n1 - 1.0, e3 = d_h1 - 1.0;
+    double ordinary = std::fabs(e1) <= kNearUnitBound ? 1.0 : 0.0;  // NaN: not ordinary
+    ordinary = std::fabs(e3) <= kNearUnitBound ? ordinary : 0.0;
+    ordinary = nn >= 1.0 ? ordinary : 0.0;
+    ordinary = nn <= kMaxN ? ordinary : 0.0;
+    ordinary = l >= 0.0 ? ordinary : 0.0;
+    ordinary = l <= max_len ? ordinary : 0.0;
+    ordinary = sc >= 0.0 ? ordinary : 0.0;
+    ordinary = sc <= 0x1p20 ? ordinary : 0.0;  // also false for NaN
+    const double r1 = 1.0 + e1 * (-0.5 + 0.375 * e1), rh = 1.0 + e3 * (-0.5 + 0.375 * e3);
+    const double cos_t1 = (n1x[i] * h1x[i] + n1y[i] * h1y[i] + n1z[i] * h1z[i]) * (r1 * rh);
+    b_ord[i] = ordinary;
+    b_cos[i] = ordinary > 0.0 ? cos_t1 : 1.0;
+    b_s[i] = ordinary > 0.0 ? (1.0 - cos_t1) * (1.0 + cos_t1) : 0.0;
+    b_neg[i] = ordinary > 0.0 && cos_t1 < 0.0 ? 1.0 : 0.0;  // in double: a tiny negative is no float -0
+  }
+  uint32_t* __restrict oc = r.c;
+  uint32_t* __restrict on = r.n;
+  uint32_t* __restrict ol = r.len;
+  int64_t* __restrict op = r.psi0;
+  int64_t* __restrict od = r.dpsi;
+  uint8_t* __restrict ofl = r.flags;
+  uint8_t* __restrict ost = r.status;
+  alignas(64) int32_t fl_st[kBlock], psi[kBlock];  // fl_st: flags | status << 8
+#pragma GCC ivdep
+  for (int i = 0; i < count; ++i) {
+    const float cs = static_cast<float>(b_cos[i]), sf = static_cast<float>(b_s[i]);
+    const float nn = static_cast<float>(nexp[i]);
+    const float ord = static_cast<float>(b_ord[i]);
+    const float sc = ord > 0.0f ? static_cast<float>(scale[i]) : 0.0f;
+    const float a2 = cs * cs;
+    const float x = 0.5f * nn * log2_f(a2 > 0x1p-100f ? a2 : 0x1p-100f, sf);
+    const float v = sc * exp2_f(x > -100.0f ? x : -100.0f) * c_scale;
+    const float cq = round_away_f(v);
+    // Within the float error of the saturation boundary: the scalar setup decides.
+    const float near_top = std::fabs(v - (c_top + 0.5f)) <= 1e-4f * v + 1.0f ? 1.0f : 0.0f;
+    const bool take = (near_top > 0.0f ? 0.0f : ord) > 0.0f;
+    const float c_flag = cq <= c_top ? 0.0f : 1.0f;
+    const float negf = static_cast<float>(b_neg[i]);  // 1: cos t1 < 0
+    const float pflag = negf > 0.0f ? psi_neg_flag : 0.0f;
+    oc[i] = static_cast<uint32_t>(static_cast<int32_t>(take ? (cq <= c_top ? cq : c_top) : 0.0f));
+    on[i] = static_cast<uint32_t>(static_cast<int32_t>(take ? round_away_f(nn) : 0.0f));
+    ol[i] = static_cast<uint32_t>(len[i]);
+    psi[i] = static_cast<int32_t>(take ? negf : 0.0f);  // 1: psi0 = the code of -pi
+    fl_st[i] = static_cast<int32_t>(take ? c_flag + pflag : 256.0f * detail::kSpecialStatus);
+  }
+  // The 64-bit and 8-bit arrays in loops of their own (mixed with the floats above they stop
+  // the vectorizer).
+#pragma GCC ivdep
+  for (int i = 0; i < count; ++i) {
+    op[i] = psi[i] != 0 ? psi_neg : 0;
+    od[i] = 0;
+  }
+#pragma GCC ivdep
+  for (int i = 0; i < count; ++i) {
+    ofl[i] = static_cast<uint8_t>(fl_st[i] & 0xff);
+    ost[i] = static_cast<uint8_t>(fl_st[i] >> 8);
   }
 }
 
