@@ -97,7 +97,8 @@ void setup_scalar(const SpanBatch& in, const device::Format& f, RegisterBatch& o
 namespace detail {
 
 size_t setup_batch_baseline(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
-  return run_blocks(in, f, out, baseline_kernels::setup_block, baseline_kernels::flat_block);
+  return run_blocks(in, f, out, baseline_kernels::setup_block, baseline_kernels::flat_block,
+                    baseline_kernels::setup_block_regs, baseline_kernels::flat_block_regs);
 }
 
 }  // namespace detail

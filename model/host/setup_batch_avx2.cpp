@@ -10,7 +10,8 @@
 namespace specular::host::detail {
 
 size_t setup_batch_avx2(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
-  return run_blocks(in, f, out, avx2_kernels::setup_block, avx2_kernels::flat_block);
+  return run_blocks(in, f, out, avx2_kernels::setup_block, avx2_kernels::flat_block,
+                    avx2_kernels::setup_block_regs, avx2_kernels::flat_block_regs);
 }
 
 }  // namespace specular::host::detail

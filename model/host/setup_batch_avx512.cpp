@@ -10,7 +10,8 @@
 namespace specular::host::detail {
 
 size_t setup_batch_avx512(const SpanBatch& in, const device::Format& f, RegisterBatch& out) {
-  return run_blocks(in, f, out, avx512_kernels::setup_block, avx512_kernels::flat_block);
+  return run_blocks(in, f, out, avx512_kernels::setup_block, avx512_kernels::flat_block,
+                    avx512_kernels::setup_block_regs, avx512_kernels::flat_block_regs);
 }
 
 }  // namespace specular::host::detail

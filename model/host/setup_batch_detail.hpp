@@ -56,6 +56,17 @@ struct BlockOut {
   double* special;  // 1: not done by the kernel
 };
 
+// The register arrays of a block, for kernels that write them directly.
+struct RegOut {
+  uint32_t* c;
+  int64_t* psi0;
+  int64_t* dpsi;
+  uint32_t* n;
+  uint32_t* len;
+  uint8_t* status;
+  uint8_t* flags;
+};
+
 // Status the block driver writes for spans the kernel leaves to the scalar setup.
 inline constexpr uint8_t kSpecialStatus = 0xff;
 
@@ -121,8 +132,9 @@ inline int store_block(const SpanBatch& in, RegisterBatch& out, size_t base, con
 // `flat` takes every span and `kernel` the others, gathered; otherwise `kernel` takes the
 // whole block in place. Returns how many spans were left to the scalar setup
 // (status kSpecialStatus).
-template <class Kernel, class Flat>
-size_t run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& out, Kernel kernel, Flat flat) {
+template <class Kernel, class Flat, class KernelRegs, class FlatRegs>
+size_t run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& out, Kernel kernel, Flat flat,
+                  KernelRegs kernel_regs, FlatRegs flat_regs) {
   // Measured on the repository scenes: the gathering costs more than the flat kernel saves
   // unless most of the block is flat (dense_mesh: 96 % of its spans; bunny 55 %, spheres 36 %).
   constexpr int kFlatNum = 3, kFlatDen = 4;
@@ -154,16 +166,29 @@ size_t run_blocks(const SpanBatch& in, const device::Format& f, RegisterBatch& o
       is_flat[i] = t;
       flats += t;
     }
+    const bool direct = narrow && kf.single;  // the kernels write the register arrays themselves
+    const RegOut r{&out.c[b], &out.psi0[b], &out.dpsi[b], &out.n[b], &out.len[b], &out.status[b], &out.flags[b]};
     if (flats * kFlatDen < count * kFlatNum) {
-      kernel(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, count, kf, o);
-      specials += static_cast<size_t>(store_block(in, out, b, nullptr, count, o, narrow));
+      if (direct) {
+        kernel_regs(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, count, kf, r);
+        int block_specials = 0;
+        for (int i = 0; i < count; ++i) block_specials += r.status[i] == kSpecialStatus ? 1 : 0;
+        specials += static_cast<size_t>(block_specials);
+      } else {
+        kernel(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, count, kf, o);
+        specials += static_cast<size_t>(store_block(in, out, b, nullptr, count, o, narrow));
+      }
       continue;
     }
     // Mostly flat: the flat kernel takes the whole block in place (for the other spans it
     // computes values that are overwritten below), then the other spans are gathered for the
     // general kernel and their results scattered over those.
-    flat(n1x, n1y, n1z, h1x, h1y, h1z, nexp, scale, len, count, kf, o);
-    store_block(in, out, b, nullptr, count, o, narrow);
+    if (direct) {
+      flat_regs(n1x, n1y, n1z, h1x, h1y, h1z, nexp, scale, len, count, kf, r);
+    } else {
+      flat(n1x, n1y, n1z, h1x, h1y, h1z, nexp, scale, len, count, kf, o);
+      store_block(in, out, b, nullptr, count, o, narrow);
+    }
     int ng = 0;  // branch-free list of the other spans
     for (int i = 0; i < count; ++i) {
       idx_other[ng] = i;

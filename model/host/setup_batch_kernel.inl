@@ -184,11 +184,18 @@ inline float round_away_f(float x) {
 // noise floor), n, scale, l. `special` = 1 where C lies within the float error
 // of the saturation boundary: the scalar setup decides those, so the flag is the scalar's.
 // Spans the caller does not take from here may hold anything (their results are ignored).
+// kRegs: the register arrays `r` are written directly (the narrow single-precision format,
+// angle codes in int32), instead of the block's double arrays `o`.
+template <bool kRegs = false>
 inline void single_tail(const double* __restrict b_c2, const double* __restrict b_cosr,
                         const double* __restrict b_t, const double* __restrict b_cos, const double* __restrict b_sin2,
                         const double* __restrict b_noise, const double* __restrict nexp,
                         const double* __restrict scale, const int32_t* __restrict len, int count, const KernelFormat& kf,
-                        const BlockOut& o) {
+                        const BlockOut& o, const detail::RegOut* r = nullptr) {
+  alignas(64) int32_t psi[kBlock], dps[kBlock], fl_st[kBlock];  // kRegs: fl_st = flags | status << 8
+  uint32_t* __restrict reg_c = kRegs ? r->c : nullptr;
+  uint32_t* __restrict reg_n = kRegs ? r->n : nullptr;
+  uint32_t* __restrict reg_len = kRegs ? r->len : nullptr;
   double* __restrict oc = o.c;
   double* __restrict op = o.psi0;
   double* __restrict od = o.dpsi;
@@ -231,13 +238,54 @@ inline void single_tail(const double* __restrict b_c2, const double* __restrict 
     float cq = round_away_f(v);
     const float c_flag = cq <= c_top ? 0.0f : 1.0f;
     cq = cq <= c_top ? cq : c_top;
-    // Written as doubles (the driver's block format), converted here in the float loop.
-    osp[i] = static_cast<double>(std::fabs(v - (c_top + 0.5f)) <= 1e-4f * v + 1.0f ? 1.0f : 0.0f);
-    oc[i] = static_cast<double>(cq);
-    op[i] = static_cast<double>(round_away_f(-lambda * angle_scale) + 0.0f);
-    od[i] = static_cast<double>(l > 0.0f ? round_away_f(gamma * angle_scale * rl) : 0.0f);
-    on[i] = static_cast<double>(round_away_f(nn));
-    ofl[i] = static_cast<double>(c_flag);
+    const float sp = std::fabs(v - (c_top + 0.5f)) <= 1e-4f * v + 1.0f ? 1.0f : 0.0f;
+    const float pq = round_away_f(-lambda * angle_scale) + 0.0f;
+    const float dq = l > 0.0f ? round_away_f(gamma * angle_scale * rl) : 0.0f;
+    if constexpr (kRegs) {
+      reg_c[i] = static_cast<uint32_t>(static_cast<int32_t>(cq));
+      reg_n[i] = static_cast<uint32_t>(static_cast<int32_t>(round_away_f(nn)));
+      reg_len[i] = static_cast<uint32_t>(len[i]);
+      psi[i] = static_cast<int32_t>(pq);
+      dps[i] = static_cast<int32_t>(dq);
+      fl_st[i] = static_cast<int32_t>(c_flag + sp * (256.0f * detail::kSpecialStatus));
+    } else {
+      // Written as doubles (the driver's block format), converted here in the float loop.
+      osp[i] = static_cast<double>(sp);
+      oc[i] = static_cast<double>(cq);
+      op[i] = static_cast<double>(pq);
+      od[i] = static_cast<double>(dq);
+      on[i] = static_cast<double>(round_away_f(nn));
+      ofl[i] = static_cast<double>(c_flag);
+    }
+  }
+  if constexpr (kRegs) {
+    // The 64-bit and 8-bit arrays in loops of their own (mixed with the floats above they stop
+    // the vectorizer).
+    int64_t* __restrict reg_p = r->psi0;
+    int64_t* __restrict reg_d = r->dpsi;
+    uint8_t* __restrict reg_f = r->flags;
+    uint8_t* __restrict reg_s = r->status;
+#pragma GCC ivdep
+    for (int i = 0; i < count; ++i) reg_p[i] = psi[i], reg_d[i] = dps[i];
+#pragma GCC ivdep
+    for (int i = 0; i < count; ++i) {
+      reg_f[i] = static_cast<uint8_t>(fl_st[i] & 0xff);
+      reg_s[i] = static_cast<uint8_t>(fl_st[i] >> 8);
+    }
+  }
+}
+
+// Block results (entry j) to the register arrays: span idx[j], or j when idx is null.
+inline void block_to_regs(const BlockOut& t, const int* idx, int n, const int32_t* len, const detail::RegOut& r) {
+  for (int j = 0; j < n; ++j) {
+    const int i = idx ? idx[j] : j;
+    r.psi0[i] = static_cast<int64_t>(t.psi0[j]);
+    r.dpsi[i] = static_cast<int64_t>(t.dpsi[j]);
+    r.c[i] = static_cast<uint32_t>(static_cast<int32_t>(t.c[j]));
+    r.n[i] = static_cast<uint32_t>(static_cast<int32_t>(t.n[j]));
+    r.len[i] = static_cast<uint32_t>(len[i]);
+    r.flags[i] = static_cast<uint8_t>(static_cast<int32_t>(t.flags[j]));
+    r.status[i] = t.special[j] != 0.0 ? detail::kSpecialStatus : static_cast<uint8_t>(SetupStatus::ok);
   }
 }
 
@@ -308,13 +356,17 @@ inline void double_tail(const double* __restrict b_ord, const double* __restrict
   }
 }
 
-// Spans [0, count) of the arrays (count <= the block size of the caller).
-inline void setup_block(const double* __restrict n1x, const double* __restrict n1y, const double* __restrict n1z,
-                        const double* __restrict n2x, const double* __restrict n2y, const double* __restrict n2z,
-                        const double* __restrict h1x, const double* __restrict h1y, const double* __restrict h1z,
-                        const double* __restrict hex, const double* __restrict hey, const double* __restrict hez,
-                        const double* __restrict nexp, const double* __restrict scale, const int32_t* __restrict len,
-                        int count, const KernelFormat& kf, const BlockOut& o) {
+// Spans [0, count) of the arrays (count <= the block size of the caller). kRegs: the results
+// go to the register arrays `r` (single_tail's direct path, the driver's narrow
+// single-precision format), `o` serving as scratch.
+template <bool kRegs>
+inline void setup_block_impl(const double* __restrict n1x, const double* __restrict n1y, const double* __restrict n1z,
+                             const double* __restrict n2x, const double* __restrict n2y, const double* __restrict n2z,
+                             const double* __restrict h1x, const double* __restrict h1y, const double* __restrict h1z,
+                             const double* __restrict hex, const double* __restrict hey, const double* __restrict hez,
+                             const double* __restrict nexp, const double* __restrict scale,
+                             const int32_t* __restrict len, int count, const KernelFormat& kf, const BlockOut& o,
+                             const detail::RegOut* r) {
   // Below the scalar setup's noise floor of the chord |H2 - H1| (16 ulp) gamma is 0.
   constexpr double kChordNoise = 16.0 * 2.220446049250313e-16;
   // Vectors whose squared length lies outside this range go to the scalar setup (it tests
@@ -448,9 +500,10 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
   const int n_single = static_cast<int>(singles);
   if (n_single == 0) {
     double_tail(b_ord, b_c2, b_cosr, b_t, b_cos, b_noise, nexp, scale, len, count, kf, o);
+    if constexpr (kRegs) block_to_regs(o, nullptr, count, len, *r);
     return;
   }
-  single_tail(b_c2, b_cosr, b_t, b_cos, b_sin2, b_noise, nexp, scale, len, count, kf, o);
+  single_tail<kRegs>(b_c2, b_cosr, b_t, b_cos, b_sin2, b_noise, nexp, scale, len, count, kf, o, r);
   if (n_single == count) return;
   // The others through the double tail, gathered, and their results scattered.
   alignas(64) int idx[kBlock];
@@ -474,10 +527,36 @@ inline void setup_block(const double* __restrict n1x, const double* __restrict n
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
   double_tail(g[0], g[1], g[2], g[3], g[4], g[5], g[6], g[7], gl, ng, kf, t);
 #pragma GCC diagnostic pop
-  for (int j = 0; j < ng; ++j) {
-    const int i = idx[j];
-    o.c[i] = tc[j], o.psi0[i] = tp[j], o.dpsi[i] = td[j], o.n[i] = tn[j], o.flags[i] = tfl[j], o.special[i] = tsp[j];
+  if constexpr (kRegs) {
+    block_to_regs(t, idx, ng, len, *r);
+  } else {
+    for (int j = 0; j < ng; ++j) {
+      const int i = idx[j];
+      o.c[i] = tc[j], o.psi0[i] = tp[j], o.dpsi[i] = td[j], o.n[i] = tn[j], o.flags[i] = tfl[j], o.special[i] = tsp[j];
+    }
   }
+}
+
+inline void setup_block(const double* n1x, const double* n1y, const double* n1z, const double* n2x,
+                        const double* n2y, const double* n2z, const double* h1x, const double* h1y,
+                        const double* h1z, const double* hex, const double* hey, const double* hez,
+                        const double* nexp, const double* scale, const int32_t* len, int count,
+                        const KernelFormat& kf, const BlockOut& o) {
+  setup_block_impl<false>(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, count, kf, o,
+                          nullptr);
+}
+
+// setup_block writing the register arrays of the block itself (the driver's narrow
+// single-precision format): saves the double block arrays and store_block's pass over them.
+inline void setup_block_regs(const double* n1x, const double* n1y, const double* n1z, const double* n2x,
+                             const double* n2y, const double* n2z, const double* h1x, const double* h1y,
+                             const double* h1z, const double* hex, const double* hey, const double* hez,
+                             const double* nexp, const double* scale, const int32_t* len, int count,
+                             const KernelFormat& kf, const detail::RegOut& r) {
+  alignas(64) double c[kBlock], psi0[kBlock], dpsi[kBlock], n[kBlock], flags[kBlock], special[kBlock];
+  const BlockOut o{c, psi0, dpsi, n, flags, special};
+  setup_block_impl<true>(n1x, n1y, n1z, n2x, n2y, n2z, h1x, h1y, h1z, hex, hey, hez, nexp, scale, len, count, kf, o,
+                         &r);
 }
 
 // Flat spans: N1 = N2 and H1 = He exactly (every one-pixel span of a rasterizer, and flat
@@ -602,6 +681,88 @@ inline void flat_block_single(const double* __restrict n1x, const double* __rest
     on[i] = take ? round_away(nexp[i]) : 0.0;
     ofl[i] = take ? c_flag + pflag : 0.0;
     osp[i] = 1.0 - ordinary;
+  }
+}
+
+// flat_block_single writing the register arrays itself (the driver's narrow single-precision
+// format: angle codes fit int32), which saves the double block arrays and store_block's pass
+// over them. Special spans get status kSpecialStatus; the driver counts them.
+inline void flat_block_regs(const double* __restrict n1x, const double* __restrict n1y,
+                            const double* __restrict n1z, const double* __restrict h1x,
+                            const double* __restrict h1y, const double* __restrict h1z,
+                            const double* __restrict nexp, const double* __restrict scale,
+                            const int32_t* __restrict len, int count, const KernelFormat& kf,
+                            const detail::RegOut& r) {
+  constexpr double kPi = 3.14159265358979323846;
+  const double max_len = kf.max_len;
+  const double pi_code = round_away(-kPi * kf.angle_scale);
+  // An int32 code (a float would round it: -pi 2^28 needs 30 bits).
+  const int64_t psi_neg = static_cast<int64_t>(pi_code < kf.angle_lo ? kf.angle_lo : pi_code);
+  const float psi_neg_flag = pi_code < kf.angle_lo ? 2.0f : 0.0f;
+  const float c_scale = static_cast<float>(kf.c_scale), c_top = static_cast<float>(kf.c_top);
+  alignas(64) double b_ord[kBlock], b_cos[kBlock], b_s[kBlock], b_neg[kBlock];
+#pragma GCC ivdep
+  for (int i = 0; i < count; ++i) {
+    const double nn = nexp[i], sc = scale[i], l = static_cast<double>(len[i]);
+    const double d_n1 = n1x[i] * n1x[i] + n1y[i] * n1y[i] + n1z[i] * n1z[i];
+    const double d_h1 = h1x[i] * h1x[i] + h1y[i] * h1y[i] + h1z[i] * h1z[i];
+    const double e1 = d_n1 - 1.0, e3 = d_h1 - 1.0;
+    double ordinary = std::fabs(e1) <= kNearUnitBound ? 1.0 : 0.0;  // NaN: not ordinary
+    ordinary = std::fabs(e3) <= kNearUnitBound ? ordinary : 0.0;
+    ordinary = nn >= 1.0 ? ordinary : 0.0;
+    ordinary = nn <= kMaxN ? ordinary : 0.0;
+    ordinary = l >= 0.0 ? ordinary : 0.0;
+    ordinary = l <= max_len ? ordinary : 0.0;
+    ordinary = sc >= 0.0 ? ordinary : 0.0;
+    ordinary = sc <= 0x1p20 ? ordinary : 0.0;  // also false for NaN
+    const double r1 = 1.0 + e1 * (-0.5 + 0.375 * e1), rh = 1.0 + e3 * (-0.5 + 0.375 * e3);
+    const double cos_t1 = (n1x[i] * h1x[i] + n1y[i] * h1y[i] + n1z[i] * h1z[i]) * (r1 * rh);
+    b_ord[i] = ordinary;
+    b_cos[i] = ordinary > 0.0 ? cos_t1 : 1.0;
+    b_s[i] = ordinary > 0.0 ? (1.0 - cos_t1) * (1.0 + cos_t1) : 0.0;
+    b_neg[i] = ordinary > 0.0 && cos_t1 < 0.0 ? 1.0 : 0.0;  // in double: a tiny negative is no float -0
+  }
+  uint32_t* __restrict oc = r.c;
+  uint32_t* __restrict on = r.n;
+  uint32_t* __restrict ol = r.len;
+  int64_t* __restrict op = r.psi0;
+  int64_t* __restrict od = r.dpsi;
+  uint8_t* __restrict ofl = r.flags;
+  uint8_t* __restrict ost = r.status;
+  alignas(64) int32_t fl_st[kBlock], psi[kBlock];  // fl_st: flags | status << 8
+#pragma GCC ivdep
+  for (int i = 0; i < count; ++i) {
+    const float cs = static_cast<float>(b_cos[i]), sf = static_cast<float>(b_s[i]);
+    const float nn = static_cast<float>(nexp[i]);
+    const float ord = static_cast<float>(b_ord[i]);
+    const float sc = ord > 0.0f ? static_cast<float>(scale[i]) : 0.0f;
+    const float a2 = cs * cs;
+    const float x = 0.5f * nn * log2_f(a2 > 0x1p-100f ? a2 : 0x1p-100f, sf);
+    const float v = sc * exp2_f(x > -100.0f ? x : -100.0f) * c_scale;
+    const float cq = round_away_f(v);
+    // Within the float error of the saturation boundary: the scalar setup decides.
+    const float near_top = std::fabs(v - (c_top + 0.5f)) <= 1e-4f * v + 1.0f ? 1.0f : 0.0f;
+    const bool take = (near_top > 0.0f ? 0.0f : ord) > 0.0f;
+    const float c_flag = cq <= c_top ? 0.0f : 1.0f;
+    const float negf = static_cast<float>(b_neg[i]);  // 1: cos t1 < 0
+    const float pflag = negf > 0.0f ? psi_neg_flag : 0.0f;
+    oc[i] = static_cast<uint32_t>(static_cast<int32_t>(take ? (cq <= c_top ? cq : c_top) : 0.0f));
+    on[i] = static_cast<uint32_t>(static_cast<int32_t>(take ? round_away_f(nn) : 0.0f));
+    ol[i] = static_cast<uint32_t>(len[i]);
+    psi[i] = static_cast<int32_t>(take ? negf : 0.0f);  // 1: psi0 = the code of -pi
+    fl_st[i] = static_cast<int32_t>(take ? c_flag + pflag : 256.0f * detail::kSpecialStatus);
+  }
+  // The 64-bit and 8-bit arrays in loops of their own (mixed with the floats above they stop
+  // the vectorizer).
+#pragma GCC ivdep
+  for (int i = 0; i < count; ++i) {
+    op[i] = psi[i] != 0 ? psi_neg : 0;
+    od[i] = 0;
+  }
+#pragma GCC ivdep
+  for (int i = 0; i < count; ++i) {
+    ofl[i] = static_cast<uint8_t>(fl_st[i] & 0xff);
+    ost[i] = static_cast<uint8_t>(fl_st[i] >> 8);
   }
 }
 

@@ -319,6 +319,42 @@ TEST_CASE("batched setup agrees with the scalar setup on random spans", "[setup_
   }
 }
 
+TEST_CASE("batched setup in formats outside the single-precision path agrees with the scalar setup", "[setup_batch]") {
+  // The default format takes the kernels that write the register arrays directly; wider angle
+  // codes (int64, double tail only) or a wider C (double C) take the block arrays and the
+  // driver's store_block (docs/scanline_setup.md#batched-setup). Both against the scalar setup.
+  device::Format wide_angles;
+  wide_angles.angle_bits = 40, wide_angles.acc_bits = 52;
+  device::Format wide_c;
+  wide_c.c_bits = 24, wide_c.c_frac = 23;
+  const device::Format f = GENERATE_COPY(wide_angles, wide_c);
+  auto in = host::random_spans(20000, 555);
+  for (size_t i = 0; i < in.size(); ++i)  // flat blocks too (the first half 80 % flat)
+    if (i < in.size() / 2 && i % 5 < 4) in[i].n2 = in[i].n1, in[i].he = in[i].h1;
+  SpanBatch b;
+  fill(b, in);
+  RegisterBatch ref, got;
+  host::setup_scalar(b, f, ref);
+  for (const SimdPath path : paths()) {
+    host::setup_batch(b, f, got, path);
+    size_t status_diff = 0, fails = 0;
+    double worst = 0.0;
+    for (size_t i = 0; i < in.size(); ++i) {
+      if (got.status[i] != ref.status[i] || got.flags[i] != ref.flags[i] || got.n[i] != ref.n[i] ||
+          got.len[i] != ref.len[i]) {
+        ++status_diff;
+        continue;
+      }
+      const auto a = host::compare_pixels(got.registers(i), ref.registers(i), f);
+      fails += !a.ok();
+      worst = std::max(worst, a.worst);
+    }
+    INFO(to_string(path) << ", angle_bits " << f.angle_bits << ", c_bits " << f.c_bits << ": worst " << worst);
+    CHECK(status_diff == 0);
+    CHECK(fails == 0);
+  }
+}
+
 TEST_CASE("compare_pixels can fail: a one-code change of dpsi on a long, sharp span", "[setup_batch]") {
   const device::Format f;
   device::Registers r;
