@@ -51,6 +51,9 @@
 //              2, 3: every step from the bisector on one tau later); the two Q44
 //              normalizers on one; the dot products on two; the two reflections' scaled
 //              subtractions on one; the CORDICs on one (one more tau)
+//   SetupII 8  as 4, but one normalizer (InW = VecW) for all six sites: the codes entering at
+//              tau 0, 1, 5, 6 and N1 + N2 a clock late, so the bisector (tau 11) and W
+//              (tau 26) fall on positions 3 and 2 modulo 8 (one more tau)
 // Patent block numbers do not apply: the patent leaves the setup to the host.
 
 `include "specular_assert.svh"
@@ -61,7 +64,7 @@ module specular_setup #(
   // 1: the end halfway vector equals the first (a directional light and a viewer at
   // infinity): geo_he_i is ignored and its normalizer is not built.
   parameter bit HeEqH1        = 1'b0,
-  // Initiation interval: at most one span every SetupII clocks (1, 2 or 4), the hardware
+  // Initiation interval: at most one span every SetupII clocks (1, 2, 4 or 8), the hardware
   // shared over those clocks (docs/setup_hw.md#sharing-over-setupii-clocks).
   parameter int SetupII       = 1,
   parameter     RsqrtSeedFile = "roms/setup/rsqrt_seed.hex",
@@ -123,16 +126,21 @@ module specular_setup #(
   localparam int Up        = CordicFrac - UnitFrac;  // Q44 -> Q50
   // Sharing (docs/setup_hw.md#sharing-over-setupii-clocks). The normalizers of the codes:
   // sites N1, N2, H1, He (j = 0 .. 3; He not with HeEqH1) on ceil(sites / SetupII) instances,
-  // site j on instance j mod CodeInst, entering Off(j) = j / CodeInst clocks late.
+  // site j on instance j mod CodeInst, entering Off(j) = j / CodeInst clocks late. SetupII = 8:
+  // one normalizer (InW = VecW) for all six sites, the codes entering at tau 0, 1, 5, 6 and
+  // N1 + N2 a clock late (BisPad), so that the bisector (tau 11) and W (tau 26) fall on the
+  // free positions 3 and 2 modulo 8.
+  localparam bit AllNorm   = SetupII == 8;
   localparam int CodeSites = HeEqH1 ? 3 : 4;
   localparam int CodeInst  = (CodeSites + SetupII - 1) / SetupII;
   localparam int OffN2     = 1 / CodeInst;
-  localparam int OffH1     = 2 / CodeInst;
-  localparam int OffHe     = HeEqH1 ? OffH1 : 3 / CodeInst;  // He = H1 with HeEqH1
+  localparam int OffH1     = AllNorm ? 5 : 2 / CodeInst;
+  localparam int OffHe     = HeEqH1 ? OffH1 : AllNorm ? 6 : 3 / CodeInst;  // He = H1 with HeEqH1
+  localparam int BisPad    = AllNorm ? 1 : 0;
   // The two CORDICs on one instance (SetupII > 1): lambda's enters a clock after gamma's.
   localparam int CordicSkew = SetupII > 1 ? 1 : 0;
   // tau of each step's output (see the header; the numbers are SetupII = 1's).
-  localparam int TNorm1  = NormStages + OffN2;       // 9: N1 and N2 (the bisector's input)
+  localparam int TNorm1  = NormStages + OffN2 + BisPad;  // 9: N1 + N2 (the bisector's input)
   localparam int TNorm2  = TNorm1 + NormStages;      // 18
   localparam int TH2     = TNorm2 + 4;               // 22
   localparam int TTest   = TH2 + 1;                  // 23
@@ -149,13 +157,18 @@ module specular_setup #(
   if (VecBits < 2 || VecBits > 24 || TagBits < 1) begin : gen_param_check
     `SPEC_PARAM_ERROR("specular_setup: VecBits must be in 2..24 and TagBits >= 1")
   end
-  if (SetupII != 1 && SetupII != 2 && SetupII != 4) begin : gen_ii_check
-    `SPEC_PARAM_ERROR("specular_setup: SetupII must be 1, 2 or 4")
+  if (SetupII != 1 && SetupII != 2 && SetupII != 4 && SetupII != 8) begin : gen_ii_check
+    `SPEC_PARAM_ERROR("specular_setup: SetupII must be 1, 2, 4 or 8")
   end
   // The bisector's and W's normalizer share one instance: their input positions must differ
   // modulo SetupII.
   if (SetupII > 1 && (TW - TNorm1) % SetupII == 0) begin : gen_share_check
     `SPEC_PARAM_ERROR("specular_setup: the bisector's and W's normalizer collide modulo SetupII")
+  end
+  // SetupII = 8: the bisector and W apart from the codes' positions 0, 1, 5, 6 modulo 8.
+  localparam logic [7:0] CodePos8 = 8'h63;  // positions 0, 1, 5, 6
+  if (AllNorm && (CodePos8[TNorm1 % 8] || CodePos8[TW % 8])) begin : gen_all_check
+    `SPEC_PARAM_ERROR("specular_setup: the bisector's or W's normalizer collides with a code's modulo 8")
   end
 
   typedef logic signed [VecW-1:0] comp_t;
@@ -264,11 +277,13 @@ module specular_setup #(
     assign code[4*CodeW-1 -: CodeW] = he_q;
   end
   for (genvar j = 0; j < CodeSites; j++) begin : gen_code_site
-    specular_delay #(.Width(CodeW), .Depth(j / CodeInst), .Reset(1'b0)) u_dly_code (
+    localparam int Off = (AllNorm && j >= 2) ? j + 3 : j / CodeInst;
+    specular_delay #(.Width(CodeW), .Depth(Off), .Reset(1'b0)) u_dly_code (
       .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (code[j*CodeW +: CodeW]), .q_o (code_dl[j*CodeW +: CodeW])
     );
-    assign code_pick[j] = vld[j / CodeInst];
+    assign code_pick[j] = vld[Off];
   end
+  vec_t n1m, msum;  // N1 at TNorm1, N1 + N2
   for (genvar i = 0; i < CodeInst; i++) begin : gen_norm_code
     // (no struct inside a generate block: Yosys 0.23 cannot resolve its members there)
     logic [CodeW-1:0]  sel;
@@ -279,11 +294,28 @@ module specular_setup #(
         if (code_pick[j]) sel = code_dl[j*CodeW +: CodeW];
       end
     end
-    specular_setup_norm #(.InW(VecBits), .RsqrtSeedFile(RsqrtSeedFile)) u_norm (
-      .clk_i (clk_i), .en_i (adv),
-      .x_i (sel[VecBits-1:0]), .y_i (sel[2*VecBits-1:VecBits]), .z_i (sel[3*VecBits-1:2*VecBits]),
-      .x_o (ux), .y_o (uy), .z_o (uz)
-    );
+    if (AllNorm) begin : gen_all
+      // The one normalizer of SetupII = 8 (InW = VecW: the codes sign-extended, the same
+      // arithmetic): W, the bisector, else a code.
+      logic [VecTBits-1:0] all_sel;
+      always_comb begin
+        all_sel = {VecW'($signed(sel[3*VecBits-1:2*VecBits])), VecW'($signed(sel[2*VecBits-1:VecBits])),
+                   VecW'($signed(sel[VecBits-1:0]))};
+        if (vld[TNorm1]) all_sel = msum;
+        if (vld[TW]) all_sel = w_q;
+      end
+      specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm (
+        .clk_i (clk_i), .en_i (adv),
+        .x_i (all_sel[VecW-1:0]), .y_i (all_sel[2*VecW-1:VecW]), .z_i (all_sel[3*VecW-1:2*VecW]),
+        .x_o (ux), .y_o (uy), .z_o (uz)
+      );
+    end else begin : gen_code
+      specular_setup_norm #(.InW(VecBits), .RsqrtSeedFile(RsqrtSeedFile)) u_norm (
+        .clk_i (clk_i), .en_i (adv),
+        .x_i (sel[VecBits-1:0]), .y_i (sel[2*VecBits-1:VecBits]), .z_i (sel[3*VecBits-1:2*VecBits]),
+        .x_o (ux), .y_o (uy), .z_o (uz)
+      );
+    end
     assign code_unit[i*VecTBits +: VecTBits] = {uz, uy, ux};
   end
   assign n1u = code_unit[0 +: VecTBits];
@@ -296,12 +328,18 @@ module specular_setup #(
   end
 
   // ---- Normalizers of the bisector (tau TNorm1 -> TNorm2) and of W (tau TW -> TU) ----
-  vec_t n1m, msum;  // N1 at TNorm1, N1 + N2
-  specular_delay #(.Width(VecTBits), .Depth(OffN2), .Reset(1'b0)) u_dly_n1m (
+  vec_t n2m;  // N2 at TNorm1
+  specular_delay #(.Width(VecTBits), .Depth(OffN2 + BisPad), .Reset(1'b0)) u_dly_n1m (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n1u), .q_o (n1m)
   );
-  assign msum = {n1m.z + n2u.z, n1m.y + n2u.y, n1m.x + n2u.x};
-  if (SetupII == 1) begin : gen_norm_q44
+  specular_delay #(.Width(VecTBits), .Depth(BisPad), .Reset(1'b0)) u_dly_n2m (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n2u), .q_o (n2m)
+  );
+  assign msum = {n1m.z + n2m.z, n1m.y + n2m.y, n1m.x + n2m.x};
+  if (AllNorm) begin : gen_norm_q44_all
+    assign mu = code_unit;  // the one normalizer (above)
+    assign uu = code_unit;
+  end else if (SetupII == 1) begin : gen_norm_q44
     specular_setup_norm #(.RsqrtSeedFile(RsqrtSeedFile)) u_norm_m (
       .clk_i (clk_i), .en_i (adv), .x_i (msum.x), .y_i (msum.y), .z_i (msum.z), .x_o (mu.x), .y_o (mu.y), .z_o (mu.z)
     );
@@ -430,7 +468,7 @@ module specular_setup #(
   // The reflections (tau 19 and 21): one instance for both with SetupII = 4 (positions 2
   // apart).
   vec_t r_y, r_h2;
-  if (SetupII == 4) begin : gen_refl_shared
+  if (SetupII >= 4) begin : gen_refl_shared
     logic [VecTBits-1:0] rv, ru, rr;
     logic signed [63:0]  rs;
     assign {rv, rs, ru} = vld[TNorm2 + 3] ? {y_21, s2_21, n1_21} : {he_19, s1_19, m_19};

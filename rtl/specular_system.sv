@@ -58,8 +58,8 @@ module specular_system #(
   if (CBits != 16 || CFrac != 15 || AngleBits != 32 || AngleFrac != 28 || NBits != 10 || LenBits != 11) begin : gen_fmt_check
     `SPEC_PARAM_ERROR("specular_system: the register formats must be the defaults (C 16/15, angles 32/28, n 10, l 11)")
   end
-  if (SetupII != 1 && SetupII != 2 && SetupII != 4) begin : gen_ii_check
-    `SPEC_PARAM_ERROR("specular_system: SetupII must be 1, 2 or 4")
+  if (SetupII != 1 && SetupII != 2 && SetupII != 4 && SetupII != 8) begin : gen_ii_check
+    `SPEC_PARAM_ERROR("specular_system: SetupII must be 1, 2, 4 or 8")
   end
 
   logic                 span_valid, span_ready;

@@ -53,8 +53,8 @@
 #   --fresh       re-run even when sources, parameters, ROM files and tools are unchanged
 #                 (otherwise an unchanged run's result is reused)
 #   --elaborate-only  only elaborate the harnesses in Yosys (hierarchy -check), no synthesis
-#   --setup-ii    with --top setup or system: the setup's initiation interval SetupII (1, 2
-#                 or 4: at most one span every K clocks, the hardware shared over them,
+#   --setup-ii    with --top setup or system: the setup's initiation interval SetupII (1, 2,
+#                 4 or 8: at most one span every K clocks, the hardware shared over them,
 #                 docs/setup_hw.md#sharing-over-setupii-clocks), as --param SetupII=K; the
 #                 run's folder is TOP_iiK_DEVICE/
 #
@@ -153,8 +153,8 @@ fi
 # --setup-ii: specular_setup's SetupII (rtl/specular_setup.sv), on the setup or the system.
 if [ -n "$setup_ii" ]; then
   case "$top_arg" in setup|system) ;; *) die_usage "--setup-ii needs --top setup or system (got --top $top_arg)" ;; esac
-  case "$setup_ii" in 1|2|4) params+=("SetupII=$setup_ii") ;;
-    *) die_usage "--setup-ii must be 1, 2 or 4 (got '$setup_ii')" ;; esac
+  case "$setup_ii" in 1|2|4|8) params+=("SetupII=$setup_ii") ;;
+    *) die_usage "--setup-ii must be 1, 2, 4 or 8 (got '$setup_ii')" ;; esac
 fi
 [[ "$yosys_timeout" =~ ^[0-9]+$ ]] || die_usage "--yosys-timeout must be a whole number of seconds, 0 for no limit (got '$yosys_timeout')"
 [[ "$seed" =~ ^[0-9]+$ ]] || die_usage "--seed must be a non-negative integer (got '$seed')"

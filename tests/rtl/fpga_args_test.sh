@@ -28,7 +28,7 @@ expect "--seed must be a non-negative integer" --seed abc
 expect "--yosys-timeout must be a whole number of seconds, 0 for no limit \(got '1h'\)" --top setup --yosys-timeout 1h
 expect "must be a positive number of MHz" --freq-hx8k 0
 expect "--out needs a value" --out
-expect "--setup-ii must be 1, 2 or 4 \(got '3'\)" --top setup --setup-ii 3
+expect "--setup-ii must be 1, 2, 4 or 8 \(got '3'\)" --top setup --setup-ii 3
 expect "--setup-ii needs --top setup or system \(got --top stream\)" --top stream --setup-ii 2
 expect "unknown argument '--bogus' \(allowed: .*--flatten, --no-flatten" --bogus
 exit $fail

@@ -1,15 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
-// specular_setup with SetupII = 2 and 4 (rtl/specular_setup.sv,
+// specular_setup with SetupII = 2, 4 and 8 (rtl/specular_setup.sv,
 // docs/setup_hw.md#sharing-over-setupii-clocks) against its golden model
 // host::fixed::setup_fixed, bit for bit, with the checks of tests/rtl/test_setup.cpp (the
 // hard cases; random spans under random gaps, backpressure and resets) and the rate: spans
 // offered back to back with span_ready_i high are accepted exactly one every SetupII clocks.
 // And SetupII = 4 with HeEqH1 = 1 (three code normalizer sites). Built only with
-// -DSPECULAR_SETUP_VARIANTS=ON (three Verilator models of their own);
+// -DSPECULAR_SETUP_VARIANTS=ON (four Verilator models of their own);
 // SPECULAR_SETUP_RTL_SPANS=N runs N random spans instead of 20,000.
 #include "Vsetup_ii2.h"
 #include "Vsetup_ii4.h"
 #include "Vsetup_ii4_he1.h"
+#include "Vsetup_ii8.h"
 #include "setup_rtl_harness.hpp"
 
 #include <catch2/catch.hpp>
@@ -29,11 +30,12 @@ struct Ii {
 };
 using Ii2 = Ii<Vsetup_ii2, 2>;
 using Ii4 = Ii<Vsetup_ii4, 4>;
+using Ii8 = Ii<Vsetup_ii8, 8>;
 
 }  // namespace
 
 TEMPLATE_TEST_CASE("setup RTL, SetupII > 1: hard cases bit-exact, back to back and under backpressure", "[setup_rtl_ii]",
-                   Ii2, Ii4) {
+                   Ii2, Ii4, Ii8) {
   typename TestType::Model m;
   const std::vector<device::GeoSpan> spans = hard_spans();
   const double p_ready = GENERATE(1.0, 0.5);
@@ -46,7 +48,7 @@ TEMPLATE_TEST_CASE("setup RTL, SetupII > 1: hard cases bit-exact, back to back a
 }
 
 TEMPLATE_TEST_CASE("setup RTL, SetupII > 1: random spans bit-exact under random gaps, backpressure and resets",
-                   "[setup_rtl_ii]", Ii2, Ii4) {
+                   "[setup_rtl_ii]", Ii2, Ii4, Ii8) {
   typename TestType::Model m;
   const char* env = std::getenv("SPECULAR_SETUP_RTL_SPANS");
   const size_t total = env ? std::strtoull(env, nullptr, 10) : 20000;
@@ -73,7 +75,7 @@ TEMPLATE_TEST_CASE("setup RTL, SetupII > 1: random spans bit-exact under random 
 }
 
 TEMPLATE_TEST_CASE("setup RTL, SetupII > 1: one span every SetupII clocks with span_ready_i high", "[setup_rtl_ii]",
-                   Ii2, Ii4) {
+                   Ii2, Ii4, Ii8) {
   typename TestType::Model m;
   constexpr long k = TestType::kII;
   reset(m);
