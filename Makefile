@@ -7,7 +7,7 @@ JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 PYTHON ?= /usr/bin/python3
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build test formal formal-long sim stage-table roms vcd report lint fuzz fpga coverage xprop clean help
+.PHONY: all deps configure build test formal formal-long sim sim-setup-ii stage-table roms vcd report lint fuzz fpga coverage xprop clean help
 
 all: build
 
@@ -16,6 +16,7 @@ help:
 	@echo "make test    build everything, run every test with ctest (what CI runs)"
 	@echo "make formal-long  the slow formal checks of specular_setup and phong_stream (ctest label formal_long)"
 	@echo "make formal  the formal proofs alone (specular_stream's handshakes, specular_axil's AXI4-Lite rules, phong_stream's bounded check) and their mutants"
+	@echo "make sim-setup-ii  the system stage at SetupII 1, 2, 4 and 8 (turns on SPECULAR_SYSTEM_SETUP_II in $(BUILD): three more models)"
 	@echo "make roms    regenerate every configuration's ROM hex files and roms/build_configs.cmake (romgen --all)"
 	@echo "make stage-table  rewrite docs/pipeline.md's stage table from rtl/specular_pkg.sv"
 	@echo "make vcd     write VCD timing diagrams to $(BUILD)/vcd and draw the 4-pixel one"
@@ -53,6 +54,15 @@ formal-long: deps
 
 sim: build
 	./$(BUILD)/bin/sim_regression --images-dir $(BUILD)/scenes
+
+# The system stage once per SetupII of specular_system (docs/setup_hw.md#sharing-over-setupii-clocks):
+# clocks per pixel per scene for each initiation interval. Turns the CMake option
+# SPECULAR_SYSTEM_SETUP_II on in $(BUILD) (it stays on: three more Verilator models per build).
+sim-setup-ii: configure
+	@cmake -S . -B $(BUILD) -DSPECULAR_SYSTEM_SETUP_II=ON > /dev/null
+	@cmake --build $(BUILD) -j $(JOBS) --target sim_regression
+	./$(BUILD)/bin/sim_regression --config default --random 0 --stream-spans 0 --setup-ii 1,2,4,8 \
+	  --images-dir $(BUILD)/scenes --json $(BUILD)/sim_setup_ii.json
 
 # docs/pipeline.md's stage table from rtl/specular_pkg.sv (docs/pipeline.md#stage-counts).
 stage-table: build

@@ -185,8 +185,9 @@ def fmt(v):
 
 def ecp5_runs(path=os.path.join(ROOT, "docs", "fpga_figures.json")):
     """The ECP5 synthesis entries of docs/fpga_figures.json (scripts/fpga.sh --device ecp5, the same
-    harness and hierarchical flow for every core): name -> entry, for specular_system and each
-    phong_stream configuration."""
+    harness and hierarchical flow for every core): name -> entry, for specular_system at each SetupII
+    ("specular_system" is SetupII 1, "specular_system SetupII=K" the others) and each phong_stream
+    configuration ("phong CONFIG")."""
     try:
         with open(path) as f:
             runs = json.load(f).get("synthesis_runs", [])
@@ -194,36 +195,92 @@ def ecp5_runs(path=os.path.join(ROOT, "docs", "fpga_figures.json")):
         return {}
     out = {}
     for e in runs:
-        if e.get("part") == "ECP5" and e.get("core") in ("specular_system", "phong_stream"):
-            out[e["core"] if e["core"] == "specular_system" else f"phong {e.get('config')}"] = e
+        if e.get("part") != "ECP5":
+            continue
+        if e.get("core") == "specular_system":
+            out["specular_system" + (f" {e['config']}" if e.get("config") else "")] = e
+        elif e.get("core") == "phong_stream":
+            out[f"phong {e.get('config')}"] = e
     return out
 
 
-def write_system_cost(w, runs):
-    """The device with its setup in hardware against the Phong cores, ECP5 synthesis counts."""
-    sysc = runs.get("specular_system")
+def setup_ii_of(name):
+    """SetupII of an ecp5_runs() key of specular_system."""
+    return int(name.split("=")[1]) if "=" in name else 1
+
+
+def setup_ii_sim(path=os.path.join(ROOT, "docs", "measured", "sim_setup_ii.json")):
+    """sim_regression --setup-ii 1,2,4's system stage (make sim-setup-ii, committed as
+    docs/measured/sim_setup_ii.json): SetupII -> run -> figures; {} when absent."""
+    try:
+        with open(path) as f:
+            d = json.load(f).get("system_setup_ii", {})
+    except (OSError, ValueError):
+        return {}
+    return {int(k): v for k, v in d.items()}
+
+
+def write_system_cost(w, runs, ii_sim=None):
+    """The device with its setup in hardware against the Phong cores: ECP5 synthesis counts per
+    SetupII, and per scene the LUT4 per pixel per clock (the system stage's pixels per clock)."""
+    systems = sorted(((setup_ii_of(k), v) for k, v in runs.items() if k.startswith("specular_system")),
+                     key=lambda x: x[0])
     phong = sorted((k, v) for k, v in runs.items() if k.startswith("phong "))
-    if not sysc or not phong:
+    if not systems or not phong:
         w("The device with its setup in hardware (`specular_system`): no ECP5 counts in docs/fpga_figures.json.\n")
         return
-    w("The device with its setup in hardware (`specular_system`, `SetupII` = 1: one span per clock, so one pixel per "
-      "clock on spans of every length) against the Phong cores, Yosys `synth_ecp5` in the same harness and flow "
-      "(`scripts/fpga.sh --device ecp5`; synthesis only, no ECP5 place and route here; from docs/fpga_figures.json, "
-      "not measured in this run):\n")
-    w("| core | RTL | LUT4 | CCU2C | MULT18X18D | DP16KD | FF | LUT4 / Phong's |")
-    w("|---|---|---|---|---|---|---|---|")
-    w(f"| specular_system | {sysc['rtl']} | {sysc['lut4']} | {sysc['ccu2c']} | {sysc['mult18x18d']} | "
-      f"{sysc['dp16kd']} | {sysc['ffs']} | - |")
+    w("The device with its setup in hardware (`specular_system`; `SetupII` = 1 takes one span per clock, `SetupII` = k "
+      "at most one every k clocks with the setup's hardware shared over them, docs/setup_hw.md#sharing-over-setupii-clocks) "
+      "against the Phong cores, Yosys `synth_ecp5` in the same harness and flow (`scripts/fpga.sh --device ecp5`; "
+      "synthesis only, no ECP5 place and route here; from docs/fpga_figures.json, not measured in this run):\n")
+    w("| core | RTL | LUT4 | CCU2C | MULT18X18D | DP16KD | FF |")
+    w("|---|---|---|---|---|---|---|")
+    for k, v in systems:
+        w(f"| specular_system SetupII={k} | {v['rtl']} | {v['lut4']} | {v['ccu2c']} | {v['mult18x18d']} | "
+          f"{v['dp16kd']} | {v['ffs']} |")
     for k, v in phong:
-        w(f"| {k} | {v['rtl']} | {v['lut4']} | {v['ccu2c']} | {v['mult18x18d']} | {v['dp16kd']} | {v['ffs']} | "
-          f"system {sysc['lut4'] / v['lut4']:.1f} x |")
+        w(f"| {k} | {v['rtl']} | {v['lut4']} | {v['ccu2c']} | {v['mult18x18d']} | {v['dp16kd']} | {v['ffs']} |")
     w("")
-    worst = min(sysc["lut4"] / v["lut4"] for _, v in phong)
-    w(f"With the setup in hardware at one span per clock, the device system takes at least **{worst:.1f} x** the "
-      f"LUT4 of every Phong configuration and {sysc['mult18x18d']} MULT18X18D against "
-      f"{max(v['mult18x18d'] for _, v in phong)}: per-pixel Phong costs less per pixel for every n and every span "
-      "length. The device wins only where its setup stays on the host (the ratios above), or where a setup shared "
-      "over several clocks (`SetupII` > 1, not built) meets spans long enough to hide it.\n")
+    ii_sim = ii_sim or {}
+    scenes = sorted({s for k, _ in systems for s in ii_sim.get(k, {}) if s not in ("l0", "random")})
+    # The competitor that serves every n the device serves (1..1000).
+    ref_name = "phong n1000" if "phong n1000" in runs else phong[-1][0]
+    ref = runs[ref_name]
+    if not scenes:
+        worst = min(systems[0][1]["lut4"] / v["lut4"] for _, v in phong)
+        w(f"No system stage per SetupII in docs/measured/sim_setup_ii.json (make sim-setup-ii): at `SetupII` = "
+          f"{systems[0][0]} the system takes at least {worst:.1f} x the LUT4 of every Phong configuration.\n")
+        return
+    w("Cost per pixel per clock, per scene: the system's LUT4 divided by its pixels per clock in the system stage "
+      "(`make sim-setup-ii`, spans back to back, `px_ready_i` high, steady state; docs/measured/sim_setup_ii.json, "
+      f"not measured in this run), against {ref_name}'s LUT4 at one pixel per clock; below 1 the device system is "
+      "cheaper per pixel:\n")
+    hdr = "| scene | " + " | ".join(f"px/clock SetupII={k}" for k, _ in systems) + " | " + \
+        " | ".join(f"LUT4 per px/clock SetupII={k} / {ref_name}" for k, _ in systems) + " |"
+    w(hdr)
+    w("|" + "---|" * (hdr.count("|") - 1))
+    best = {}
+    for s in scenes:
+        ppc, rat = [], []
+        for k, v in systems:
+            x = ii_sim.get(k, {}).get(s, {})
+            p = float(x["px_per_clock_steady"]) if x.get("px_per_clock_steady") else None
+            ppc.append("n/a" if p is None else f"{p:.4f}")
+            r = v["lut4"] / p / ref["lut4"] if p else None
+            rat.append("n/a" if r is None else f"{r:.2f}")
+            if r is not None and (s not in best or r < best[s][1]):
+                best[s] = (k, r)
+        w(f"| {s} | " + " | ".join(ppc) + " | " + " | ".join(rat) + " |")
+    w("")
+    lo = min(best.items(), key=lambda x: x[1][1])
+    hi = max(best.items(), key=lambda x: x[1][1])
+    wins = [s for s, (_, r) in best.items() if r < 1.0]
+    w(f"With the setup in hardware, the best `SetupII` per scene costs {lo[1][1]:.2f} x ({lo[0]}, SetupII={lo[1][0]}) "
+      f"to {hi[1][1]:.2f} x ({hi[0]}, SetupII={hi[1][0]}) the LUT4 per pixel per clock of {ref_name}: "
+      + ("the device system is cheaper per pixel on " + ", ".join(wins) + " only. " if wins else
+         "per-pixel Phong is cheaper per pixel on every scene. ")
+      + f"In MULT18X18D the device system needs {systems[-1][1]['mult18x18d']} at SetupII={systems[-1][0]} against "
+      f"{ref['mult18x18d']}. The device wins on area only where its setup stays on the host (the ratios above).\n")
 
 
 def plot(rows, path, plt):
@@ -314,7 +371,7 @@ def write(w, rows, phong, sim, n_step, synth_ran):
             w(f"- n <= {rng}: {c['device']} against {c['phong']}: the Phong core takes "
               f"**{c['lut4_ratio']:.1f} x** the device's LUT4 and {c['cost_ratio']:.1f} x its LUT4 + FF.")
     w("")
-    write_system_cost(w, ecp5_runs())
+    write_system_cost(w, ecp5_runs(), setup_ii_sim())
     # Clocks per pixel per scene.
     ph, ds, sy = (sim or {}).get("phong", {}), (sim or {}).get("scenes_stream", {}), (sim or {}).get("system")
     if ph or ds:

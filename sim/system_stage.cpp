@@ -5,6 +5,12 @@
 #include "harness.hpp"  // before the V*.h: wraps the Verilator headers in a warning guard
 
 #include "Vspecular_system.h"
+#include "system_setup_ii.inc"  // SPECULAR_SYSTEM_SETUP_II (sim/CMakeLists.txt)
+#if SPECULAR_SYSTEM_SETUP_II
+#include "Vspecular_system_ii2.h"
+#include "Vspecular_system_ii4.h"
+#include "Vspecular_system_ii8.h"
+#endif
 #include "geo_cases.hpp"
 #include "geo_span.hpp"
 #include "metrics.hpp"
@@ -19,12 +25,11 @@
 #include <deque>
 #include <iostream>
 #include <random>
+#include <stdexcept>
 #include <string>
 
 namespace specular::sim {
 namespace {
-
-using V = Vspecular_system;
 
 // One expected pixel: the golden models' value, and the end-to-end reference with its allowance.
 struct Pixel {
@@ -33,6 +38,7 @@ struct Pixel {
   bool check_e2e = false;
 };
 
+template <class V>
 class Bench {
  public:
   Bench(const BuildConfig& bc, const device::DeviceModel& dm) : bc_(bc), dm_(dm), vm_("specular_system"), top_(vm_.top()) {
@@ -124,7 +130,8 @@ void error(SystemRunStats& st, const std::string& what) {
 
 // Offers `spans` in order (each held until accepted) with the probabilities per clock of an
 // offer, of px_ready_i and of a reset; checks every pixel transfer; ends draining.
-SystemRunStats run(Bench& b, const std::string& name, const std::vector<device::GeoSpan>& spans, bool accuracy,
+template <class V>
+SystemRunStats run(Bench<V>& b, const std::string& name, const std::vector<device::GeoSpan>& spans, bool accuracy,
                    double p_valid, double p_ready, double p_reset, uint64_t seed) {
   SystemRunStats st;
   st.name = name;
@@ -206,12 +213,16 @@ bool SystemStats::ok() const {
   return true;
 }
 
-SystemStats run_system_stage(const std::vector<LoadedScene>& scenes, const BuildConfig& bc, uint64_t seed,
-                             uint64_t random_spans) {
+namespace {
+
+template <class V>
+SystemStats run_all(const std::vector<LoadedScene>& scenes, const BuildConfig& bc, uint64_t seed, uint64_t random_spans,
+                    int setup_ii) {
   const auto t0 = std::chrono::steady_clock::now();
   const device::DeviceModel dm = load_device_model(bc.f, bc.coef_hex(), bc.cos_hex());
-  Bench b(bc, dm);
+  Bench<V> b(bc, dm);
   SystemStats out;
+  out.setup_ii = setup_ii;
   const uint32_t tag_mask = (1u << geo_cases::kGeo.tag_bits) - 1;
   for (const LoadedScene& ls : scenes) {
     std::vector<device::GeoSpan> spans;
@@ -236,12 +247,29 @@ SystemStats run_system_stage(const std::vector<LoadedScene>& scenes, const Build
   return out;
 }
 
+}  // namespace
+
+bool system_setup_ii_built(int setup_ii) {
+  return setup_ii == 1 || (SPECULAR_SYSTEM_SETUP_II && (setup_ii == 2 || setup_ii == 4 || setup_ii == 8));
+}
+
+SystemStats run_system_stage(const std::vector<LoadedScene>& scenes, const BuildConfig& bc, uint64_t seed,
+                             uint64_t random_spans, int setup_ii) {
+#if SPECULAR_SYSTEM_SETUP_II
+  if (setup_ii == 2) return run_all<Vspecular_system_ii2>(scenes, bc, seed, random_spans, setup_ii);
+  if (setup_ii == 4) return run_all<Vspecular_system_ii4>(scenes, bc, seed, random_spans, setup_ii);
+  if (setup_ii == 8) return run_all<Vspecular_system_ii8>(scenes, bc, seed, random_spans, setup_ii);
+#endif
+  if (setup_ii != 1) throw std::invalid_argument("SetupII " + std::to_string(setup_ii) + " is not built");
+  return run_all<Vspecular_system>(scenes, bc, seed, random_spans, setup_ii);
+}
+
 void print_system_summary(const SystemStats& s) {
-  std::printf("\nSystem stage: specular_system (setup in hardware -> specular_stream), geometry spans to pixels, %.1f s\n"
+  std::printf("\nSystem stage: specular_system, SetupII %d (setup in hardware -> specular_stream), geometry spans to pixels, %.1f s\n"
               "  bit-exact against setup_fixed + DeviceModel::stream; setup error = fixed-point setup against the scalar\n"
               "  double setup (0.01 %% + 1 LSB); end to end = RTL pixels against C cos^n(psi_i) of the scalar double setup\n"
               "  (device budget + 1 LSB); px/clock with px_ready_i high (fill: from the first accept; steady: first to last pixel)\n",
-              s.seconds);
+              s.setup_ii, s.seconds);
   std::printf("  %-14s %8s %9s %5s %5s %9s %9s %10s %8s %10s %8s %6s\n", "run", "spans", "pixels", "mism", "prot",
               "px/clk", "px/clk", "setup rel", "setup", "e2e rel", "e2e", "e2e");
   std::printf("  %-14s %8s %9s %5s %5s %9s %9s %10s %8s %10s %8s %6s\n", "", "", "", "", "", "fill", "steady",

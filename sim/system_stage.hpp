@@ -49,15 +49,20 @@ struct SystemRunStats {
 };
 
 struct SystemStats {
+  int setup_ii = 1;                  // specular_system's SetupII
   std::vector<SystemRunStats> runs;  // scenes, then "l0", then "random"
   double seconds = 0.0;
   bool ok() const;
 };
 
 // `bc`: the default build configuration (specular_system has its parameter defaults).
-// random_spans: random geometry spans of the random run (0: none).
+// random_spans: random geometry spans of the random run (0: none). setup_ii: specular_system's
+// SetupII (docs/setup_hw.md#sharing-over-setupii-clocks); 1 is always built, 2, 4 and 8 with the
+// CMake option SPECULAR_SYSTEM_SETUP_II (system_setup_ii_built). Throws std::invalid_argument
+// for a SetupII that is not built.
+bool system_setup_ii_built(int setup_ii);
 SystemStats run_system_stage(const std::vector<LoadedScene>& scenes, const BuildConfig& bc, uint64_t seed,
-                             uint64_t random_spans);
+                             uint64_t random_spans, int setup_ii = 1);
 void print_system_summary(const SystemStats& s);
 
 }  // namespace specular::sim
