@@ -198,7 +198,8 @@ def ecp5_runs(path=os.path.join(ROOT, "docs", "fpga_figures.json")):
         if e.get("part") != "ECP5":
             continue
         if e.get("core") == "specular_system":
-            out["specular_system" + (f" {e['config']}" if e.get("config") else "")] = e
+            ii = e.get("setup_ii", 1)
+            out["specular_system" + (f" SetupII={ii}" if ii != 1 else "")] = e
         elif e.get("core") == "phong_stream":
             out[f"phong {e.get('config')}"] = e
     return out

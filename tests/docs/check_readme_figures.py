@@ -284,8 +284,10 @@ FPGA_TABLES = [
 ]
 
 def synth_key(e):
-    """A synthesis-only entry's table key: its core (with the Phong configuration) and part."""
-    return (e["core"] + (f" {e['config']}" if e.get("config") else ""), e["part"])
+    """A synthesis-only entry's table key: its core (with the Phong configuration, or the setup's
+    SetupII when it is not 1) and part."""
+    ii = f" SetupII={e['setup_ii']}" if e.get("setup_ii", 1) != 1 else ""
+    return (e["core"] + (f" {e['config']}" if e.get("config") else "") + ii, e["part"])
 
 
 def synth_entry(d, k):
@@ -360,6 +362,7 @@ NOT_MEASURED = [
     r"`l \+ L \+ 1`|`L \+ 1`",                   # the protocol (docs/interfaces.md)
     r"1-LSB allowance",                          # the check's definition (sim/README.md)
     r"`cos` is 0",                               # mathematics
+    r"SetupII=\d+",                              # a configuration of the hardware setup
 ]
 
 
