@@ -10,6 +10,7 @@
 #include "setup_fixed.hpp"
 
 #include <cstdint>
+#include <cstdlib>
 #include <deque>
 #include <random>
 #include <string>
@@ -138,6 +139,17 @@ inline std::vector<device::GeoSpan> hard_spans() {
   std::vector<device::GeoSpan> v;
   for (const auto& h : geo_cases::hard_cases()) v.push_back(h.g);
   return v;
+}
+
+// The random run of the block tests: SPECULAR_SETUP_RTL_SPANS spans (default 20,000) with the
+// hard cases spread among them.
+inline std::vector<device::GeoSpan> random_spans_with_hard_cases() {
+  const char* env = std::getenv("SPECULAR_SETUP_RTL_SPANS");
+  const size_t total = env ? std::strtoull(env, nullptr, 10) : 20000;
+  std::vector<device::GeoSpan> spans = geo_cases::random_geo_spans(total, 424242);
+  const std::vector<device::GeoSpan> hard = hard_spans();
+  for (size_t i = 0; i < hard.size(); ++i) spans.at((i * 7919) % spans.size()) = hard[i];
+  return spans;
 }
 
 }  // namespace specular::setup_rtl

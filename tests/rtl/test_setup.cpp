@@ -48,11 +48,7 @@ TEST_CASE("setup RTL: hard cases bit-exact, back to back and under backpressure"
 
 TEST_CASE("setup RTL: random spans bit-exact under random gaps, backpressure and resets", "[setup_rtl]") {
   Vsetup m;
-  const char* env = std::getenv("SPECULAR_SETUP_RTL_SPANS");
-  const size_t total = env ? std::strtoull(env, nullptr, 10) : 20000;
-  std::vector<device::GeoSpan> spans = geo_cases::random_geo_spans(total, 424242);
-  const std::vector<device::GeoSpan> hard = hard_spans();
-  for (size_t i = 0; i < hard.size(); ++i) spans.at((i * 7919) % spans.size()) = hard[i];
+  const std::vector<device::GeoSpan> spans = random_spans_with_hard_cases();
   struct Mode {
     double p_valid, p_ready, p_reset;
   };
