@@ -16,7 +16,6 @@
 #include <catch2/catch.hpp>
 
 #include <cstdint>
-#include <cstdlib>
 #include <deque>
 #include <random>
 #include <string>

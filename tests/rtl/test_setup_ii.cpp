@@ -17,7 +17,6 @@
 
 #include <catch2/catch.hpp>
 
-#include <cstdlib>
 #include <tuple>
 #include <vector>
 
