@@ -234,7 +234,52 @@ def goals_figures():
     return out
 
 
+def names_text(names):
+    """Scene names as the prose lists them: "a", "a and b", "a, b and c"; "none" for none."""
+    if not names:
+        return "none"
+    return names[0] if len(names) == 1 else ", ".join(names[:-1]) + " and " + names[-1]
+
+
+SCENE_STAGE_GOAL = 3.0  # M checked pixels per second, every scene (the goal the README states)
+
+
+def scene_stage(d, k):
+    return d.sim["scenes"][k]
+
+
+def scene_stage_rtl_rate(d, k):
+    """M pixels per second of the Verilator run alone: one clock per pixel, its wall time."""
+    x = scene_stage(d, k)
+    return x["pixels"] / x["rtl_seconds"] / 1e6
+
+
+def scene_stage_figures():
+    """The bullets under the scene-stage table (make sim's default run, docs/measured/sim.json)."""
+    names = lambda d: list(d.sim["scenes"])  # noqa: E731
+    met = lambda d: [k for k in names(d) if scene_stage(d, k)["checked_mpix_per_s"] >= SCENE_STAGE_GOAL]  # noqa: E731
+    capped = lambda d: [k for k in names(d) if scene_stage_rtl_rate(d, k) < SCENE_STAGE_GOAL]  # noqa: E731
+    return [
+        (R, r"checked pixels per second on every scene: met on ([\w, ]+?), missed on ([\w, ]+?) \(",
+         [("scene stage: scenes at or above the goal", lambda d: names_text(met(d))),
+          ("scene stage: scenes below the goal",
+           lambda d: names_text([k for k in names(d) if k not in met(d)]))]),
+        (R, r"The Verilator model of `specular_stream` alone runs (\S+)-(\S+) M clocks per second on the scenes, below 3 M on ([\w, ]+?)\.",
+         [("scene stage: RTL alone, M pixels per second (lowest)", lambda d: min(scene_stage_rtl_rate(d, k) for k in names(d))),
+          ("scene stage: RTL alone, M pixels per second (highest)", lambda d: max(scene_stage_rtl_rate(d, k) for k in names(d))),
+          ("scene stage: scenes whose RTL alone is below the goal", lambda d: names_text(capped(d)))]),
+    ]
+
+
 TABLES = [
+    # make sim's scene stage (docs/measured/sim.json, the first configuration's run of each scene).
+    (R, "| scene | pixels | checked M pixels/s |", "docs/measured/sim.json scenes",
+     lambda d: list(d.sim["scenes"]),
+     {"pixels": lambda d, k: scene_stage(d, k)["pixels"],
+      "checked M pixels/s": lambda d, k: scene_stage(d, k)["checked_mpix_per_s"],
+      "RTL alone, M pixels/s": scene_stage_rtl_rate,
+      "RTL's thread, CPU ms": lambda d, k: 1e3 * scene_stage(d, k)["rtl_thread_cpu_seconds"],
+      "other thread, CPU ms": lambda d, k: 1e3 * scene_stage(d, k)["side_thread_cpu_seconds"]}),
     # (document, header start, {column: (name, value function of (Data, key cell))}); the first column
     # is the key; every row must have a source entry and every source entry a row.
     (R, "| scene | spans | pixels per span | H | device |", "scene_bench scenes",
@@ -350,6 +395,8 @@ NOT_MEASURED = [
     r"2-vCPU",                                   # the machine
     r">= 1\.0 x",                                # goal
     r">= 1\.5 x",                                # goal
+    r">= 3 M checked pixels per second",         # goal (scene stage)
+    r"below 3 M on",                             # the same goal
     r"2\.5 or more pixels per span",             # goal
     r">= 5 x on every\s+scene with 8 or more pixels per span",  # goal
     r"4 banks x 4096 x 16 bits = 256 Kbit, 64 block RAMs",
@@ -432,7 +479,7 @@ def check(root, specular=None, listing=False):
             rel = "an upper bound of" if bound else "equal to"
             errors.append(f"{doc}:{line}: figure '{label}' prints {text}, not {rel} its source's {fmt_want(want)}")
 
-    for entry in FIGURES + goals_figures():
+    for entry in FIGURES + goals_figures() + scene_stage_figures():
         doc, pattern, names = entry
         ms = list(re.finditer(expand(pattern), texts[doc]))
         if len(ms) != 1:
