@@ -136,7 +136,9 @@ void shade_pow_cos(const RegisterBatch& regs, const device::Format& f, double* o
 std::vector<Span> order_for_shading(const std::vector<Span>& spans) {
   std::vector<Span> v = spans;
   std::stable_sort(v.begin(), v.end(), [](const Span& a, const Span& b) {
-    return a.light != b.light ? a.light < b.light : a.material < b.material;
+    if (a.light != b.light) return a.light < b.light;
+    if (a.material != b.material) return a.material < b.material;
+    return is_flat(a.setup_in) && !is_flat(b.setup_in);
   });
   return v;
 }

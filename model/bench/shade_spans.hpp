@@ -124,7 +124,10 @@ using specular::cpu_has_avx512;
 void shade_pow_cos(const RegisterBatch& regs, const device::Format& f, double* out);
 
 // The order both methods see the spans of a scene in: by light, then material (a renderer
-// draws material by material), then the raster order (y, x). Stable.
+// draws material by material), then the flat spans (is_flat: every one-pixel span) before
+// the others, each in raster order (y, x). Stable. A rasterizer knows a span is flat when it
+// emits it, so handing those over together costs it nothing; the batched setup then takes
+// them by its flat kernel (docs/system.md#what-is-timed).
 std::vector<Span> order_for_shading(const std::vector<Span>& spans);
 
 namespace detail {

@@ -77,6 +77,13 @@ void setup_scalar(const SpanBatch& in, const device::Format& f, RegisterBatch& o
 void setup_batch(const SpanBatch& in, const device::Format& f, RegisterBatch& out,
                  SimdPath path = SimdPath::automatic);
 
+// A flat span: N1 = N2 and H1 = He exactly (every one-pixel span of a rasterizer, whose two
+// ends are the same pixel, and flat shading under a light and a viewer at infinity). The
+// batched setup takes blocks of mostly flat spans by a kernel of their own
+// (docs/scanline_setup.md#batched-setup), so a producer that hands them over together
+// (host::order_for_shading) gets them set up at that kernel's cost.
+inline bool is_flat(const ScanlineInput& in) { return in.n1 == in.n2 && in.h1 == in.he; }
+
 // Synthetic spans for tests and benchmarks, shaped like those of meshes and of long spans
 // across a highlight: N2 a small to large turn of N1 (10 % equal), H1 near N1 (80 %: inside
 // or near the lobe) or anywhere, He = H1 (light and viewer at infinity, 50 %) or a turn of

@@ -128,7 +128,7 @@ inline int store_block(const SpanBatch& in, RegisterBatch& out, size_t base, con
 }
 
 // Runs the kernels over the batch in blocks of kBlock spans (block-local arrays stay in L1).
-// In a block where at least kFlatNum / kFlatDen of the spans are flat (N1 = N2 and H1 = He exactly)
+// In a block where at least kFlatNum / kFlatDen of the spans are flat (is_flat, setup_batch.hpp)
 // `flat` takes every span and `kernel` the others, gathered; otherwise `kernel` takes the
 // whole block in place. Returns how many spans were left to the scalar setup
 // (status kSpecialStatus).

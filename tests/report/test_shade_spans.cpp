@@ -186,6 +186,36 @@ TEST_CASE("DeviceShader: invalid n codes are dark, len above the counter throws"
   CHECK_THROWS_AS(host::DeviceShader(f).shade(r, big.data()), std::invalid_argument);
 }
 
+TEST_CASE("order_for_shading: by light, material, flat spans first, raster order kept", "[shade_spans]") {
+  // dense_mesh: two lights, two materials, flat and other spans in each.
+  const std::vector<Span> in = rasterize(load_scene("scenes/dense_mesh.json")).spans;
+  // Tag every input span with its index (triangle is not used by the order), so that the output
+  // can be checked as a permutation and for stability.
+  std::vector<Span> tagged = in;
+  for (size_t i = 0; i < tagged.size(); ++i) tagged[i].triangle = static_cast<int>(i);
+  const std::vector<Span> out = host::order_for_shading(tagged);
+  REQUIRE(out.size() == in.size());
+  std::vector<int> seen(in.size(), 0);
+  size_t flats = 0;
+  for (const Span& s : out) ++seen.at(static_cast<size_t>(s.triangle)), flats += host::is_flat(s.setup_in);
+  CHECK(std::all_of(seen.begin(), seen.end(), [](int c) { return c == 1; }));
+  CHECK(flats > 0);
+  CHECK(flats < out.size());
+  auto key = [](const Span& s) { return std::array<int, 3>{s.light, s.material, host::is_flat(s.setup_in) ? 0 : 1}; };
+  for (size_t i = 1; i < out.size(); ++i) {
+    INFO("position " << i);
+    const auto a = key(out[i - 1]), b = key(out[i]);
+    REQUIRE(a <= b);                                      // grouped, flat first in each group
+    if (a == b) REQUIRE(out[i - 1].triangle < out[i].triangle);  // the input (raster) order within
+  }
+  // is_flat is the exact test: a one-pixel span is flat, a turn of one ulp is not.
+  ScanlineInput s = in.front().setup_in;
+  s.n2 = s.n1, s.he = s.h1;
+  CHECK(host::is_flat(s));
+  s.he.x = std::nextafter(s.he.x, 2.0);
+  CHECK_FALSE(host::is_flat(s));
+}
+
 TEST_CASE("shade_phong: the per-pixel truth within float accuracy", "[shade_spans]") {
   // dense_mesh: orthographic, a directional light (constant H) and a point light, two
   // materials; torus_point: point light and perspective camera; duck: directional light and
