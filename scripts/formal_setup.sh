@@ -75,21 +75,9 @@ if [ -n "$mutant" ]; then
     *) echo "$me: unknown mutant '$mutant'" >&2; exit 2 ;;
   esac
   # The copy keeps the filelist's relative paths under OUT_DIR/rtl_NAME/.
-  mut_dir="$out/rtl_${mutant}"
-  rm -rf "$mut_dir"
-  sources=()
-  for f in "${RTL_SOURCES[@]}"; do
-    mkdir -p "$mut_dir/$(dirname "$f")"
-    cp "$f" "$mut_dir/$f"
-    sources+=("$mut_dir/$f")
-  done
-  sed -i "$sed_expr" "$mut_dir/$file"
-  if cmp -s "$file" "$mut_dir/$file"; then
-    echo "$me: mutation '$mutant' did not apply to $file (RTL changed?)" >&2
-    exit 1
-  fi
   echo "$me: mutant '$mutant':"
-  diff "$file" "$mut_dir/$file" || true
+  rtl_mutant_copy "$out/rtl_${mutant}" "$file" "$sed_expr" || exit 1
+  sources=("${MUTANT_SOURCES[@]}")
 fi
 
 tag=${mutant:-setup}

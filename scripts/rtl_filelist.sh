@@ -1,6 +1,6 @@
 # SPDX-License-Identifier: Apache-2.0
 #
-# Sourced by the scripts that read the RTL (synth.sh, fpga.sh, formal.sh, formal_axil.sh,
+# Sourced by the scripts that read the RTL (synth.sh, fpga.sh, the formal*.sh scripts,
 # coverage.sh): rtl_filelist [FILE] reads the filelist (default rtl/specular.f, run from the
 # repository root; format in rtl/README.md) into two arrays:
 #   RTL_SOURCES  the source files in compile order, paths relative to the root
@@ -28,4 +28,26 @@ rtl_filelist() {
     echo "rtl_filelist: $f lists no source" >&2
     return 1
   fi
+}
+
+# rtl_mutant_copy DIR FILE SED_EXPR (after rtl_filelist): copies every file of RTL_SOURCES into
+# DIR under its relative path, applies the sed expression to the copy of FILE (a path of
+# RTL_SOURCES), prints the difference, and sets MUTANT_SOURCES to the copies in compile order.
+# The formal scripts' mutant runs read those instead of rtl/, which is never edited. Returns 1
+# (with a message) when the expression changes nothing: the RTL changed under the mutation.
+rtl_mutant_copy() {
+  local dir=$1 file=$2 expr=$3 f
+  rm -rf "$dir"
+  MUTANT_SOURCES=()
+  for f in "${RTL_SOURCES[@]}"; do
+    mkdir -p "$dir/$(dirname "$f")"
+    cp "$f" "$dir/$f"
+    MUTANT_SOURCES+=("$dir/$f")
+  done
+  sed -i "$expr" "$dir/$file"
+  if cmp -s "$file" "$dir/$file"; then
+    echo "rtl_mutant_copy: the mutation did not apply to $file (RTL changed?)" >&2
+    return 1
+  fi
+  diff "$file" "$dir/$file" || true
 }
