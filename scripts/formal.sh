@@ -225,10 +225,26 @@ if [ -n "$mutant" ]; then
   # Bounded model check from reset (ABC bmc3): a counterexample is a real trace.
   log="$out/bmc_${tag}.log"
   echo "formal.sh: ABC bmc3 from reset, ${depth} cycles"
-  yosys-abc -c "read_aiger $aig; fold; orpos; strash; dc2; bmc3 -F ${depth}" > "$log" 2>&1 || status=1
+  cex="$out/cex_${tag}.aiw"
+  rm -f "$cex"
+  yosys-abc -c "read_aiger $aig; fold; orpos; strash; dc2; bmc3 -F ${depth}; write_cex -a $cex" > "$log" 2>&1 || status=1
   grep -E "asserted|No output" "$log" || true
   if [ $status -eq 0 ] && grep -q "was asserted in frame" "$log"; then
-    echo "formal.sh: PASS: mutant '$mutant' is caught (a property fails; $log)"
+    # The counterexample's inputs, one line per cycle from reset (the AIGER witness: line 1
+    # the initial state, then one line of input bits per cycle, named by the map file).
+    if [ -f "$cex" ]; then
+      awk -v ports="rst_ni span_valid_i span_len_i span_tag_i px_ready_i" '
+        FNR == NR { if ($1 == "input") { name[$2] = $4; pos[$2] = $3 } next }
+        FNR == 1 { next }
+        { sub(/#.*/, ""); if ($0 == "") next
+          delete v
+          for (i = 0; i < length($0); i++) if (i in name) v[name[i]] += substr($0, i + 1, 1) * 2 ^ pos[i]
+          line = sprintf("  cycle %2d:", FNR - 2)
+          n = split(ports, p, " ")
+          for (k = 1; k <= n; k++) line = line sprintf(" %s=%d", p[k], v[p[k]])
+          print line }' "$out/model_${tag}.aim" "$cex" || true
+    fi
+    echo "formal.sh: PASS: mutant '$mutant' is caught (a property fails; $log, witness $cex)"
     exit 0
   fi
   echo "formal.sh: FAIL: mutant '$mutant' was not caught (see $log)" >&2
