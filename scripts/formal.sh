@@ -184,42 +184,12 @@ if grep -q "Resizing cell port" "$out/yosys_${tag}.log"; then
   exit 1
 fi
 
-# The solver: ABC (yosys-abc, which comes with Yosys) on the bit-level model as AIGER.
-# Every register starts at 0 (setundef -init, as sat -set-init-zero), the harness's outputs
-# are dropped, each assert becomes an AIGER bad-state output and each assume an AIGER
-# constraint; ABC's fold turns the constraints into the outputs (an output counts only if
-# every constraint has held in its cycle and all earlier ones: the assumptions hold in
-# every cycle, as with sat -set-assumes).
+# The solver: ABC on the AIGER of the model (scripts/formal_abc.sh).
+# shellcheck source=scripts/formal_abc.sh
+source scripts/formal_abc.sh
 aig="$out/model_${tag}.aig"
 status=0
-yosys -q -l "$out/aiger_${tag}.log" -p "
-  read_rtlil $out/model_${tag}.il
-  setattr -unset keep
-  setundef -zero -init
-  delete -output
-  opt -full -nosdff -nodffe
-  dffunmap
-  techmap
-  opt -fast -nosdff -nodffe
-  dffunmap
-  abc -g AND -fast
-  opt_clean
-  tee -o $out/aiger_${tag}_stat.txt stat
-  write_aiger -I -B -zinit -map $out/model_${tag}.aim $aig
-" > /dev/null 2>&1 || status=1
-# The AIGER header (aig M I L O A B C ...) must carry one bad-state output per $assert cell
-# and one constraint per $assume cell: nothing is lost on the way.
-read -r _ _ _ _ _ _ n_bad n_constr _ < <(head -n 1 "$aig" 2>/dev/null || true)
-n_assert=$(sed -n 's/^ *\$assert *\([0-9]*\)$/\1/p' "$out/aiger_${tag}_stat.txt" 2>/dev/null | tail -1)
-n_assume=$(sed -n 's/^ *\$assume *\([0-9]*\)$/\1/p' "$out/aiger_${tag}_stat.txt" 2>/dev/null | tail -1)
-if [ $status -ne 0 ] || [ -z "${n_assert}" ] || [ "${n_bad:-x}" != "$n_assert" ] \
-     || [ "${n_constr:-x}" != "${n_assume:-0}" ]; then
-  tail -20 "$out/aiger_${tag}.log" >&2
-  echo "formal.sh: FAIL: AIGER conversion (${n_bad:-?} bad states for ${n_assert:-?} asserts," \
-       "${n_constr:-?} constraints for ${n_assume:-?} assumes; logs in $out)" >&2
-  exit 1
-fi
-echo "formal.sh: model: $(head -n 1 "$aig" | cut -d' ' -f3-4 | awk '{print $1 " inputs, " $2 " registers"}'), ${n_bad} asserts, ${n_constr} assumes"
+formal_abc_export formal.sh "$out/model_${tag}.il" "$out/model_${tag}" || exit 1
 
 if [ -n "$mutant" ]; then
   # Bounded model check from reset (ABC bmc3): a counterexample is a real trace.
@@ -251,45 +221,10 @@ if [ -n "$mutant" ]; then
   exit 1
 fi
 
-# The unbounded proof, two checks on the same AIGER:
-# 1. Base case: ABC bmc3 from reset over FORMAL_BASE cycles (>= the induction depth): no
-#    property fails in cycles 0 .. FORMAL_BASE - 1.
-# 2. Induction step: ABC scorr -o (signal correspondence restricted to the outputs) proves
-#    every output constant 0 by FORMAL_K-step induction: from any state (not only reachable
-#    ones) in which every property and assumption held for FORMAL_K cycles, and the
-#    assumptions hold in the next, each property holds in the next. Every property is
-#    assumed in the earlier cycles and checked on its own in the last one, which is
-#    sat -tempinduct's induction step split into one SAT call per property (a candidate
-#    that fails or runs out of conflicts is dropped, never kept). The proven outputs
-#    become constant 0; the proof holds only if the reduced model is the constant 0:
-#    no register, no gate, its one output (all outputs ORed) literal 0.
+# The unbounded proof (scripts/formal_abc.sh): base case bmc3 from reset over FORMAL_BASE
+# cycles, induction step scorr -o, FORMAL_K steps, both on the same AIGER.
 # Measured (rtl/formal/README.md#run-time): the step takes under a second; Yosys's sat
 # -tempinduct (minisat, all properties in one SAT call) took 99 to 158 CPU s and ABC's
 # ind -F 2 (the same, in ABC's solver) 48 to 130 CPU s, depending on the netlist's
 # structure.
-if [ "$base" -lt "$kind" ]; then
-  echo "formal.sh: FORMAL_BASE ($base) must be at least FORMAL_K ($kind)" >&2
-  exit 2
-fi
-base_log="$out/base_${tag}.log"
-echo "formal.sh: base case: ABC bmc3 from reset, ${base} cycles"
-yosys-abc -c "read_aiger $aig; fold; orpos; strash; dc2; bmc3 -F ${base}" > "$base_log" 2>&1 || status=1
-grep -E "asserted|No output" "$base_log" || true
-if [ $status -ne 0 ] || ! grep -q "No output asserted in ${base} frames" "$base_log"; then
-  echo "formal.sh: FAIL: base case (a property fails from reset, or no result; $base_log)" >&2
-  exit 1
-fi
-step_log="$out/step_${tag}.log"
-reduced="$out/step_${tag}.aig"
-rm -f "$reduced"
-echo "formal.sh: induction step: ABC scorr -o, ${kind}-step induction"
-yosys-abc -c "read_aiger $aig; fold; strash; scorr -o -F ${kind} -C 10000000 -v; orpos; strash; print_stats; write_aiger $reduced" \
-  > "$step_log" 2>&1 || status=1
-grep -E "SAT calls|NBeg|lat =" "$step_log" | sed 's/\x1b\[[0-9;]*m//g' || true
-# A binary AIGER without registers and gates whose one output is literal 0: "aig M I 0 1 0", "0".
-if [ $status -ne 0 ] || [ ! -f "$reduced" ] \
-     || ! [[ "$(head -n 2 "$reduced" | tr '\n' ' ')" =~ ^aig\ [0-9]+\ [0-9]+\ 0\ 1\ 0\ 0\ $ ]]; then
-  echo "formal.sh: FAIL: induction step (some property is not proven; $step_log)" >&2
-  exit 1
-fi
-echo "formal.sh: PASS: every property proven (base case ${base} cycles + ${kind}-step induction)"
+formal_abc_prove formal.sh "$out/model_${tag}" "$base" "$kind" || exit 1
