@@ -42,7 +42,7 @@ build: configure
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE formal_long
 
-# The formal proofs and their mutant runs alone (about two minutes; make test runs them too).
+# The formal proofs and their mutant runs alone (about a minute on two cores; make test runs them too).
 formal: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -R '^rtl_formal_'
 

@@ -15,9 +15,10 @@
 # unit (cutpoint u_dut.intensity: a free value every clock), maps the cells to single bits
 # (simplemap) so that opt_clean drops every register bit and gate left without a reader (the
 # span setup's multipliers, the accumulators, phong_dot, phong_norm, phong_pow), maps the
-# asynchronous reset for the solver (async2sync) and proves with Yosys's own SAT solver:
-# sat -tempinduct (base case from reset and induction step, up to FORMAL_K = 4 steps).
-# A pass is an unbounded proof. Exit status 0 when proven, 1 otherwise.
+# asynchronous reset for the solver (async2sync) and proves with ABC on the model's AIGER
+# (scripts/formal_abc.sh): a base case from reset (bmc3, FORMAL_BASE = 4 cycles) and a
+# FORMAL_K = 1 step induction (scorr -o, one SAT call per property). A pass is an
+# unbounded proof. Exit status 0 when proven, 1 otherwise.
 #
 # --bounded: the properties alone (FV_PROPERTIES_ONLY, no invariants) checked by a bounded
 # model check from reset over FORMAL_DEPTH cycles (default Latency + 6: a span accepted in
@@ -54,7 +55,7 @@ elif [ "${1:-}" = "--mutant" ]; then
   shift 2
 fi
 out=${1:-$(mktemp -d)}
-kind=${FORMAL_K:-4}
+kind=${FORMAL_K:-1}
 
 cd "$root"
 mkdir -p "$out"
@@ -194,19 +195,14 @@ if grep -q "Resizing cell port" "$out/yosys_${tag}.log"; then
   exit 1
 fi
 
-log="$out/sat_${tag}.log"
 if [ -z "$mutant" ] && [ -z "$bounded" ]; then
-  echo "$me: yosys sat -tempinduct, up to ${kind} steps (span pipe ${sp_depth}, PipeDepth ${depth})"
-  cmd="sat -tempinduct -prove-asserts -set-assumes -set-init-zero -maxsteps ${kind} -dump_vcd $out/cex_${tag}.vcd"
-  status=0
-  yosys -q -l "$log" -p "read_rtlil $out/model_${tag}.il; $cmd" > /dev/null 2>&1 || status=1
-  grep -E "induction|proven|SUCCESS|FAIL|ERROR" "$log" | head -20 || true
-  if [ $status -ne 0 ] || ! grep -q "Induction step proven: SUCCESS" "$log" \
-       || grep -q "FAIL" "$log"; then
-    echo "$me: FAIL (logs in $out)" >&2
-    exit 1
-  fi
-  echo "$me: PASS: every property proven (temporal induction)"
+  # The unbounded proof with ABC (scripts/formal_abc.sh): base case bmc3 from reset over
+  # FORMAL_BASE = 4 cycles, induction step scorr -o, FORMAL_K = 1 step, on the same AIGER.
+  echo "$me: ABC proof (span pipe ${sp_depth}, PipeDepth ${depth})"
+  # shellcheck source=scripts/formal_abc.sh
+  source scripts/formal_abc.sh
+  formal_abc_export "$me" "$out/model_${tag}.il" "$out/model_${tag}" || exit 1
+  formal_abc_prove "$me" "$out/model_${tag}" "${FORMAL_BASE:-4}" "$kind" || exit 1
   exit 0
 fi
 
