@@ -78,38 +78,25 @@ sources=("${files[@]}")
 incflags=""
 for d in "${RTL_INCDIRS[@]+"${RTL_INCDIRS[@]}"}"; do incflags+=" -I$d"; done
 if [ -n "$mutant" ]; then
-  # The copy keeps the filelist's relative paths under OUT_DIR/rtl_NAME/.
-  mut_dir="$out/rtl_${mutant}"
-  rm -rf "$mut_dir"
-  sources=()
-  for f in "${files[@]}"; do
-    mkdir -p "$mut_dir/$(dirname "$f")"
-    cp "$f" "$mut_dir/$f"
-    sources+=("$mut_dir/$f")
-  done
-  rtl_dir="$mut_dir/rtl"
   case "$mutant" in
     adv_ignores_room)
-      file=specular_out_buf.sv
+      file=rtl/specular_out_buf.sv
       sed_expr='s/adv_q *<= count_d <= 2'"'"'d1;/adv_q   <= 1'"'"'b1;/' ;;
     pop_ignores_ready)
-      file=specular_out_buf.sv
+      file=rtl/specular_out_buf.sv
       sed_expr='s/assign pop *= (count_q != 2'"'"'d0) & px_ready_i;/assign pop  = (count_q != 2'"'"'d0);/' ;;
     no_last_shift)
-      file=specular_control.sv
+      file=rtl/specular_control.sv
       sed_expr='s/vld_q\[0\] & cnt_zero_i}/1'"'"'b0}/' ;;
     ready_ignores_busy)
-      file=specular_control.sv
+      file=rtl/specular_control.sv
       sed_expr='s/assign free0 *= ~vld_q\[0\] | cnt_zero_i;/assign free0 = 1'"'"'b1;/' ;;
     *) echo "formal.sh: unknown mutant '$mutant'" >&2; exit 2 ;;
   esac
-  sed -i "$sed_expr" "$rtl_dir/$file"
-  if cmp -s "rtl/$file" "$rtl_dir/$file"; then
-    echo "formal.sh: mutation '$mutant' did not apply to $file (RTL changed?)" >&2
-    exit 1
-  fi
+  # The copy keeps the filelist's relative paths under OUT_DIR/rtl_NAME/.
   echo "formal.sh: mutant '$mutant':"
-  diff "rtl/$file" "$rtl_dir/$file" || true
+  rtl_mutant_copy "$out/rtl_${mutant}" "$file" "$sed_expr" "${files[@]}" || exit 1
+  sources=("${MUTANT_SOURCES[@]}")
 fi
 
 tag=${mutant:-stream}

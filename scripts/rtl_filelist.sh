@@ -30,16 +30,19 @@ rtl_filelist() {
   fi
 }
 
-# rtl_mutant_copy DIR FILE SED_EXPR (after rtl_filelist): copies every file of RTL_SOURCES into
-# DIR under its relative path, applies the sed expression to the copy of FILE (a path of
-# RTL_SOURCES), prints the difference, and sets MUTANT_SOURCES to the copies in compile order.
-# The formal scripts' mutant runs read those instead of rtl/, which is never edited. Returns 1
-# (with a message) when the expression changes nothing: the RTL changed under the mutation.
+# rtl_mutant_copy DIR FILE SED_EXPR [SOURCE...] (after rtl_filelist): copies the sources
+# (default: every file of RTL_SOURCES) into DIR under their relative paths, applies the sed
+# expression to the copy of FILE (one of them), prints the difference, and sets
+# MUTANT_SOURCES to the copies in the same order. The formal scripts' mutant runs read those
+# instead of rtl/, which is never edited. Returns 1 (with a message) when the expression
+# changes nothing: the RTL changed under the mutation.
 rtl_mutant_copy() {
   local dir=$1 file=$2 expr=$3 f
+  shift 3
+  [ $# -gt 0 ] || set -- "${RTL_SOURCES[@]}"
   rm -rf "$dir"
   MUTANT_SOURCES=()
-  for f in "${RTL_SOURCES[@]}"; do
+  for f in "$@"; do
     mkdir -p "$dir/$(dirname "$f")"
     cp "$f" "$dir/$f"
     MUTANT_SOURCES+=("$dir/$f")
