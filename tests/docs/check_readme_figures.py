@@ -183,7 +183,7 @@ FIGURES = [
       ("UP5K logic cells available", lambda d: d.pnr("specular_stream", "UP5K")["lcs_available"]),
       ("block RAMs", lambda d: max(r["brams"] for r in d.fpga["runs"] if r["core"] in ("specular_unit", "specular_stream")))]),
     # System speed
-    (R, r"2-vCPU AMD EPYC without AVX-512 shared with other jobs, `--reps (\d+) --min-time (\S+)`\)",
+    (R, r"2-vCPU AMD EPYC without AVX-512 with nothing else running, `--reps (\d+) --min-time (\S+)`\)",
      [("scene_bench rounds", lambda d: int(re.search(r"median of (\d+) ", d.sb["timer"]).group(1))),
       ("scene_bench min time (s)", lambda d: float(re.search(r">= (\S+) s", d.sb["timer"]).group(1)))]),
 ]
