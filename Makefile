@@ -14,7 +14,7 @@ all: build
 help:
 	@echo "make sim     build everything, run the RTL regression (every build configuration, the stream, scenes)"
 	@echo "make test    build everything, run every test with ctest (what CI runs)"
-	@echo "make formal-long  the slow formal checks of specular_setup: its bounded check and mutant (ctest label formal_long)"
+	@echo "make formal-long  the slow formal checks of specular_setup: its proof, bounded check and mutant (ctest label formal_long)"
 	@echo "make formal  the formal proofs alone (specular_stream's handshakes, specular_axil's AXI4-Lite rules, phong_stream's bounded check) and their mutants"
 	@echo "make sim-setup-ii  the system stage at SetupII 1, 2, 4 and 8 (turns on SPECULAR_SYSTEM_SETUP_II in $(BUILD): three more models)"
 	@echo "make roms    regenerate every configuration's ROM hex files and roms/build_configs.cmake (romgen --all)"
@@ -42,11 +42,11 @@ build: configure
 test: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE formal_long
 
-# The formal proofs and their mutant runs alone (1 min 40 s on two cores; make test runs them too).
+# The formal proofs and their mutant runs alone (48 s on two cores; make test runs them too).
 formal: build
 	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -R '^rtl_formal_'
 
-# The slow formal checks of specular_setup, its bounded check and its mutant (rtl/formal/README.md):
+# The slow formal checks of specular_setup, its proof, bounded check and mutant (rtl/formal/README.md):
 # minutes, so outside make test and make formal.
 formal-long: deps
 	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DSPECULAR_FORMAL_LONG=ON > /dev/null
