@@ -195,43 +195,24 @@ if grep -q "Resizing cell port" "$out/yosys_${tag}.log"; then
   exit 1
 fi
 
+# shellcheck source=scripts/formal_abc.sh
+source scripts/formal_abc.sh
 if [ -z "$mutant" ] && [ -z "$bounded" ]; then
   # The unbounded proof with ABC (scripts/formal_abc.sh): base case bmc3 from reset over
   # FORMAL_BASE = 4 cycles, induction step scorr -o, FORMAL_K = 1 step, on the same AIGER.
   echo "$me: ABC proof (span pipe ${sp_depth}, PipeDepth ${depth})"
-  # shellcheck source=scripts/formal_abc.sh
-  source scripts/formal_abc.sh
   formal_abc_export "$me" "$out/model_${tag}.il" "$out/model_${tag}" || exit 1
   formal_abc_prove "$me" "$out/model_${tag}" "${FORMAL_BASE:-4}" "$kind" || exit 1
   exit 0
 fi
 
-# Bounded runs: ABC's bmc3 on the bit-level model (AIGER; yosys-abc comes with Yosys). Every
-# register starts at 0 (setundef -init, as sat -set-init-zero), the harness's outputs are
-# dropped, the assumptions become AIGER constraints (fold) and the asserts one output (orpos).
+# Bounded runs: ABC's bmc3 on the same AIGER as the proof's (formal_abc_export: registers start
+# at 0, the assumptions become constraints, folded here, and the asserts one output, orpos).
 # On this model bmc3 is far faster than Yosys's sat -seq (rtl/formal/README.md).
 log="$out/bmc_${tag}.log"
 echo "$me: ABC bmc3 from reset, ${bmc_depth} cycles (span pipe ${sp_depth}, PipeDepth ${depth}, latency ${latency})"
+formal_abc_export "$me" "$out/model_${tag}.il" "$out/model_${tag}" || exit 1
 status=0
-yosys -q -l "$out/aiger_${tag}.log" -p "
-  read_rtlil $out/model_${tag}.il
-  setattr -unset keep
-  setundef -zero -init
-  delete -output
-  opt -full -nosdff -nodffe
-  dffunmap
-  techmap
-  opt -fast -nosdff -nodffe
-  dffunmap
-  abc -g AND -fast
-  opt_clean
-  write_aiger -I -B -zinit -map $out/model_${tag}.aim $out/model_${tag}.aig
-" > /dev/null 2>&1 || status=1
-if [ $status -ne 0 ]; then
-  tail -20 "$out/aiger_${tag}.log" >&2
-  echo "$me: FAIL: AIGER conversion (logs in $out)" >&2
-  exit 1
-fi
 yosys-abc -c "read_aiger $out/model_${tag}.aig; fold; orpos; strash; dc2; bmc3 -F ${bmc_depth}" > "$log" 2>&1 || status=1
 grep -E "asserted|No output" "$log" || true
 

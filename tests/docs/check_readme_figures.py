@@ -221,8 +221,9 @@ def goals_figures():
                  ("2.5 or more pixels per span: highest device x", lambda d: max(d.best(x) for x in mid(d)))]))
     out.append((R, r"\(grazing_plane, wide_glint\):\s+(met|missed) \((\S+)-(\S+) x\)",
                 [("8 or more pixels per span: met or missed",
-                  lambda d: "met" if all(d.best(x) >= 5.0 for x in d.scenes(LONG)) else "missed")]
-                + ranged(R, "", "8 or more pixels per span: device x", lambda d, x: d.best(x), LONG)[2]))
+                  lambda d: "met" if all(d.best(x) >= 5.0 for x in d.scenes(LONG)) else "missed"),
+                 ("8 or more pixels per span: device x (lowest)", lambda d: min(d.best(x) for x in d.scenes(LONG))),
+                 ("8 or more pixels per span: device x (highest)", lambda d: max(d.best(x) for x in d.scenes(LONG)))]))
     out.append((R, r"the span rate of the core at (\S+) MHz: missed on\s+([\w, ]+?) \(bunny (\S+) x, dense_mesh (\S+) x,"
                    r" spheres (\S+) x\); met on the other scenes",
                 [("scene_bench Fmax (docs/fpga_figures.json at the run)", lambda d: d.sb["fmax_mhz"]),
