@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 #
 # Formal proof of specular_stream's handshakes (properties and reduced widths in
-# rtl/formal/specular_stream_fv.sv, overview in rtl/formal/README.md). Run by ctest as
+# rtl/core/formal/specular_stream_fv.sv, overview in docs/formal.md). Run by ctest as
 # rtl_formal_stream and rtl_formal_stream_mutant.
 #
 #   scripts/formal.sh [--mutant NAME] [OUT_DIR]
@@ -18,7 +18,7 @@
 #                   property is assumed in the step's first cycle and proven in the next,
 #                   one SAT call per property.
 # Both passing is an unbounded proof (base case from reset + induction step, one model).
-# Earlier engines (rtl/formal/README.md#run-time): Yosys's sat -tempinduct took 99 to 158
+# Earlier engines (docs/formal.md#run-time): Yosys's sat -tempinduct took 99 to 158
 # CPU s on this model, ABC's ind -F 2 48 to 130 CPU s; the flow now takes about 11 CPU s,
 # most of it Yosys reading the sources. yosys-smtbmc with Debian's z3 4.8.12 did not finish
 # step 0 of this model in 10 min, and boolector hit a recursion error in smtbmc's unroller.
@@ -59,7 +59,7 @@ out=$(cd "$out" && pwd)
 # The sources and the include directories: rtl/specular.f (rtl/README.md).
 # shellcheck source=scripts/rtl_filelist.sh
 source scripts/rtl_filelist.sh
-rtl_filelist || exit 1
+rtl_filelist rtl/core/core.f || exit 1
 # Read order. Yosys names the cells and wires it creates after the order in which it reads
 # the sources (and after source line numbers), the model is written sorted by name, and
 # with Yosys's sat (minisat, the earlier engine) the induction step's time swung with the
@@ -80,16 +80,16 @@ for d in "${RTL_INCDIRS[@]+"${RTL_INCDIRS[@]}"}"; do incflags+=" -I$d"; done
 if [ -n "$mutant" ]; then
   case "$mutant" in
     adv_ignores_room)
-      file=rtl/specular_out_buf.sv
+      file=rtl/prim/specular_out_buf.sv
       sed_expr='s/adv_q *<= count_d <= 2'"'"'d1;/adv_q   <= 1'"'"'b1;/' ;;
     pop_ignores_ready)
-      file=rtl/specular_out_buf.sv
+      file=rtl/prim/specular_out_buf.sv
       sed_expr='s/assign pop *= (count_q != 2'"'"'d0) & px_ready_i;/assign pop  = (count_q != 2'"'"'d0);/' ;;
     no_last_shift)
-      file=rtl/specular_control.sv
+      file=rtl/core/specular_control.sv
       sed_expr='s/vld_q\[0\] & cnt_zero_i}/1'"'"'b0}/' ;;
     ready_ignores_busy)
-      file=rtl/specular_control.sv
+      file=rtl/core/specular_control.sv
       sed_expr='s/assign free0 *= ~vld_q\[0\] | cnt_zero_i;/assign free0 = 1'"'"'b1;/' ;;
     *) echo "formal.sh: unknown mutant '$mutant'" >&2; exit 2 ;;
   esac
@@ -105,9 +105,9 @@ defines="-DSYNTHESIS"
 if [ -n "$mutant" ]; then
   defines+=" -DFV_PROPERTIES_ONLY"
 fi
-read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/formal/specular_stream_fv.sv"
+read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/core/formal/specular_stream_fv.sv"
 # The tag delay line: one register of Depth * TagBits bits (stages 1 .. PipeDepth - 1,
-# stage j in bits [j*TagBits-1 -: TagBits]; rtl/specular_delay.sv). Latency = PipeDepth + 1
+# stage j in bits [j*TagBits-1 -: TagBits]; rtl/prim/specular_delay.sv). Latency = PipeDepth + 1
 # (the output buffer) = tag line length + 2.
 yosys -q -p "
   ${read_cmd}
@@ -163,7 +163,7 @@ yosys -q -l "$out/yosys_${tag}.log" -p "
   check -assert
   write_rtlil $out/model_${tag}.il
 "
-# The harness declares the core's ports again (rtl/formal/README.md): a width that differs
+# The harness declares the core's ports again (docs/formal.md): a width that differs
 # from the core's fails here instead of being resized in silence.
 if grep -q "Resizing cell port" "$out/yosys_${tag}.log"; then
   grep "Resizing cell port" "$out/yosys_${tag}.log" | head -5 >&2
@@ -210,7 +210,7 @@ fi
 
 # The unbounded proof (scripts/formal_abc.sh): base case bmc3 from reset over FORMAL_BASE
 # cycles, induction step scorr -o, FORMAL_K steps, both on the same AIGER.
-# Measured (rtl/formal/README.md#run-time): the step takes under a second; Yosys's sat
+# Measured (docs/formal.md#run-time): the step takes under a second; Yosys's sat
 # -tempinduct (minisat, all properties in one SAT call) took 99 to 158 CPU s and ABC's
 # ind -F 2 (the same, in ABC's solver) 48 to 130 CPU s, depending on the netlist's
 # structure.

@@ -3,7 +3,7 @@
 # The unbounded proof with ABC (yosys-abc, which comes with Yosys) on the AIGER of a formal
 # model. Sourced by scripts/formal.sh, scripts/formal_phong.sh and scripts/formal_setup.sh;
 # the flow, what was measured and how a false property fails it:
-# rtl/formal/README.md#run-time.
+# docs/formal.md#run-time.
 #
 #   formal_abc_export ME MODEL.il PREFIX   writes PREFIX.aig, PREFIX.aim (input and latch
 #                                          names), PREFIX_aiger.log; 0 when every assert

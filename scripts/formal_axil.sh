@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 #
 # Formal proof of specular_axil's AXI4-Lite handshake rules (harness and properties in
-# rtl/formal/specular_axil_fv.sv, overview in rtl/formal/README.md). Run by ctest as
+# rtl/axi/formal/specular_axil_fv.sv, overview in docs/formal.md). Run by ctest as
 # rtl_formal_axil and rtl_formal_axil_mutant.
 #
 #   scripts/formal_axil.sh [--mutant NAME] [OUT_DIR]
@@ -16,7 +16,7 @@
 # Exit status 0 when proven, 1 otherwise.
 #
 # --mutant NAME copies the files of rtl/specular.f into OUT_DIR, applies one mutation to
-# the copy of rtl/specular_axil.sv (never to rtl/), leaves out the strengthening
+# the copy of rtl/axi/specular_axil.sv (never to rtl/), leaves out the strengthening
 # invariants (FV_PROPERTIES_ONLY) and runs a bounded model check from reset
 # (FORMAL_DEPTH = 10 cycles); exit 0 only if the solver finds a counterexample.
 # Mutations (one line each):
@@ -45,13 +45,13 @@ out=$(cd "$out" && pwd)
 # The sources in compile order and the include directories: rtl/specular.f (rtl/README.md).
 # shellcheck source=scripts/rtl_filelist.sh
 source scripts/rtl_filelist.sh
-rtl_filelist || exit 1
+rtl_filelist rtl/axi/axi.f || exit 1
 sources=("${RTL_SOURCES[@]}")
 incflags=""
 for d in "${RTL_INCDIRS[@]+"${RTL_INCDIRS[@]}"}"; do incflags+=" -I$d"; done
 
 if [ -n "$mutant" ]; then
-  file=rtl/specular_axil.sv
+  file=rtl/axi/specular_axil.sv
   case "$mutant" in
     write_without_w)
       sed_expr='s/assign do_write *= aw_full_q & w_full_q & ~bvalid_q;/assign do_write = aw_full_q \& ~bvalid_q;/' ;;
@@ -90,7 +90,7 @@ t0=$(date +%s)
 # contents and drives each of its outputs from an \$anyseq cell. Exactly one cell u_stream
 # (specular_axis's specular_stream) must exist, else the RTL changed under the script.
 yosys -q -l "$out/yosys_${tag}.log" -p "
-  read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/formal/specular_axil_fv.sv
+  read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/axi/formal/specular_axil_fv.sv
   hierarchy -check -top specular_axil_fv
   proc
   select -assert-count 1 */u_stream
@@ -105,7 +105,7 @@ yosys -q -l "$out/yosys_${tag}.log" -p "
   check -assert
   write_rtlil $out/model_${tag}.il
 " > /dev/null
-# The harness declares the core's ports again (rtl/formal/README.md): a width that differs
+# The harness declares the core's ports again (docs/formal.md): a width that differs
 # from the core's fails here instead of being resized in silence.
 if grep -q "Resizing cell port" "$out/yosys_${tag}.log"; then
   grep "Resizing cell port" "$out/yosys_${tag}.log" | head -5 >&2

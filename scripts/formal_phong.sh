@@ -2,8 +2,8 @@
 # SPDX-License-Identifier: Apache-2.0
 #
 # Formal proof of phong_stream's handshakes (harness, properties and reduced widths in
-# rtl/formal/phong_stream_fv.sv; overview, depths and run times in
-# rtl/formal/README.md#phong_stream-the-span-and-pixel-handshakes). Run by ctest as
+# rtl/competitors/phong/formal/phong_stream_fv.sv; overview, depths and run times in
+# docs/formal.md#phong_stream-the-span-and-pixel-handshakes). Run by ctest as
 # rtl_formal_phong* (tests/rtl/CMakeLists.txt).
 #
 #   scripts/formal_phong.sh [--bounded | --mutant NAME] [OUT_DIR]
@@ -27,7 +27,7 @@
 # property fails.
 #
 # --mutant NAME copies the files of rtl/specular.f into OUT_DIR, applies one mutation to the
-# copy of rtl/phong_stream.sv (never to rtl/), leaves out the invariants and runs a bounded
+# copy of rtl/competitors/phong/phong_stream.sv (never to rtl/), leaves out the invariants and runs a bounded
 # check over FORMAL_DEPTH cycles (default Latency + 12; the datapath cut as above); exit 0
 # only if the register-only check of geo_ready_o or bmc3 catches it. Mutations (one line
 # each):
@@ -64,13 +64,13 @@ out=$(cd "$out" && pwd)
 # The sources in compile order and the include directories: rtl/specular.f (rtl/README.md).
 # shellcheck source=scripts/rtl_filelist.sh
 source scripts/rtl_filelist.sh
-rtl_filelist || exit 1
+rtl_filelist rtl/competitors/phong/phong.f || exit 1
 sources=("${RTL_SOURCES[@]}")
 incflags=""
 for d in "${RTL_INCDIRS[@]+"${RTL_INCDIRS[@]}"}"; do incflags+=" -I$d"; done
 
 if [ -n "$mutant" ]; then
-  file=rtl/phong_stream.sv
+  file=rtl/competitors/phong/phong_stream.sv
   case "$mutant" in
     valid_drops)
       sed_expr='s/\.px_ready_i (px_ready_i),/.px_ready_i (1'"'"'b1),/' ;;
@@ -98,7 +98,7 @@ defines="-DSYNTHESIS"
 if [ -n "$mutant" ] || [ -n "$bounded" ]; then
   defines+=" -DFV_PROPERTIES_ONLY"
 fi
-read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/formal/phong_stream_fv.sv"
+read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/competitors/phong/formal/phong_stream_fv.sv"
 
 # The depths of the harness: the span pipe's valid line (u_setup.vld_q, setup_stages) and
 # the control's stage valids (u_control.vld_q, PipeDepth). Latency: from the accept edge to
@@ -208,7 +208,7 @@ fi
 
 # Bounded runs: ABC's bmc3 on the same AIGER as the proof's (formal_abc_export: registers start
 # at 0, the assumptions become constraints, folded here, and the asserts one output, orpos).
-# On this model bmc3 is far faster than Yosys's sat -seq (rtl/formal/README.md).
+# On this model bmc3 is far faster than Yosys's sat -seq (docs/formal.md).
 log="$out/bmc_${tag}.log"
 echo "$me: ABC bmc3 from reset, ${bmc_depth} cycles (span pipe ${sp_depth}, PipeDepth ${depth}, latency ${latency})"
 formal_abc_export "$me" "$out/model_${tag}.il" "$out/model_${tag}" || exit 1

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 #
 # Formal proof of specular_setup's handshakes (harness and properties in
-# rtl/formal/specular_setup_fv.sv, overview in rtl/formal/README.md#specular_setup-the-span-handshakes).
+# rtl/setup/formal/specular_setup_fv.sv, overview in docs/formal.md#specular_setup-the-span-handshakes).
 # Run by ctest as rtl_formal_setup and rtl_formal_setup_mutant.
 #
 #   scripts/formal_setup.sh [--bounded | --mutant NAME] [OUT_DIR]
@@ -24,7 +24,7 @@
 # reset reaches the output at cycle Latency + 1). Exit 0 when no property fails.
 #
 # --mutant NAME copies the files of rtl/specular.f into OUT_DIR, applies one mutation to the
-# copy of rtl/specular_setup.sv (never to rtl/), leaves out the strengthening invariants
+# copy of rtl/setup/specular_setup.sv (never to rtl/), leaves out the strengthening invariants
 # (FV_PROPERTIES_ONLY) and runs a bounded model check from reset (FORMAL_DEPTH cycles,
 # default Latency + 6 = 104, as --bounded); exit 0 only if the solver finds a counterexample. The mutant
 # runs keep the datapath cut (the mutations are in the control).
@@ -33,7 +33,7 @@
 #                        reset (P3; the ctest)
 #   ready_ignores_stall  geo_ready_o = 1: spans are accepted while the pipeline is stalled
 #                        and lost (P4); not caught within 104 cycles, it needs about
-#                        2 x Latency (rtl/formal/README.md#specular_setup-the-span-handshakes)
+#                        2 x Latency (docs/formal.md#specular_setup-the-span-handshakes)
 #   tag_one_short        the sideband line (tag) is one register short: a span gets the tag
 #                        of the span behind it (P4)
 set -euo pipefail
@@ -59,13 +59,13 @@ out=$(cd "$out" && pwd)
 # The sources in compile order and the include directories: rtl/specular.f (rtl/README.md).
 # shellcheck source=scripts/rtl_filelist.sh
 source scripts/rtl_filelist.sh
-rtl_filelist || exit 1
+rtl_filelist rtl/setup/setup.f || exit 1
 sources=("${RTL_SOURCES[@]}")
 incflags=""
 for d in "${RTL_INCDIRS[@]+"${RTL_INCDIRS[@]}"}"; do incflags+=" -I$d"; done
 
 if [ -n "$mutant" ]; then
-  file=rtl/specular_setup.sv
+  file=rtl/setup/specular_setup.sv
   case "$mutant" in
     ready_ignores_stall)
       sed_expr='s/assign geo_ready_o = adv;/assign geo_ready_o = 1'"'"'b1;/' ;;
@@ -89,10 +89,10 @@ defines="-DSYNTHESIS"
 if [ -n "$mutant" ] || [ -n "$bounded" ]; then
   defines+=" -DFV_PROPERTIES_ONLY"
 fi
-read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/formal/specular_setup_fv.sv"
+read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/setup/formal/specular_setup_fv.sv"
 
 # Depth of the harness: the length of the valid delay line (one bit per register after the
-# input register; rtl/specular_delay.sv), the descriptor's tau.
+# input register; rtl/prim/specular_delay.sv), the descriptor's tau.
 yosys -q -p "
   ${read_cmd}
   hierarchy -check -top specular_setup_fv

@@ -150,7 +150,7 @@ if [ -n "$phong_cfg" ]; then
     params+=("$g")
   done < <(grep -o '"-G[^ ]*"' <<< "$cfg_line" | sed 's/^"//; s/"$//')
 fi
-# --setup-ii: specular_setup's SetupII (rtl/specular_setup.sv), on the setup or the system.
+# --setup-ii: specular_setup's SetupII (rtl/setup/specular_setup.sv), on the setup or the system.
 if [ -n "$setup_ii" ]; then
   case "$top_arg" in setup|system) ;; *) die_usage "--setup-ii needs --top setup or system (got --top $top_arg)" ;; esac
   case "$setup_ii" in 1|2|4|8) params+=("SetupII=$setup_ii") ;;
@@ -191,11 +191,12 @@ done
 cd "$root"
 mkdir -p "$out"
 out=$(cd "$out" && pwd)
-# The core's sources in compile order and its include directories (rtl/specular.f,
-# rtl/README.md), then the harnesses.
+# The product's and the competitor's sources in compile order and their include directories
+# (rtl/README.md#filelists), then the harnesses.
 # shellcheck source=scripts/rtl_filelist.sh
 source scripts/rtl_filelist.sh
-rtl_filelist || exit 1
+fpga_filelists=(rtl/specular.f rtl/competitors/phong/phong.f)
+rtl_filelist "${fpga_filelists[@]}" || exit 1
 sources=("${RTL_SOURCES[@]}")
 incflags=""
 for d in "${RTL_INCDIRS[@]+"${RTL_INCDIRS[@]}"}"; do incflags+=" -I$d"; done
@@ -213,10 +214,8 @@ core_of()    { case "$1" in unit) echo specular_unit ;; stream) echo specular_st
 run_key() {
   {
     printf '%s\n' "$@" "${params[@]+"${params[@]}"}"
-    for f in "${sources[@]}" rtl/specular.f "$me"; do sha256sum "$f"; done
-    for d in "${RTL_INCDIRS[@]+"${RTL_INCDIRS[@]}"}"; do
-      find "$d" -maxdepth 1 -name '*.svh' -type f -print0 | sort -z | xargs -0 -r sha256sum
-    done
+    for f in "${sources[@]}" "${RTL_FILELISTS[@]}" "$me"; do sha256sum "$f"; done
+    python3 scripts/rtl_filelist.py --includes "${fpga_filelists[@]}" | xargs -r sha256sum
     find roms -name '*.hex' -type f -print0 2>/dev/null | sort -z | xargs -0 -r sha256sum
     for p in "${params[@]+"${params[@]}"}"; do [ -f "${p#*=}" ] && sha256sum "${p#*=}"; done
     yosys -V; nextpnr-ice40 --version 2>&1

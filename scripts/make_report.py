@@ -41,20 +41,17 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 import hw_plane  # noqa: E402  (scripts/hw_plane.py: the hardware plane, section 4b)
 import plot_break_even  # noqa: E402  (scripts/plot_break_even.py, beside this file)
+import rtl_filelist as rtl_filelist_reader  # noqa: E402  (scripts/rtl_filelist.py)
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 
 def rtl_filelist():
-    """rtl/specular.f (rtl/README.md): the synthesizable sources in compile order and the
-    include directories (`+incdir+DIR` lines), absolute; `//` comment lines and blank lines
-    skipped, paths relative to ROOT."""
-    with open(os.path.join(ROOT, "rtl", "specular.f")) as f:
-        lines = [line.strip() for line in f]
-    lines = [line for line in lines if line and not line.startswith("//")]
-    incdirs = [os.path.join(ROOT, line[len("+incdir+"):]) for line in lines if line.startswith("+incdir+")]
-    sources = [os.path.join(ROOT, line) for line in lines if not line.startswith("+")]
-    return sources, incdirs
+    """The device core's filelist rtl/core/core.f expanded by scripts/rtl_filelist.py (the one
+    reader of the format, rtl/README.md#filelists): sources in compile order and include
+    directories, absolute."""
+    exp = rtl_filelist_reader.expand(["rtl/core/core.f"], ROOT)
+    return [os.path.join(ROOT, s) for s in exp.sources], [os.path.join(ROOT, d) for d in exp.incdirs]
 
 
 def rtl_sources():
@@ -266,7 +263,7 @@ class Report:
             self.missing.append("yosys is not on PATH: no cell counts")
             return {}
         if not glob.glob(os.path.join(ROOT, "rtl", "specular_unit.sv")):
-            self.missing.append("rtl/specular_unit.sv missing: no Yosys cell counts")
+            self.missing.append("rtl/core/specular_unit.sv missing: no Yosys cell counts")
             return {}
         t0 = time.time()
         with concurrent.futures.ThreadPoolExecutor(max_workers=self.args.jobs) as pool:

@@ -25,20 +25,20 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 # Equivalent mutants (the behaviour cannot change on any input) are marked EQUIVALENT: in
 # the last field, with the reason; the campaign reports them but does not require a kill.
 mutants=(
-  "carry_drop_neg_dpsi#specular_accumulator.sv#s/hi_q + dhi_q + HiBits'(carry_q)/hi_q + dhi_q + HiBits'(carry_q \\& ~dhi_q[HiBits-1])/#register 8 loses the low half's carry whenever dpsi < 0"
-  "psi0_high_never_loaded#specular_accumulator.sv#s/load_q <= ~sel_i;/load_q <= 1'b0;/#register 8's high half adds dpsi on a span's first pixel instead of loading psi0"
-  "abs_no_complement#specular_angle_mul.sv#s/assign ones_d = psi_i ^ {AccBits{psi_i\\[AccBits-1\\]}};/assign ones_d = psi_i;/#multiplier 11 takes psi instead of |psi| for negative angles"
-  "far_test_ge_high#specular_angle_mul.sv#s/gt_hi_q <= ones_q\\[AccBits-1:LoBits\\] > HalfPiCode/gt_hi_q <= ones_q[AccBits-1:LoBits] >= HalfPiCode/#angles in the last 2^-6 rad below pi/2 count as past pi/2"
-  "coef3_is_2coef#specular_angle_mul.sv#s/coef3_q <= (CoefBits + 2)'(coef_i) + ((CoefBits + 2)'(coef_i) << 1);/coef3_q <= (CoefBits + 2)'(coef_i) << 1;/#the radix-4 digit 3 of multiplier 11 selects 2a"
-  "past_quarter_ignored#specular_angle_mul.sv#s/assign past_quarter = |zeta\\[ZetaBits-1:ZetaFrac\\];/assign past_quarter = 1'b0;/#a(n)|psi| >= pi/2 is not forced to 0 (interpolated ROM 12)"
-  "interp_adds_step#specular_cos_k_rom.sv#s/cosk_q <= v_m - (CosDataBits + 1)'(/cosk_q <= v_m + (CosDataBits + 1)'(/#ROM 12 interpolates v + d t instead of v - d t"
-  "interp_truncates#specular_cos_k_rom.sv#s/(1 << (CosFracBits - 1))/(0)/#ROM 12's d t is truncated instead of rounded"
-  "mul13_truncates#specular_intensity_mul.sv#s/assign prod_rnd = prod + (ProdBits'(1) << (CosDataBits - 1));/assign prod_rnd = prod;/#multiplier 13 truncates instead of rounding half up"
-  "zero_flag_ignored#specular_intensity_mul.sv#s/assign intensity_d = keep_m ? prod_rnd\\[CosDataBits +: CBits\\] : '0;/assign intensity_d = prod_rnd[CosDataBits +: CBits];/#pixels flagged zero (far, invalid n, bubbles) show the product"
-  "bank_edge_lt#specular_decoder.sv#s/assign le_d\\[j\\] = (n_i <= BankMaxN/assign le_d[j] = (n_i < BankMaxN/#decoder 10 puts n = BankMaxN[j] into bank j + 1"
-  "n0_valid#specular_decoder.sv#s/assign nz_d = (n_i != '0);/assign nz_d = 1'b1;/#n = 0 is decoded as bank 0 instead of invalid"
-  "c_line_short#specular_stream.sv#s/.Depth (AccStages - 1 + Mul11Stages + Rom12Stages)) u_c_line/.Depth (AccStages - 2 + Mul11Stages + Rom12Stages)) u_c_line/#C reaches multiplier 13 one pixel early (the previous span's C at a span boundary)"
-  "tag_line_short#specular_stream.sv#s/.Depth (PipeDepth - 1)) u_tag_line/.Depth (PipeDepth - 2)) u_tag_line/#a pixel's tag is the next pixel's (wrong at span boundaries)"
+  "carry_drop_neg_dpsi#core/specular_accumulator.sv#s/hi_q + dhi_q + HiBits'(carry_q)/hi_q + dhi_q + HiBits'(carry_q \\& ~dhi_q[HiBits-1])/#register 8 loses the low half's carry whenever dpsi < 0"
+  "psi0_high_never_loaded#core/specular_accumulator.sv#s/load_q <= ~sel_i;/load_q <= 1'b0;/#register 8's high half adds dpsi on a span's first pixel instead of loading psi0"
+  "abs_no_complement#core/specular_angle_mul.sv#s/assign ones_d = psi_i ^ {AccBits{psi_i\\[AccBits-1\\]}};/assign ones_d = psi_i;/#multiplier 11 takes psi instead of |psi| for negative angles"
+  "far_test_ge_high#core/specular_angle_mul.sv#s/gt_hi_q <= ones_q\\[AccBits-1:LoBits\\] > HalfPiCode/gt_hi_q <= ones_q[AccBits-1:LoBits] >= HalfPiCode/#angles in the last 2^-6 rad below pi/2 count as past pi/2"
+  "coef3_is_2coef#core/specular_angle_mul.sv#s/coef3_q <= (CoefBits + 2)'(coef_i) + ((CoefBits + 2)'(coef_i) << 1);/coef3_q <= (CoefBits + 2)'(coef_i) << 1;/#the radix-4 digit 3 of multiplier 11 selects 2a"
+  "past_quarter_ignored#core/specular_angle_mul.sv#s/assign past_quarter = |zeta\\[ZetaBits-1:ZetaFrac\\];/assign past_quarter = 1'b0;/#a(n)|psi| >= pi/2 is not forced to 0 (interpolated ROM 12)"
+  "interp_adds_step#core/specular_cos_k_rom.sv#s/cosk_q <= v_m - (CosDataBits + 1)'(/cosk_q <= v_m + (CosDataBits + 1)'(/#ROM 12 interpolates v + d t instead of v - d t"
+  "interp_truncates#core/specular_cos_k_rom.sv#s/(1 << (CosFracBits - 1))/(0)/#ROM 12's d t is truncated instead of rounded"
+  "mul13_truncates#core/specular_intensity_mul.sv#s/assign prod_rnd = prod + (ProdBits'(1) << (CosDataBits - 1));/assign prod_rnd = prod;/#multiplier 13 truncates instead of rounding half up"
+  "zero_flag_ignored#core/specular_intensity_mul.sv#s/assign intensity_d = keep_m ? prod_rnd\\[CosDataBits +: CBits\\] : '0;/assign intensity_d = prod_rnd[CosDataBits +: CBits];/#pixels flagged zero (far, invalid n, bubbles) show the product"
+  "bank_edge_lt#core/specular_decoder.sv#s/assign le_d\\[j\\] = (n_i <= BankMaxN/assign le_d[j] = (n_i < BankMaxN/#decoder 10 puts n = BankMaxN[j] into bank j + 1"
+  "n0_valid#core/specular_decoder.sv#s/assign nz_d = (n_i != '0);/assign nz_d = 1'b1;/#n = 0 is decoded as bank 0 instead of invalid"
+  "c_line_short#core/specular_stream.sv#s/.Depth (AccStages - 1 + Mul11Stages + Rom12Stages)) u_c_line/.Depth (AccStages - 2 + Mul11Stages + Rom12Stages)) u_c_line/#C reaches multiplier 13 one pixel early (the previous span's C at a span boundary)"
+  "tag_line_short#core/specular_stream.sv#s/.Depth (PipeDepth - 1)) u_tag_line/.Depth (PipeDepth - 2)) u_tag_line/#a pixel's tag is the next pixel's (wrong at span boundaries)"
 )
 
 list=0
@@ -96,7 +96,7 @@ mkdir -p "$src"
 # Timestamps kept, so that a second run reuses the C++ of the first; the RTL is touched, so
 # that no model of an earlier run's mutant survives into this one.
 (cd "$root" && git ls-files -z --cached --others --exclude-standard | xargs -0 cp -p --parents -t "$src")
-touch "$src"/rtl/*.sv
+(cd "$src" && python3 scripts/rtl_filelist.py rtl/specular.f rtl/competitors/phong/phong.f | xargs touch)
 build="$out/build"
 echo "mutate.sh: configuring $build (default configuration only)"
 cmake -S "$src" -B "$build" -DCMAKE_BUILD_TYPE=Release -DSPECULAR_SIM_CONFIGS=default > "$out/configure.log" 2>&1 ||
@@ -117,6 +117,7 @@ for m in "${mutants[@]}"; do
   IFS='#' read -r name file expr what <<< "$m"
   if [ -n "$only" ] && [[ ",$only," != *",$name,"* ]]; then continue; fi
   f="$src/rtl/$file"
+  mkdir -p "$out/$(dirname "$file")"
   cp -p "$f" "$out/$file.orig"
   sed -i "$expr" "$f"
   if cmp -s "$f" "$out/$file.orig"; then

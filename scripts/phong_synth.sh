@@ -43,7 +43,7 @@ done < <(echo "$line" | grep -o '"-G[^ ]*"' | sed 's/^"//; s/"$//')
 
 # shellcheck source=scripts/rtl_filelist.sh
 source scripts/rtl_filelist.sh
-rtl_filelist || exit 1
+rtl_filelist rtl/competitors/phong/phong.f || exit 1
 incflags=""
 for d in "${RTL_INCDIRS[@]+"${RTL_INCDIRS[@]}"}"; do incflags+=" -I$d"; done
 mkdir -p "$out"

@@ -1,33 +1,23 @@
 # SPDX-License-Identifier: Apache-2.0
 #
 # Sourced by the scripts that read the RTL (synth.sh, fpga.sh, the formal*.sh scripts,
-# coverage.sh): rtl_filelist [FILE] reads the filelist (default rtl/specular.f, run from the
-# repository root; format in rtl/README.md) into two arrays:
+# coverage.sh): rtl_filelist [FILELIST...] expands filelists (default rtl/specular.f, the
+# product; run from the repository root; format in rtl/README.md#filelists) with
+# scripts/rtl_filelist.py, the one reader of the format, into two arrays:
 #   RTL_SOURCES  the source files in compile order, paths relative to the root
-#   RTL_INCDIRS  the include directories of its `+incdir+DIR` lines
-# `//` comment lines and blank lines are skipped. Returns 1 (with a message) when the file
-# is missing or names no source.
+#   RTL_INCDIRS  the include directories of their `+incdir+DIR` lines
+#   RTL_FILELISTS  every filelist read (the nested ones too)
+# Returns 1 (with the reader's message) when a filelist is missing or wrong.
 rtl_filelist() {
-  local f=${1:-rtl/specular.f} line
-  RTL_SOURCES=()
+  local out
+  [ $# -gt 0 ] || set -- rtl/specular.f
+  out=$(python3 scripts/rtl_filelist.py --sources "$@") || return 1
+  mapfile -t RTL_SOURCES <<< "$out"
+  out=$(python3 scripts/rtl_filelist.py --incdirs "$@") || return 1
   RTL_INCDIRS=()
-  if [ ! -f "$f" ]; then
-    echo "rtl_filelist: $f not found (run from the repository root)" >&2
-    return 1
-  fi
-  while IFS= read -r line || [ -n "$line" ]; do
-    line=${line#"${line%%[![:space:]]*}"}
-    line=${line%"${line##*[![:space:]]}"}
-    case "$line" in
-      ''|//*) ;;
-      +incdir+*) RTL_INCDIRS+=("${line#+incdir+}") ;;
-      *) RTL_SOURCES+=("$line") ;;
-    esac
-  done < "$f"
-  if [ ${#RTL_SOURCES[@]} -eq 0 ]; then
-    echo "rtl_filelist: $f lists no source" >&2
-    return 1
-  fi
+  [ -z "$out" ] || mapfile -t RTL_INCDIRS <<< "$out"
+  out=$(python3 scripts/rtl_filelist.py --filelists "$@") || return 1
+  mapfile -t RTL_FILELISTS <<< "$out"
 }
 
 # rtl_mutant_copy DIR FILE SED_EXPR [SOURCE...] (after rtl_filelist): copies the sources

@@ -3,7 +3,7 @@
 //
 // One definition of every width and rounding rule, shared by the ROM generator
 // (model/tools/romgen.cpp), the Verilator testbench (sim/) and the report. The RTL
-// (rtl/specular_unit.sv) has the same parameters with the same defaults; the build
+// (rtl/core/specular_unit.sv) has the same parameters with the same defaults; the build
 // passes the values of `Format` to Verilator as -G overrides so the two cannot drift.
 //
 // Datapath, per pixel (block numbers of the patent):
@@ -139,7 +139,7 @@ struct PixelTrace {
   uint32_t intensity = 0;   // multiplier 13 output
 };
 
-// Stream view (rtl/specular_stream.sv): a span is one line's registers plus an opaque tag;
+// Stream view (rtl/core/specular_stream.sv): a span is one line's registers plus an opaque tag;
 // the core returns every pixel of every span in order, each with its span's tag and a
 // last flag on pixel l. The values are those of line() for the same registers.
 struct Span {

@@ -1,11 +1,11 @@
 // SPDX-License-Identifier: Apache-2.0
-// setup_romgen: the ROM images of the hardware setup (rtl/specular_setup.sv,
+// setup_romgen: the ROM images of the hardware setup (rtl/setup/specular_setup.sv,
 // docs/setup_hw.md#widths), written from the golden model's tables
 // (model/host/setup_fixed.hpp) as $readmemh files: one hex word per line, word 0 first.
 //
 //   setup_romgen --out DIR     write DIR/{rsqrt_seed,log_recip,log_value,exp2,recip_len}.hex
 //   setup_romgen --check DIR   exit 1 unless every file in DIR equals what --out writes
-//   setup_romgen --consts      print the constants of rtl/specular_setup_pkg.sv
+//   setup_romgen --consts      print the constants of rtl/setup/specular_setup_pkg.sv
 #include "setup_fixed.hpp"
 
 #include <CLI/CLI.hpp>
@@ -35,7 +35,7 @@ std::string hex_lines(const std::vector<T>& words, int bits) {
 }
 
 std::vector<std::pair<std::string, std::string>> images() {
-  // The ROM widths of the RTL (rtl/specular_setup_norm.sv, _log2.sv, _exp2.sv, specular_setup.sv).
+  // The ROM widths of the RTL (rtl/setup/specular_setup_norm.sv, _log2.sv, _exp2.sv, specular_setup.sv).
   return {{"rsqrt_seed.hex", hex_lines(hf::rsqrt_seed_table(), hf::kRsqrtSeedFrac + 1)},
           {"log_recip.hex", hex_lines(hf::log_recip_table(), hf::kLogRecipFrac)},
           {"log_value.hex", hex_lines(hf::log_value_table(), hf::kLogFrac + 1)},
@@ -50,7 +50,7 @@ int main(int argc, char** argv) {
   bool consts = false;
   app.add_option("--out", out, "directory to write the .hex files into");
   app.add_option("--check", check, "directory whose .hex files must equal the generated ones");
-  app.add_flag("--consts", consts, "print the constants of rtl/specular_setup_pkg.sv");
+  app.add_flag("--consts", consts, "print the constants of rtl/setup/specular_setup_pkg.sv");
   CLI11_PARSE(app, argc, argv);
   if (out.empty() && check.empty() && !consts) {
     std::cerr << "setup_romgen: give --out DIR, --check DIR or --consts\n";

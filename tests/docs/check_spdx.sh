@@ -9,8 +9,8 @@
 #   tests/docs/check_spdx.sh --self-test  the checker on a scratch tree: one good file, one
 #                                         without the line, one with it on line 6
 #
-# Source files: *.sv, *.svh, *.cpp, *.hpp, *.inl, *.py, *.sh, *.cmake, CMakeLists.txt and
-# Makefile, taken from `git ls-files` (tracked files only; build trees and untracked scratch
+# Source files: *.sv, *.svh, *.cpp, *.hpp, *.inl, *.py, *.sh, *.cmake, *.f (filelists),
+# .ci/run, CMakeLists.txt and Makefile, taken from `git ls-files` (tracked files only; build trees and untracked scratch
 # files are not looked at), or from `find` when ROOT is not a git work tree.
 # Exit status: 0 when every file has the line, 1 otherwise (each offending file listed),
 # 2 on a usage error.
@@ -18,7 +18,7 @@ set -euo pipefail
 
 readonly spdx='SPDX-License-Identifier: Apache-2.0'
 readonly head_lines=5
-readonly name_re='(\.(sv|svh|cpp|hpp|inl|py|sh|cmake)$|(^|/)(CMakeLists\.txt|Makefile)$)'
+readonly name_re='(\.(sv|svh|cpp|hpp|inl|py|sh|cmake|f)$|(^|/)(CMakeLists\.txt|Makefile)$|^\.ci/run$)'
 
 list_sources() {
   local root=$1

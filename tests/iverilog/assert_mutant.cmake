@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 #
-# ctest rtl_iverilog_assert_mutant: shows that a block assertion (rtl/specular_assert.svh)
-# fires. Copies the sources of rtl/specular.f (and rtl/specular_assert.svh) to OUT, breaks
+# ctest rtl_iverilog_assert_mutant: shows that a block assertion (rtl/prim/specular_assert.svh)
+# fires. Copies the sources of rtl/specular.f (and rtl/prim/specular_assert.svh) to OUT, breaks
 # one block invariant in the copy (never in rtl/), compiles it with the testbench and runs
 # it; passes only if the run exits non-zero with the expected assertion's report.
 # Mutation: specular_out_buf pushes the last stage's pixel whatever the advance (push =
@@ -16,7 +16,7 @@ foreach(v IVERILOG VVP ROOT TB OUT RUN_ARGS)
     message(FATAL_ERROR "assert_mutant.cmake: -D${v}=... missing")
   endif()
 endforeach()
-set(mut_file rtl/specular_out_buf.sv)
+set(mut_file rtl/prim/specular_out_buf.sv)
 set(mut_from "assign push = adv_q & in_valid_i;")
 set(mut_to "assign push = in_valid_i;")
 set(expect "[SPEC_ASSERT]")

@@ -17,7 +17,7 @@
 // Exit: $finish (status 0) when every expected pixel came, in order and equal, and nothing
 // else did; $fatal (status 1) after a mismatch (up to 10 reported, within the next 200
 // pixels), on an unexpected pixel, or when max_cycles pass first. The RTL's own assertions
-// (rtl/specular_assert.svh) end the run with $fatal too.
+// (rtl/prim/specular_assert.svh) end the run with $fatal too.
 
 `timescale 1ns / 1ps
 

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 //
 // AXI4-Lite master and AXI4-Stream sink over a Verilator model, for the tests of
-// rtl/specular_axil.sv and rtl/specular_axis.sv (register map: docs/interfaces.md).
+// rtl/axi/specular_axil.sv and rtl/axi/specular_axis.sv (register map: docs/interfaces.md).
 //
 // AxilDriver<V> drives the s_axil_* ports of V, one transaction at a time, with
 //   - the order of AW and W per write: both in one cycle, AW first or W first, with random

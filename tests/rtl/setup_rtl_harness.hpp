@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // The hardware setup's block-test harness (tests/rtl/test_setup.cpp, test_setup_ii.cpp):
-// drives geometry spans into a Verilator model of specular_setup (rtl/specular_setup.sv) and
+// drives geometry spans into a Verilator model of specular_setup (rtl/setup/specular_setup.sv) and
 // checks every descriptor field and the status against the golden model
 // host::fixed::setup_fixed, in order, under random input gaps, backpressure and resets.
 #pragma once

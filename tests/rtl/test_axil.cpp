@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 //
-// specular_axil (rtl/specular_axil.sv; register map and rules in docs/interfaces.md) over
+// specular_axil (rtl/axi/specular_axil.sv; register map and rules in docs/interfaces.md) over
 // the AXI4-Lite driver and pixel sink of axil_driver.hpp, which check the slave's protocol
 // in every cycle:
 //   - every register's reset value and access type (RO, RW, W1C, WO), SLVERR on unmapped
@@ -41,7 +41,7 @@ namespace dev = specular::device;
 
 namespace {
 
-// The default configuration's stream latency (sim/specular_pipeline.sv from rtl/specular_pkg.sv).
+// The default configuration's stream latency (sim/specular_pipeline.sv from rtl/core/specular_pkg.sv).
 constexpr uint32_t kStreamLatency = Vpipeline_axi_default_specular_pipeline::StreamLatency;
 
 // Byte offsets (docs/interfaces.md).

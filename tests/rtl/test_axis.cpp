@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 //
-// specular_axis (rtl/specular_axis.sv): specular_stream with AXI4-Stream ports, packing
+// specular_axis (rtl/axi/specular_axis.sv): specular_stream with AXI4-Stream ports, packing
 // and renaming only. The test runs a Vaxis and a Vstream (specular_stream alone) in lock
 // step on the same random spans, gaps and pixel backpressure: in every cycle tready,
 // tvalid, tdata, tlast and tuser must equal span_ready_o, px_valid_o, px_intensity_o,

@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // Down counter 5: the borrow (35) comes with the (l+1)-th count pulse, exactly once; the
-// count then stays 0 until l is written again (rtl/specular_down_counter.sv; the stream
+// count then stays 0 until l is written again (rtl/core/specular_down_counter.sv; the stream
 // writes l with every accepted span).
 #include "Vcounter.h"
 #include "rtl_harness.hpp"

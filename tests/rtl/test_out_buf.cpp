@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// Output buffer of the stream (rtl/specular_out_buf.sv, default Width = 33), checked cycle
+// Output buffer of the stream (rtl/prim/specular_out_buf.sv, default Width = 33), checked cycle
 // by cycle against an independent queue model of its header's contract:
 //   * two entries; adv_o is high exactly when the buffer holds at most one pixel (so a
 //     pixel pushed at the next edge always has room), and it is a register;

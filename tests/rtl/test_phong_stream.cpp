@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// phong_stream (rtl/phong_stream.sv) against its golden model (model/device/phong_model.hpp),
+// phong_stream (rtl/competitors/phong/phong_stream.sv) against its golden model (model/device/phong_model.hpp),
 // bit for bit, on the geometry span interface (docs/interfaces.md#geometry-span-interface):
 // random spans and the hard cases under random span offers, random pixel backpressure and
 // random asynchronous resets (a reset drops every span and pixel in flight), and the

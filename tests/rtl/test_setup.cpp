@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The hardware setup (rtl/specular_setup.sv, docs/setup_hw.md) against its golden model
+// The hardware setup (rtl/setup/specular_setup.sv, docs/setup_hw.md) against its golden model
 // host::fixed::setup_fixed, bit for bit: every descriptor field and the status of every span,
 // in order, on the hard cases of docs/scanline_setup.md#hard-cases and random spans
 // (tests/model/geo_cases.hpp), under random input gaps, random backpressure and random

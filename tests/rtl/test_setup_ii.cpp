@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// specular_setup with SetupII = 2, 4 and 8 (rtl/specular_setup.sv,
+// specular_setup with SetupII = 2, 4 and 8 (rtl/setup/specular_setup.sv,
 // docs/setup_hw.md#sharing-over-setupii-clocks) against its golden model
 // host::fixed::setup_fixed, bit for bit, with the checks of tests/rtl/test_setup.cpp (the
 // hard cases; random spans under random gaps, backpressure and resets) and the rate: spans

@@ -1,0 +1,299 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// phong_stream: per-pixel Blinn-Phong shading on the geometry span interface
+// (docs/interfaces.md#geometry-span-interface), the competitor of the device in hardware
+// (docs/phong_hw.md). For span (N1, N2, H1, He, n, l, scale, tag) pixel i = 0..l is
+//   I_i = scale * max(0, N_i . H_i / (|N_i| |H_i|))^n,
+//   N_i = N1 + (N2 - N1) i / l,  H_i = H1 + (He - H1) i / l,
+// bit-identical to model/device/phong_model.hpp (PhongFormat: the parameters below have its
+// fields' names and defaults).
+//
+// Ports: clk_i, rst_ni (asynchronous, active low: drops every span and pixel in flight);
+// the span side geo_* (AXI4-Stream rules); the pixel side px_* of specular_stream.
+// geo_ready_o depends on registers only: it is high when the span pipe advances at the next
+// edge (the output buffer has room and the span pipe's head is empty or taken).
+//
+// Pipeline (one carry chain per stage, every stage register enabled by adv, the output
+// buffer's registered room; the span pipe by the same adv and its own head):
+//   span pipe      phong_span_setup: L = l 2^k, A0 = L N1, steps (N2 - N1) 2^k, the same for H
+//   stage 0        the lerp accumulators A_i = A0 + i EA, B_i (control unit: specular_control,
+//                  pixel counter: specular_down_counter), the span's n, scale, zero flag, tag
+//   then           phong_dot (a.b, |a|^2, |b|^2), phong_norm (c), phong_pow (scale c^n)
+//   output buffer  specular_out_buf
+// Stage counts: phong_pkg (docs/phong_hw.md#pipeline). One pixel per clock sustained, l = 0
+// spans back to back included: the control takes the span pipe's head on the edge at which
+// the previous span's last pixel leaves stage 0.
+
+`include "specular_assert.svh"
+
+module phong_stream #(
+  parameter int VecBits       = 18,
+  parameter int LenBits       = 11,
+  parameter int NBits         = 10,
+  parameter int CBits         = 16,
+  parameter int TagBits       = 16,
+  parameter bit ConstH        = 1'b0,
+  parameter int OpBits        = 20,
+  parameter int NormBits      = 24,
+  parameter int RsqrtAddrBits = 6,
+  parameter int Newton        = 2,
+  parameter int CosFrac       = 23,
+  parameter int LogAddrBits   = 9,
+  parameter int LogFracBits   = 13,
+  parameter int LogBits       = 21,
+  parameter int ExpAddrBits   = 5,
+  parameter int ExpFracBits   = 7,
+  parameter int ExpBits       = 16,
+  parameter     RsqrtRomFile  = "roms/phong/n1000/rsqrt.hex",
+  parameter     LogRomFile    = "roms/phong/n1000/log2.hex",
+  parameter     ExpRomFile    = "roms/phong/n1000/exp2.hex"
+) (
+  input  logic                   clk_i,
+  input  logic                   rst_ni,
+  input  logic                   geo_valid_i,
+  output logic                   geo_ready_o,
+  input  logic [3*VecBits-1:0]   geo_n1_i,
+  input  logic [3*VecBits-1:0]   geo_n2_i,
+  input  logic [3*VecBits-1:0]   geo_h1_i,
+  input  logic [3*VecBits-1:0]   geo_he_i,
+  input  logic [NBits-1:0]       geo_n_i,
+  input  logic [LenBits-1:0]     geo_len_i,
+  input  logic [CBits-1:0]       geo_scale_i,
+  input  logic [TagBits-1:0]     geo_tag_i,
+  output logic                   px_valid_o,
+  input  logic                   px_ready_i,
+  output logic [CBits-1:0]       px_intensity_o,
+  output logic                   px_last_o,
+  output logic [TagBits-1:0]     px_tag_o
+);
+
+  localparam int AccBits   = VecBits + LenBits;
+  localparam int WBits     = $clog2(CosFrac + 2) + LogBits;
+  localparam int DotStages = phong_pkg::dot_stages(OpBits);
+  localparam int NrmStages = phong_pkg::norm_stages(NormBits, Newton);
+  localparam int PowStages = phong_pkg::pow_stages(LogFracBits, WBits, ExpFracBits, ExpBits);
+  localparam int PipeDepth = phong_pkg::pipe_depth(OpBits, NormBits, Newton, LogFracBits, WBits, ExpFracBits,
+                                                    ExpBits);
+
+  if (NBits != 10 || TagBits < 1 || OpBits > AccBits ||
+      PipeDepth != phong_pkg::AccStages + DotStages + NrmStages + PowStages) begin : gen_param_check
+    `SPEC_PARAM_ERROR("phong_stream: NBits must be 10, TagBits >= 1, OpBits <= VecBits + LenBits")
+  end
+
+  // ---------------------------------------------------------------------------------
+  // Span pipe
+  // ---------------------------------------------------------------------------------
+  logic adv, sp_adv, head_valid, ctrl_ready, accept;
+  logic [3*AccBits-1:0] a0_h, ea_h, b0_h, eb_h;
+  logic [NBits-1:0]     n_h;
+  logic [LenBits-1:0]   len_h;
+  logic [CBits-1:0]     scale_h;
+  logic [TagBits-1:0]   tag_h;
+  logic                 zero_h;
+
+  assign sp_adv      = ctrl_ready | (adv & ~head_valid);
+  assign geo_ready_o = sp_adv;
+
+  phong_span_setup #(
+    .VecBits (VecBits),
+    .LenBits (LenBits),
+    .NBits   (NBits),
+    .CBits   (CBits),
+    .TagBits (TagBits),
+    .ConstH  (ConstH)
+  ) u_setup (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .en_i    (sp_adv),
+    .valid_i (geo_valid_i),
+    .n1_i    (geo_n1_i),
+    .n2_i    (geo_n2_i),
+    .h1_i    (geo_h1_i),
+    .he_i    (geo_he_i),
+    .n_i     (geo_n_i),
+    .len_i   (geo_len_i),
+    .scale_i (geo_scale_i),
+    .tag_i   (geo_tag_i),
+    .valid_o (head_valid),
+    .a0_o    (a0_h),
+    .ea_o    (ea_h),
+    .b0_o    (b0_h),
+    .eb_o    (eb_h),
+    .n_o     (n_h),
+    .len_o   (len_h),
+    .scale_o (scale_h),
+    .tag_o   (tag_h),
+    .zero_o  (zero_h)
+  );
+
+  // ---------------------------------------------------------------------------------
+  // Control unit and stage 0: the accumulators
+  // ---------------------------------------------------------------------------------
+  logic mux_sel, count, cnt_zero, out_valid, out_last, unused_strobe, unused_busy;
+  logic [PipeDepth-1:0] stage_valid;
+  logic unused_borrow;
+  logic [LenBits-1:0] unused_cnt;
+
+  specular_control #(
+    .PipeDepth (PipeDepth)
+  ) u_control (
+    .clk_i         (clk_i),
+    .rst_ni        (rst_ni),
+    .span_valid_i  (head_valid),
+    .span_ready_o  (ctrl_ready),
+    .adv_i         (adv),
+    .cnt_zero_i    (cnt_zero),
+    .accept_o      (accept),
+    .strobe_o      (unused_strobe),
+    .sel_o         (mux_sel),
+    .count_o       (count),
+    .stage_valid_o (stage_valid),
+    .out_valid_o   (out_valid),
+    .out_last_o    (out_last),
+    .busy_o        (unused_busy)
+  );
+
+  specular_down_counter #(.LenBits (LenBits)) u_counter (
+    .clk_i    (clk_i),
+    .rst_ni   (rst_ni),
+    .len_we_i (accept),
+    .len_i    (len_h),
+    .count_i  (count),
+    .borrow_o (unused_borrow),
+    .zero_o   (cnt_zero),
+    .count_o  (unused_cnt)
+  );
+
+  // A_i, B_i: A0 on accept, else A + EA at every advance (a bubble's value is not used).
+  logic [3*AccBits-1:0] a_q, b_q, ea_q, eb_q;
+  logic [NBits-1:0]     n0;
+  logic [CBits-1:0]     scale0;
+  logic [TagBits-1:0]   tag0;
+  logic                 zero0;
+  always_ff @(posedge clk_i) begin
+    if (accept) begin
+      ea_q   <= ea_h;
+      eb_q   <= eb_h;
+      n0     <= n_h;
+      scale0 <= scale_h;
+      tag0   <= tag_h;
+      zero0  <= zero_h;
+    end
+  end
+  for (genvar c = 0; c < 3; c++) begin : gen_acc
+    always_ff @(posedge clk_i) begin
+      if (adv) begin
+        a_q[c*AccBits +: AccBits] <= mux_sel ? a_q[c*AccBits +: AccBits] + ea_q[c*AccBits +: AccBits]
+                                             : a0_h[c*AccBits +: AccBits];
+        b_q[c*AccBits +: AccBits] <= mux_sel ? b_q[c*AccBits +: AccBits] + eb_q[c*AccBits +: AccBits]
+                                             : b0_h[c*AccBits +: AccBits];
+      end
+    end
+  end
+
+  // ---------------------------------------------------------------------------------
+  // Datapath
+  // ---------------------------------------------------------------------------------
+  logic signed [2*OpBits+1:0] d;
+  logic [2*OpBits-1:0]        na, nb;
+  phong_dot #(.AccBits (AccBits), .OpBits (OpBits)) u_dot (
+    .clk_i (clk_i), .en_i (adv), .a_i (a_q), .b_i (b_q), .d_o (d), .na_o (na), .nb_o (nb));
+
+  logic [CosFrac:0] cosv;
+  logic             zero_c;
+  phong_norm #(
+    .OpBits        (OpBits),
+    .NormBits      (NormBits),
+    .RsqrtAddrBits (RsqrtAddrBits),
+    .Newton        (Newton),
+    .CosFrac       (CosFrac),
+    .RsqrtRomFile  (RsqrtRomFile)
+  ) u_norm (
+    .clk_i  (clk_i),
+    .en_i   (adv),
+    .d_i    (d),
+    .na_i   (na),
+    .nb_i   (nb),
+    .c_o    (cosv),
+    .zero_o (zero_c)
+  );
+
+  // The span's n, scale and zero flag beside the pixel up to the power unit; the tag to the end.
+  logic [NBits-1:0] n_p;
+  logic [CBits-1:0] scale_p;
+  logic             zero_p;
+  logic [TagBits-1:0] tag_out;
+  specular_delay #(.Width (NBits + CBits + 1), .Depth (DotStages + NrmStages), .Reset (1'b0)) u_span_line (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({n0, scale0, zero0}), .q_o ({n_p, scale_p, zero_p}));
+  specular_delay #(.Width (TagBits), .Depth (PipeDepth - 1)) u_tag_line (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (tag0), .q_o (tag_out));
+
+  logic [CBits-1:0] intensity;
+  phong_pow #(
+    .CosFrac     (CosFrac),
+    .LogAddrBits (LogAddrBits),
+    .LogFracBits (LogFracBits),
+    .LogBits     (LogBits),
+    .ExpAddrBits (ExpAddrBits),
+    .ExpFracBits (ExpFracBits),
+    .ExpBits     (ExpBits),
+    .NBits       (NBits),
+    .CBits       (CBits),
+    .LogRomFile  (LogRomFile),
+    .ExpRomFile  (ExpRomFile)
+  ) u_pow (
+    .clk_i       (clk_i),
+    .en_i        (adv),
+    .c_i         (cosv),
+    .zero_i      (zero_c | zero_p),
+    .n_i         (n_p),
+    .scale_i     (scale_p),
+    .intensity_o (intensity)
+  );
+
+  // ---------------------------------------------------------------------------------
+  // Output buffer
+  // ---------------------------------------------------------------------------------
+  logic [CBits-1:0] intensity_v;
+  assign intensity_v = out_valid ? intensity : '0;
+  specular_out_buf #(
+    .Width (CBits + 1 + TagBits)
+  ) u_out_buf (
+    .clk_i      (clk_i),
+    .rst_ni     (rst_ni),
+    .adv_o      (adv),
+    .in_valid_i (out_valid),
+    .in_data_i  ({intensity_v, out_last, tag_out}),
+    .px_valid_o (px_valid_o),
+    .px_ready_i (px_ready_i),
+    .px_data_o  ({px_intensity_o, px_last_o, px_tag_o})
+  );
+
+  // ---------------------------------------------------------------------------------
+  // Assertions (rtl/prim/specular_assert.svh)
+  // ---------------------------------------------------------------------------------
+  `SPEC_ASSERT_KNOWN(GeoValidKnown_A, geo_valid_i, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(GeoKnown_A, {geo_n1_i, geo_n2_i, geo_h1_i, geo_he_i, geo_n_i, geo_len_i, geo_scale_i},
+                        geo_valid_i, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN(PxReadyKnown_A, px_ready_i, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(PxKnown_A, {px_intensity_o, px_last_o, px_tag_o}, px_valid_o, clk_i, rst_ni)
+
+`ifndef SYNTHESIS
+  // Pixels owed: l + 1 per accepted span (at the span pipe's input), minus one per transfer.
+  localparam int OweBits = LenBits + 8;
+  logic [OweBits-1:0] owed_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      owed_q <= '0;
+    end else begin
+      owed_q <= owed_q
+                + ((geo_valid_i && geo_ready_o) ? OweBits'(geo_len_i) + OweBits'(1) : '0)
+                - ((px_valid_o && px_ready_i) ? OweBits'(1) : '0);
+    end
+  end
+  `SPEC_ASSERT_IF(PxOwed_A, px_valid_o, owed_q != '0, clk_i, rst_ni)
+  `SPEC_ASSERT_IF(NoneOwedEmpty_A, owed_q == '0, stage_valid == '0 && !head_valid, clk_i, rst_ni)
+`endif
+
+endmodule

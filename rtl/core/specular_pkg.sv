@@ -1,0 +1,78 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// specular_pkg: the one definition of the pipeline's stage counts (docs/pipeline.md#stage-counts).
+// Every block sizes its delay lines from these functions, the top levels derive PipeDepth
+// and Latency from them, and the testbenches read their expected latencies from the same
+// functions through sim/specular_pipeline.sv, never from a copy. The multiplier tree's count
+// is specular_prim_pkg's. Changing a stage count is an edit here (and, for a register the
+// block does not yet build, in that block).
+//
+// Written for Yosys 0.23, Verilator 5.006 and Icarus 11 alike: functions return through
+// their name (Yosys 0.23 has no `return` in constant functions) and callers write
+// specular_pkg::f(...) (Yosys 0.23 has no `import` inside a module).
+
+package specular_pkg;
+
+  // ---- Registers outside the multiplier trees (patent block numbers) ----
+  // specular_unit: the start latch before the stream accepts the line.
+  localparam int StartLatchStages = 1;
+  // Register 8 (accumulator 6/7/8): the add split in a low and a high half
+  // (specular_accumulator builds exactly two).
+  localparam int AccStages = 2;
+  // Multiplier 11: one register in front of the tree (|psi| and the coefficient), the
+  // ROM 12 address register behind it, then Mul11RetimeStages more registers on the
+  // address, weight and zero flag (0 by default; each one is a free register for retiming).
+  localparam int Mul11InStages = 1;
+  localparam int Mul11OutStages = 1;
+  localparam int Mul11RetimeStages = 0;
+  // ROM 12: the block-RAM read in front of the interpolation tree, the subtraction
+  // v - d t behind it (the direct table is delayed as long).
+  localparam int Rom12ReadStages = 1;
+  localparam int Rom12OutStages = 1;
+  // Multiplier 13: the rounding and output register (output 27) behind the tree.
+  localparam int Mul13OutStages = 1;
+  // The stream's output buffer (specular_out_buf): one register between the last stage and
+  // px_valid_o.
+  localparam int OutBufStages = 1;
+
+  // Multiplier 11 (specular_angle_mul), psi_i to addr_o: the tree runs over the
+  // 1 + psi_mul_frac bits of |psi|.
+  function automatic int angle_mul_stages(input int psi_mul_frac);
+    angle_mul_stages = Mul11InStages + specular_prim_pkg::pipe_mul_stages(1 + psi_mul_frac) + Mul11OutStages
+                       + Mul11RetimeStages;
+  endfunction
+
+  // ROM 12 (specular_cos_k_rom), address to cos^k: the tree runs over the cos_delta_bits
+  // of the step d.
+  function automatic int cos_k_rom_stages(input int cos_delta_bits);
+    cos_k_rom_stages = Rom12ReadStages + specular_prim_pkg::pipe_mul_stages(cos_delta_bits) + Rom12OutStages;
+  endfunction
+
+  // Multiplier 13 (specular_intensity_mul), cos^k to the intensity: the tree runs over the
+  // cos_data_bits + 1 bits of cos^k.
+  function automatic int intensity_mul_stages(input int cos_data_bits);
+    intensity_mul_stages = specular_prim_pkg::pipe_mul_stages(cos_data_bits + 1) + Mul13OutStages;
+  endfunction
+
+  // specular_stream's stages from the accept edge to the output buffer (its PipeDepth).
+  function automatic int stream_pipe_depth(input int psi_mul_frac, input int cos_delta_bits,
+                                           input int cos_data_bits);
+    stream_pipe_depth = AccStages + angle_mul_stages(psi_mul_frac)
+                        + cos_k_rom_stages(cos_delta_bits) + intensity_mul_stages(cos_data_bits);
+  endfunction
+
+  // specular_stream: a span accepted at the edge ending cycle t has pixel 0 on the output
+  // in cycle t + stream_latency (px_ready_i high).
+  function automatic int stream_latency(input int psi_mul_frac, input int cos_delta_bits,
+                                        input int cos_data_bits);
+    stream_latency = stream_pipe_depth(psi_mul_frac, cos_delta_bits, cos_data_bits) + OutBufStages;
+  endfunction
+
+  // specular_unit: start_i high in cycle s (idle) gives pixel 0 in cycle s + unit_latency.
+  function automatic int unit_latency(input int psi_mul_frac, input int cos_delta_bits,
+                                      input int cos_data_bits);
+    unit_latency = StartLatchStages + stream_latency(psi_mul_frac, cos_delta_bits, cos_data_bits);
+  endfunction
+
+endpackage

@@ -1,0 +1,49 @@
+// SPDX-License-Identifier: Apache-2.0
+//
+// What the formal harnesses (specular_stream_fv.sv, specular_axil_fv.sv) share, written
+// once.
+//
+// `SPECULAR_FV_PARAMS: the reduced core parameters, the core's list of
+// rtl/core/specular_params.svh with small widths (the proofs unroll every register), two
+// decoder banks, the ROM files of this folder (docs/formal.md), and TagBits 2. A
+// harness hands them on to its core with `SPECULAR_CORE_PARAM_MAP.
+
+`ifndef SPECULAR_FV_SVH
+`define SPECULAR_FV_SVH
+
+`define SPECULAR_FV_PARAMS \
+  parameter int CBits        = 4, \
+  parameter int CFrac        = 3, \
+  parameter int AngleBits    = 8, \
+  parameter int AngleFrac    = 4, \
+  parameter int AccBits      = 12, \
+  parameter int NBits        = 4, \
+  parameter int LenBits      = 3, \
+  parameter int CoefBits     = 4, \
+  parameter int CoefFrac     = 2, \
+  parameter int PsiMulFrac   = 2, \
+  parameter bit CosInterp    = 1'b0, \
+  parameter int CosAddrBits  = 2, \
+  parameter int CosDataBits  = 4, \
+  parameter int CosDeltaBits = 4, \
+  parameter int CosFracBits  = 1, \
+  parameter int NumBanks     = 2, \
+  parameter logic [NumBanks*NBits-1:0] BankMaxN = {4'd15, 4'd1}, \
+  parameter     CoefRomFile  = "rtl/core/formal/coef_fv.hex", \
+  parameter     CosRomFile   = "rtl/core/formal/cos_k_fv.hex", \
+  parameter int TagBits      = 2
+
+// `SPECULAR_FV_START_IN_RESET(clk, rst_n): assume rst_n low in the first cycle, so that
+// the base case starts from the reset state (resets may come again at any clock).
+`define SPECULAR_FV_START_IN_RESET(clk, rst_n) \
+  logic f_started_q = 1'b0;                     \
+  always_ff @(posedge (clk)) begin              \
+    f_started_q <= 1'b1;                        \
+  end                                           \
+  always_comb begin                             \
+    if (!f_started_q) begin                     \
+      assume (!(rst_n));                        \
+    end                                         \
+  end
+
+`endif  // SPECULAR_FV_SVH

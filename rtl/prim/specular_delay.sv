@@ -1,0 +1,67 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// Delay line of Depth registers with a common enable (pipeline stall): carries per-pixel
+// side values (C, tag, bank, flags) beside the datapath so they reach each block in the
+// same clock as their pixel. Depth = 0 is a wire.
+// Reset = 1: asynchronous reset to 0 (values that must read 0 before the first pixel).
+// Reset = 0: no reset, for datapath values whose validity travels in reset valid bits
+// elsewhere (block RAM and multiplier outputs have no reset either); rst_ni is unused.
+
+`include "specular_assert.svh"
+
+module specular_delay #(
+  parameter int Width = 1,
+  parameter int Depth = 1,
+  parameter bit Reset = 1'b1
+) (
+  input  logic             clk_i,
+  input  logic             rst_ni,
+  input  logic             en_i,
+  input  logic [Width-1:0] d_i,
+  output logic [Width-1:0] q_o
+);
+
+  if (Width < 1 || Depth < 0) begin : gen_param_check
+    `SPEC_PARAM_ERROR("specular_delay: Width must be >= 1 and Depth >= 0")
+  end
+
+  if (Depth == 0) begin : gen_wire
+    logic unused_clk;
+    assign unused_clk = clk_i ^ rst_ni ^ en_i;
+    assign q_o = d_i;
+  end else begin : gen_regs
+    // Stage j (1 .. Depth) is line_q[j*Width-1 -: Width]; d_i enters at the bottom.
+    logic [Depth*Width-1:0] line_d, line_q;
+    if (Depth == 1) begin : gen_one
+      assign line_d = d_i;
+    end else begin : gen_shift
+      assign line_d = {line_q[(Depth-1)*Width-1:0], d_i};
+    end
+    if (Reset) begin : gen_reset
+      always_ff @(posedge clk_i or negedge rst_ni) begin
+        if (!rst_ni) begin
+          line_q <= '0;
+        end else if (en_i) begin
+          line_q <= line_d;
+        end
+      end
+    end else begin : gen_no_reset
+      logic unused_rst;
+      assign unused_rst = rst_ni;
+      always_ff @(posedge clk_i) begin
+        if (en_i) begin
+          line_q <= line_d;
+        end
+      end
+    end
+    assign q_o = line_q[Depth*Width-1 -: Width];
+  end
+
+  // Assertions (rtl/prim/specular_assert.svh): the enable of a line with reset is never X (an
+  // X enable would smear the whole line).
+  if (Reset && Depth > 0) begin : gen_known_check
+    `SPEC_ASSERT_KNOWN(EnKnown_A, en_i, clk_i, rst_ni)
+  end
+
+endmodule

@@ -1,0 +1,97 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// Output register slice of the stream (part of output 27 and strobe 29): a two-entry
+// buffer between the pipeline and the pixel handshake, so that px_ready_i reaches only
+// this buffer's flip-flops and the pipeline advance is a register (adv_o). Without it
+// px_ready_i would gate every stage register combinationally: on an iCE40-UP5K that path
+// (ready -> enable logic -> global clock-enable buffer) is the slowest of the core.
+//
+//   adv_o     registered: 1 when the buffer will hold at most one pixel at the next edge,
+//             so that a pixel pushed then always has room (two entries suffice)
+//   push      in_valid_i at an edge where adv_o is high (the pipeline's last stage moves)
+//   pop       px_valid_o && px_ready_i (AXI4-Stream transfer)
+// px_valid_o and px_data_o are registers: once valid, they hold until the transfer, and
+// px_valid_o never waits for px_ready_i. px_data_o reads 0 while px_valid_o is low. With
+// px_ready_i always high the buffer holds at most one pixel and adv_o stays high: one
+// pixel per clock, one clock of latency.
+
+`include "specular_assert.svh"
+
+module specular_out_buf #(
+  parameter int Width = 33
+) (
+  input  logic             clk_i,
+  input  logic             rst_ni,
+  output logic             adv_o,       // pipeline advance (a register)
+  input  logic             in_valid_i,  // the pipeline's last stage holds a pixel
+  input  logic [Width-1:0] in_data_i,
+  output logic             px_valid_o,
+  input  logic             px_ready_i,
+  output logic [Width-1:0] px_data_o
+);
+
+  logic [1:0]       count_q, count_d;
+  logic [Width-1:0] head_q, head_d, tail_q, tail_d;
+  logic             adv_q, push, pop;
+
+  assign push = adv_q & in_valid_i;
+  assign pop  = (count_q != 2'd0) & px_ready_i;
+
+  always_comb begin
+    head_d  = head_q;
+    tail_d  = tail_q;
+    count_d = count_q;
+    unique case ({push, pop})
+      2'b10: begin
+        if (count_q == 2'd0) begin
+          head_d = in_data_i;
+        end else begin
+          tail_d = in_data_i;
+        end
+        count_d = count_q + 2'd1;
+      end
+      2'b01: begin
+        head_d  = (count_q == 2'd2) ? tail_q : '0;
+        count_d = count_q - 2'd1;
+      end
+      2'b11: begin
+        // count 1: a pop needs an entry, and a push needs adv_q, which is the registered
+        // room (count <= 1, asserted by AdvIsRoom_A), so the buffer is never full here.
+        head_d = in_data_i;
+      end
+      default: ;
+    endcase
+  end
+
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      count_q <= 2'd0;
+      head_q  <= '0;
+      tail_q  <= '0;
+      adv_q   <= 1'b1;
+    end else begin
+      count_q <= count_d;
+      head_q  <= head_d;
+      tail_q  <= tail_d;
+      adv_q   <= count_d <= 2'd1;
+    end
+  end
+
+  assign adv_o      = adv_q;
+  assign px_valid_o = count_q != 2'd0;
+  assign px_data_o  = head_q;
+
+  // Assertions (rtl/prim/specular_assert.svh). At most two entries, and the advance is the
+  // registered "room" (so a push never meets a full buffer: the push-and-pop arm above
+  // relies on it); while stalled the pixel stays valid and unchanged; an empty buffer reads
+  // 0; a valid pixel is known.
+  `SPEC_ASSERT(CountMax_A, count_q <= 2'd2, clk_i, rst_ni)
+  `SPEC_ASSERT(AdvIsRoom_A, adv_q == (count_q <= 2'd1), clk_i, rst_ni)
+  `SPEC_ASSERT_IF(HoldWhileStalled_A, px_valid_o && !px_ready_i, count_d != 2'd0 && head_d == head_q, clk_i, rst_ni)
+  `SPEC_ASSERT_IF(EmptyReadsZero_A, !px_valid_o, px_data_o == '0, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN(InputsKnown_A, {in_valid_i, px_ready_i}, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(PushKnown_A, in_data_i, push, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(DataKnown_A, px_data_o, px_valid_o, clk_i, rst_ni)
+
+endmodule

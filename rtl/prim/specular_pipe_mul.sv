@@ -1,0 +1,108 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// Pipelined unsigned multiplier p = a * b, exact, for the LUT fabric of an iCE40 (no DSP
+// needed), one new operand pair every clock, en_i freezes every stage (pipeline stall).
+// No reset: the datapath carries no control state, the valid bits beside it are reset.
+//
+// b is taken two bits at a time; each digit selects 0, a, 2a or 3a (a3_i, which the caller
+// computes a clock earlier, off this pipeline's path). The first stage only registers the
+// selected rows (a multiplexer, no carry chain: the AND in front of an adder costs the UP5K
+// its 50 MHz otherwise), then a binary tree of adders with a register after every level
+// adds them, so no stage holds more than one carry chain. Stages:
+// specular_prim_pkg::pipe_mul_stages(BBits) = 1 + clog2(ceil(BBits / 2)) (docs/pipeline.md#stage-counts);
+// the block checks at elaboration that the tree it builds has that many levels.
+// Used by multiplier 11 (coef * |psi|), the ROM 12 interpolation (t * d) and
+// multiplier 13 (C * cos^k) of patent UA 71489.
+
+`include "specular_assert.svh"
+
+module specular_pipe_mul #(
+  parameter int ABits = 16,
+  parameter int BBits = 16
+) (
+  input  logic                   clk_i,
+  input  logic                   en_i,
+  input  logic [ABits-1:0]       a_i,
+  input  logic [ABits+1:0]       a3_i,    // 3 * a_i
+  input  logic [BBits-1:0]       b_i,
+  output logic [ABits+BBits-1:0] p_o
+);
+
+  localparam int PBits  = ABits + BBits;
+  localparam int NRows  = (BBits + 1) / 2;
+  localparam int Levels = specular_prim_pkg::pipe_mul_stages(BBits);
+
+  // (BBits = 1 needs no multiplier; from 2 on every digit row fits the product's width.)
+  if (ABits < 1 || BBits < 2) begin : gen_width_check
+    `SPEC_PARAM_ERROR("specular_pipe_mul: ABits must be >= 1 and BBits >= 2")
+  end
+  // Level 1 registers the rows, levels 2 .. Levels halve them until one is left.
+  if (Levels != 1 + ((NRows > 1) ? $clog2(NRows) : 0)) begin : gen_levels_check
+    `SPEC_PARAM_ERROR("specular_pipe_mul: specular_prim_pkg::pipe_mul_stages disagrees with the tree built here")
+  end
+
+  // rows[l][j]: row j after level l; level 0 is combinational.
+  logic [PBits-1:0] rows [Levels+1][NRows];
+
+  logic [2*NRows-1:0] b_pad;
+  assign b_pad = (2 * NRows)'(b_i);
+  for (genvar j = 0; j < NRows; j++) begin : gen_pp
+    logic [1:0]       digit;
+    logic [ABits+1:0] digit_row;
+    assign digit = b_pad[2*j +: 2];  // Icarus 11: no constant part select in always_comb
+    always_comb begin
+      unique case (digit)
+        2'd0:    digit_row = '0;
+        2'd1:    digit_row = (ABits + 2)'(a_i);
+        2'd2:    digit_row = (ABits + 2)'(a_i) << 1;
+        default: digit_row = a3_i;
+      endcase
+    end
+    assign rows[0][j] = PBits'(digit_row) << (2 * j);
+  end
+
+  for (genvar l = 1; l <= Levels; l++) begin : gen_level
+    // Level 1 registers the rows as they are; later levels add pairs.
+    localparam bit Adds  = l != 1;
+    localparam int Shift = l - 1;   // additions done up to this level
+    localparam int NPrev = Adds ? (NRows + (1 << (Shift - 1)) - 1) >> (Shift - 1) : NRows;
+    localparam int NCur  = (NRows + (1 << Shift) - 1) >> Shift;
+    for (genvar j = 0; j < NCur; j++) begin : gen_row
+      logic [PBits-1:0] sum, sum_q;
+      if (!Adds) begin : gen_copy
+        assign sum = rows[l-1][j];
+      end else if (2 * j + 1 < NPrev) begin : gen_add
+        assign sum = rows[l-1][2*j] + rows[l-1][2*j+1];
+      end else begin : gen_pass
+        assign sum = rows[l-1][2*j];
+      end
+      always_ff @(posedge clk_i) begin
+        if (en_i) begin
+          sum_q <= sum;
+        end
+      end
+      // rows is driven by continuous assignments only (Icarus 11 cannot mix them with
+      // procedural writes to other words of the same array).
+      assign rows[l][j] = sum_q;
+    end
+    // Rows beyond NCur are not used at this level.
+    for (genvar j = NCur; j < NRows; j++) begin : gen_unused_row
+      assign rows[l][j] = '0;
+    end
+  end
+
+  assign p_o = rows[Levels][0];
+
+  // Assertions (rtl/prim/specular_assert.svh): the caller's 3a matches a (it registers both,
+  // from the same a, on the same enable). No reset here: checked from the first enabled edge
+  // on (before it the caller's registers hold power-up values) and on known operands (a
+  // bubble's may be X).
+`ifndef SYNTHESIS
+  `SPEC_PRIMED(primed_q, clk_i, en_i)
+  logic a_known;
+  assign a_known = `SPEC_KNOWN({a_i, a3_i});
+  `SPEC_ASSERT_IF(A3IsThreeA_A, en_i && a_known, a3_i == (ABits + 2)'(a_i) * (ABits + 2)'(3), clk_i, primed_q)
+`endif
+
+endmodule

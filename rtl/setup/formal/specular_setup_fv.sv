@@ -1,0 +1,359 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// specular_setup_fv: formal property harness of specular_setup's handshakes (geometry span
+// in, span descriptor out; docs/interfaces.md#geometry-span-interface,
+// docs/setup_hw.md#the-rtl). Run by scripts/formal_setup.sh (ctests rtl_formal_setup and
+// rtl_formal_setup_mutant): Yosys read_verilog -formal, Yosys sat -tempinduct (base case
+// from reset plus induction: an unbounded proof). Everything below the instance is under
+// `ifdef FORMAL; this file is not in the filelist rtl/specular.f.
+//
+// ABSTRACTION (in scripts/formal_setup.sh, documented in docs/formal.md): the script
+// cuts the arithmetic datapath where it reaches the descriptor (the wires c_96, psi0_96,
+// dpsi_96, a_pos_96, opp_h_96, n_96, len_96 and the status flags become free values every
+// clock) and removes the logic left without a reader. What remains is the control: the
+// input register's valid, the valid delay line, the tag's delay line, the output buffer.
+// No property below constrains a cut value, so the proof covers the real datapath.
+// The core keeps its production parameters except TagBits (2 here).
+//
+// Properties (asserted whenever rst_ni is high), under two assumptions: the design starts in
+// reset (resets may come again at any clock) and the producer follows AXI4-Stream
+// (geo_valid_i, once high, stays high with every geo_*_i stable until accepted; a reset
+// releases it). span_ready_i is free.
+//   P1 stall    after a cycle with span_valid_o && !span_ready_i, span_valid_o is still high
+//               and every span_*_o is unchanged
+//   P2 no wait  once a span has been owed (accepted, not yet transferred) with span_ready_i
+//               low for Latency consecutive cycles, span_valid_o is high: valid does not wait
+//               for ready
+//   P3 owed     span_valid_o -> accepted spans > transferred spans (counted modulo 2^SeqBits;
+//               at most Latency + 1 are in flight): no output without an accepted span, and
+//               after a reset (counters cleared) nothing from before it comes out
+//   P4 order    the solver picks any accepted span (the free input f_pick_i at its accept)
+//               and records its tag and its number; when the output's number (transfers so
+//               far) equals it, span_tag_o is the recorded tag. With P3: exactly one output
+//               per accepted span, in order, with its tag
+//   P5 reset    while rst_ni is low, span_valid_o is low
+//   P6 rate     once geo_valid_i and span_ready_i have both been high for Latency + 1
+//               consecutive cycles, span_valid_o and geo_ready_o are high: one span per clock
+//               sustained (the extra cycle: a full output buffer needs one pop before the
+//               advance is high)
+// Strengthening invariants (needed for induction, proven like the properties) relate ghost
+// registers shifted with the pipeline (g_seq: per stage, the number of the stage's span, or
+// for an empty stage the number of the next span to come below the ones above it) to the
+// core's stage valids, tags and output buffer, read through probe wires that
+// scripts/formal_setup.sh connects after flatten:
+//   p_vld0  = u_dut.in_valid_q                     p_tag0 = u_dut.tag_q
+//   p_vline = u_dut.u_dly_valid.gen_regs.line_q    (stages 1 .. Depth)
+//   p_oline = u_dut.u_dly_out.gen_regs.line_q      ({len, n, tag, 3 flags} per stage)
+//   p_count, p_head, p_tail, p_adv = u_dut.u_out_buf.{count_q, head_q, tail_q, adv_q}
+// With FV_PROPERTIES_ONLY defined (the mutant runs) the invariants and probes are left out.
+
+module specular_setup_fv #(
+  parameter int VecBits = 18,
+  parameter int TagBits = 2,
+  // Registers after the input register (the core's tau of the descriptor, TC = 96); set by
+  // scripts/formal_setup.sh from the length of the valid delay line.
+  parameter int Depth   = 96
+) (
+  input  logic                 clk_i,
+  input  logic                 rst_ni,
+  input  logic                 geo_valid_i,
+  output logic                 geo_ready_o,
+  input  logic [3*VecBits-1:0] geo_n1_i,
+  input  logic [3*VecBits-1:0] geo_n2_i,
+  input  logic [3*VecBits-1:0] geo_h1_i,
+  input  logic [3*VecBits-1:0] geo_he_i,
+  input  logic [9:0]           geo_n_i,
+  input  logic [10:0]          geo_len_i,
+  input  logic [15:0]          geo_scale_i,
+  input  logic [TagBits-1:0]   geo_tag_i,
+  output logic                 span_valid_o,
+  input  logic                 span_ready_i,
+  output logic [15:0]          span_c_o,
+  output logic [31:0]          span_psi0_o,
+  output logic [31:0]          span_dpsi_o,
+  output logic [9:0]           span_n_o,
+  output logic [10:0]          span_len_o,
+  output logic [TagBits-1:0]   span_tag_o,
+  output logic [2:0]           span_status_o,
+  // The solver's choice of the tracked span (P4): high at the accept of the span to track.
+  input  logic                 f_pick_i
+);
+
+  specular_setup #(
+    .VecBits (VecBits),
+    .TagBits (TagBits)
+  ) u_dut (
+    .clk_i         (clk_i),
+    .rst_ni        (rst_ni),
+    .geo_valid_i   (geo_valid_i),
+    .geo_ready_o   (geo_ready_o),
+    .geo_n1_i      (geo_n1_i),
+    .geo_n2_i      (geo_n2_i),
+    .geo_h1_i      (geo_h1_i),
+    .geo_he_i      (geo_he_i),
+    .geo_n_i       (geo_n_i),
+    .geo_len_i     (geo_len_i),
+    .geo_scale_i   (geo_scale_i),
+    .geo_tag_i     (geo_tag_i),
+    .span_valid_o  (span_valid_o),
+    .span_ready_i  (span_ready_i),
+    .span_c_o      (span_c_o),
+    .span_psi0_o   (span_psi0_o),
+    .span_dpsi_o   (span_dpsi_o),
+    .span_n_o      (span_n_o),
+    .span_len_o    (span_len_o),
+    .span_tag_o    (span_tag_o),
+    .span_status_o (span_status_o)
+  );
+
+`ifdef FORMAL
+  // Latency: from the accept cycle to the cycle the span is on the output (input register,
+  // Depth registers, the output buffer). In flight: at most one span per stage (0 .. Depth)
+  // plus two buffer entries, Depth + 3 < 2^SeqBits.
+  localparam int Latency    = Depth + 2;
+  localparam int SeqBits    = $clog2(Depth + 5);
+  localparam int StreakMax  = Latency + 1;
+  localparam int StreakBits = $clog2(Latency + 2);
+  localparam int GeoBits    = 12 * VecBits + 10 + 11 + 16 + TagBits;
+  localparam int SpanBits   = 16 + 32 + 32 + 10 + 11 + TagBits + 3;
+  localparam int OutW       = 11 + 10 + TagBits + 3;  // u_dly_out: {len, n, tag, 3 flags}
+
+  logic accept, xfer;
+  assign accept = geo_valid_i && geo_ready_o;
+  assign xfer   = span_valid_o && span_ready_i;
+
+  // ---------------------------------------------------------------------------------
+  // Assumptions: start in reset; AXI4-Stream producer on the geometry side
+  // ---------------------------------------------------------------------------------
+  logic f_started_q = 1'b0;
+  always_ff @(posedge clk_i) begin
+    f_started_q <= 1'b1;
+  end
+  always_comb begin
+    if (!f_started_q) begin
+      assume (!rst_ni);
+    end
+  end
+
+  logic [GeoBits-1:0] geo_bus, geo_held_q;
+  logic               geo_pend_q;
+  assign geo_bus = {geo_n1_i, geo_n2_i, geo_h1_i, geo_he_i, geo_n_i, geo_len_i, geo_scale_i,
+                    geo_tag_i};
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      geo_pend_q <= 1'b0;
+      geo_held_q <= '0;
+    end else begin
+      geo_pend_q <= geo_valid_i && !geo_ready_o;
+      geo_held_q <= geo_bus;
+    end
+  end
+  always_comb begin
+    if (rst_ni && geo_pend_q) begin
+      assume (geo_valid_i);
+      assume (geo_bus == geo_held_q);
+    end
+  end
+
+  // ---------------------------------------------------------------------------------
+  // P1: valid held and descriptor stable while stalled; P5: no output in reset
+  // ---------------------------------------------------------------------------------
+  logic                stall_q;
+  logic [SpanBits-1:0] span_bus, span_held_q;
+  assign span_bus = {span_c_o, span_psi0_o, span_dpsi_o, span_n_o, span_len_o, span_tag_o,
+                     span_status_o};
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      stall_q     <= 1'b0;
+      span_held_q <= '0;
+    end else begin
+      stall_q     <= span_valid_o && !span_ready_i;
+      span_held_q <= span_bus;
+    end
+  end
+  always_comb begin
+    if (rst_ni && stall_q) begin
+      assert (span_valid_o);
+      assert (span_bus == span_held_q);
+    end
+    if (!rst_ni) begin
+      assert (!span_valid_o);
+    end
+  end
+
+  // ---------------------------------------------------------------------------------
+  // P3: span numbers; P4: the tracked span
+  // ---------------------------------------------------------------------------------
+  logic [SeqBits-1:0] n_acc_q, n_out_q;   // accepted, transferred (mod 2^SeqBits)
+  logic               f_trk_q, f_done_q;
+  logic [SeqBits-1:0] f_seq_q;
+  logic [TagBits-1:0] f_tag_q;
+  logic               f_hit;               // the tracked span is on the output
+  assign f_hit = f_trk_q && !f_done_q && span_valid_o && (n_out_q == f_seq_q);
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      n_acc_q  <= '0;
+      n_out_q  <= '0;
+      f_trk_q  <= 1'b0;
+      f_done_q <= 1'b0;
+      f_seq_q  <= '0;
+      f_tag_q  <= '0;
+    end else begin
+      n_acc_q <= n_acc_q + SeqBits'(accept);
+      n_out_q <= n_out_q + SeqBits'(xfer);
+      if (accept && f_pick_i && !f_trk_q) begin
+        f_trk_q <= 1'b1;
+        f_seq_q <= n_acc_q;
+        f_tag_q <= geo_tag_i;
+      end
+      if (f_hit && span_ready_i) begin
+        f_done_q <= 1'b1;
+      end
+    end
+  end
+  always_comb begin
+    if (rst_ni && span_valid_o) begin
+      assert (n_acc_q != n_out_q);
+    end
+    if (rst_ni && f_hit) begin
+      assert (span_tag_o == f_tag_q);
+    end
+  end
+
+  // ---------------------------------------------------------------------------------
+  // P2: valid does not wait for ready
+  // ---------------------------------------------------------------------------------
+  logic [StreakBits-1:0] lo_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      lo_q <= '0;
+    end else if (!span_ready_i && n_acc_q != n_out_q) begin
+      if (lo_q != StreakBits'(Latency)) begin
+        lo_q <= lo_q + 1'b1;
+      end
+    end else begin
+      lo_q <= '0;
+    end
+  end
+  always_comb begin
+    if (rst_ni && lo_q == StreakBits'(Latency)) begin
+      assert (span_valid_o);
+    end
+  end
+
+  // ---------------------------------------------------------------------------------
+  // P6: one span per clock
+  // ---------------------------------------------------------------------------------
+  logic [StreakBits-1:0] streak_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      streak_q <= '0;
+    end else if (geo_valid_i && span_ready_i) begin
+      if (streak_q != StreakBits'(StreakMax)) begin
+        streak_q <= streak_q + 1'b1;
+      end
+    end else begin
+      streak_q <= '0;
+    end
+  end
+  always_comb begin
+    if (rst_ni && streak_q == StreakBits'(StreakMax)) begin
+      assert (span_valid_o);
+      assert (geo_ready_o);
+    end
+  end
+
+`ifndef FV_PROPERTIES_ONLY
+  // ---------------------------------------------------------------------------------
+  // Strengthening invariants on the core's state (probes connected by
+  // scripts/formal_setup.sh). Left out (FV_PROPERTIES_ONLY) by the mutant runs.
+  // ---------------------------------------------------------------------------------
+  logic                    p_vld0;    // the input register holds a span (stage 0)
+  logic [TagBits-1:0]      p_tag0;    // ... its tag
+  logic [Depth-1:0]        p_vline;   // stage j (1 .. Depth) valid: bit j - 1
+  logic [Depth*OutW-1:0]   p_oline;   // stage j's {len, n, tag, flags}: field j - 1
+  logic [1:0]              p_count;   // output buffer: entries
+  logic [SpanBits-1:0]     p_head;    // ... the entry on the output
+  logic [SpanBits-1:0]     p_tail;    // ... the entry behind it
+  logic                    p_adv;     // ... its registered room: the pipeline advance
+
+  logic [Depth:0]             vld;
+  logic [(Depth+1)*TagBits-1:0] tag;
+  assign vld = {p_vline, p_vld0};
+  assign tag[TagBits-1:0] = p_tag0;
+  for (genvar j = 1; j <= Depth; j++) begin : gen_tag
+    assign tag[j*TagBits +: TagBits] = p_oline[(j-1)*OutW + 3 +: TagBits];
+  end
+  logic [TagBits-1:0] head_tag, tail_tag;
+  assign head_tag = p_head[3 +: TagBits];
+  assign tail_tag = p_tail[3 +: TagBits];
+
+  // Ghost span numbers, shifted at every edge where the core's stages move (p_adv high).
+  logic [(Depth+1)*SeqBits-1:0] g_seq_q;
+  always_ff @(posedge clk_i or negedge rst_ni) begin
+    if (!rst_ni) begin
+      g_seq_q <= '0;
+    end else if (p_adv) begin
+      g_seq_q <= {g_seq_q[Depth*SeqBits-1:0], n_acc_q};
+    end
+  end
+
+  logic f_live;  // a tracked span not yet transferred
+  assign f_live = f_trk_q && !f_done_q;
+
+  for (genvar j = 0; j <= Depth; j++) begin : gen_inv
+    logic [SeqBits-1:0] seq, ahead;
+    assign seq   = g_seq_q[j*SeqBits +: SeqBits];
+    assign ahead = seq - n_out_q;   // spans in the buffer and stages j + 1 .. Depth
+    always_comb begin
+      if (rst_ni) begin
+        assert (ahead <= SeqBits'(Depth - j + 2));
+        assert (ahead >= SeqBits'(p_count));
+        if (j < Depth) begin
+          assert (seq == g_seq_q[(j+1)*SeqBits +: SeqBits] + SeqBits'(vld[j+1]));
+        end else begin
+          assert (seq == n_out_q + SeqBits'(p_count));
+        end
+        if (f_live && vld[j] && seq == f_seq_q) begin
+          assert (tag[j*TagBits +: TagBits] == f_tag_q);
+        end
+        // P2's induction: Latency - j - 1 cycles owed and not ready put the oldest span in
+        // stage j + 1 .. Depth or the buffer.
+        if (lo_q >= StreakBits'(j + 2)) begin
+          assert (p_count != '0 || seq != n_out_q);
+        end
+        // P6's fill: j + 2 qualifying cycles fill stages 0 .. j.
+        if (streak_q >= StreakBits'(j + 2)) begin
+          assert (vld[j]);
+        end
+      end
+    end
+  end
+
+  always_comb begin
+    if (rst_ni) begin
+      assert (p_count <= 2'd2);
+      assert (p_adv == (p_count <= 2'd1));
+      assert (n_acc_q == g_seq_q[SeqBits-1:0] + SeqBits'(p_vld0));
+      if (f_live) begin
+        assert (SeqBits'(f_seq_q - n_out_q) < SeqBits'(n_acc_q - n_out_q));
+      end
+      if (f_live && p_count != '0 && n_out_q == f_seq_q) begin
+        assert (head_tag == f_tag_q);
+      end
+      if (f_live && p_count == 2'd2 && n_out_q + 1'b1 == f_seq_q) begin
+        assert (tail_tag == f_tag_q);
+      end
+      if (lo_q >= StreakBits'(1)) begin
+        assert (p_count != '0 || n_acc_q != n_out_q);
+      end
+      if (streak_q >= StreakBits'(1)) begin
+        assert (p_adv);
+      end
+    end
+  end
+`endif  // FV_PROPERTIES_ONLY
+`endif  // FORMAL
+
+endmodule

@@ -1,0 +1,131 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// specular_system: a complete specular shading system in hardware, geometry in, pixels out
+// (docs/setup_hw.md#the-system): specular_setup turns each geometry span
+// (docs/interfaces.md#geometry-span-interface) into a span descriptor, specular_stream
+// shades its l + 1 pixels. The pixel side is exactly specular_stream's (px_valid_o,
+// px_ready_i, px_intensity_o, px_last_o, px_tag_o, same rules); the geometry side follows
+// the same AXI4-Stream rules, geo_ready_o a function of registers only (specular_setup's).
+//
+// The setup takes a span per clock (SetupII = 1; at most one every SetupII clocks otherwise,
+// docs/setup_hw.md#sharing-over-setupii-clocks) and the stream a pixel per clock, so with
+// px_ready_i high and SetupII = 1 the system shades one pixel per clock, one-pixel spans back
+// to back included; the setup's two-entry output buffer holds the descriptors while the
+// stream works on a long span. The setup's status is not on the pixel side: a span it resolves to C = 0 gives l + 1
+// pixels of 0.
+//
+// Parameters: the core's list (rtl/core/specular_params.svh) with the register formats the setup
+// produces (device::Format's defaults), VecBits, TagBits, the setup's HeEqH1 and SetupII and
+// its ROM files.
+
+`include "specular_assert.svh"
+`include "specular_params.svh"
+
+module specular_system #(
+  `SPECULAR_CORE_PARAMS,
+  parameter int TagBits       = 16,
+  parameter int VecBits       = 18,
+  parameter bit HeEqH1        = 1'b0,  // specular_setup's: geo_he_i ignored, He = H1
+  parameter int SetupII       = 1,     // specular_setup's: at most one span every SetupII clocks
+  parameter     RsqrtSeedFile = "roms/setup/rsqrt_seed.hex",
+  parameter     LogRecipFile  = "roms/setup/log_recip.hex",
+  parameter     LogValueFile  = "roms/setup/log_value.hex",
+  parameter     Exp2File      = "roms/setup/exp2.hex",
+  parameter     RecipLenFile  = "roms/setup/recip_len.hex"
+) (
+  input  logic                 clk_i,
+  input  logic                 rst_ni,
+  input  logic                 geo_valid_i,
+  output logic                 geo_ready_o,
+  input  logic [3*VecBits-1:0] geo_n1_i,
+  input  logic [3*VecBits-1:0] geo_n2_i,
+  input  logic [3*VecBits-1:0] geo_h1_i,
+  input  logic [3*VecBits-1:0] geo_he_i,
+  input  logic [NBits-1:0]     geo_n_i,
+  input  logic [LenBits-1:0]   geo_len_i,
+  input  logic [CBits-1:0]     geo_scale_i,
+  input  logic [TagBits-1:0]   geo_tag_i,
+  output logic                 px_valid_o,
+  input  logic                 px_ready_i,
+  output logic [CBits-1:0]     px_intensity_o,
+  output logic                 px_last_o,
+  output logic [TagBits-1:0]   px_tag_o
+);
+
+  // specular_setup produces the registers in the default formats (16-bit C with 15
+  // fraction bits, angles of 32 bits with 28, n of 10, l of 11).
+  if (CBits != 16 || CFrac != 15 || AngleBits != 32 || AngleFrac != 28 || NBits != 10 || LenBits != 11) begin : gen_fmt_check
+    `SPEC_PARAM_ERROR("specular_system: the register formats must be the defaults (C 16/15, angles 32/28, n 10, l 11)")
+  end
+  if (SetupII != 1 && SetupII != 2 && SetupII != 4 && SetupII != 8) begin : gen_ii_check
+    `SPEC_PARAM_ERROR("specular_system: SetupII must be 1, 2, 4 or 8")
+  end
+
+  logic                 span_valid, span_ready;
+  logic [CBits-1:0]     span_c;
+  logic [AngleBits-1:0] span_psi0, span_dpsi;
+  logic [NBits-1:0]     span_n;
+  logic [LenBits-1:0]   span_len;
+  logic [TagBits-1:0]   span_tag;
+  logic [2:0]           span_status;
+
+  specular_setup #(
+    .VecBits       (VecBits),
+    .TagBits       (TagBits),
+    .HeEqH1        (HeEqH1),
+    .SetupII       (SetupII),
+    .RsqrtSeedFile (RsqrtSeedFile),
+    .LogRecipFile  (LogRecipFile),
+    .LogValueFile  (LogValueFile),
+    .Exp2File      (Exp2File),
+    .RecipLenFile  (RecipLenFile)
+  ) u_setup (
+    .clk_i         (clk_i),
+    .rst_ni        (rst_ni),
+    .geo_valid_i   (geo_valid_i),
+    .geo_ready_o   (geo_ready_o),
+    .geo_n1_i      (geo_n1_i),
+    .geo_n2_i      (geo_n2_i),
+    .geo_h1_i      (geo_h1_i),
+    .geo_he_i      (geo_he_i),
+    .geo_n_i       (geo_n_i),
+    .geo_len_i     (geo_len_i),
+    .geo_scale_i   (geo_scale_i),
+    .geo_tag_i     (geo_tag_i),
+    .span_valid_o  (span_valid),
+    .span_ready_i  (span_ready),
+    .span_c_o      (span_c),
+    .span_psi0_o   (span_psi0),
+    .span_dpsi_o   (span_dpsi),
+    .span_n_o      (span_n),
+    .span_len_o    (span_len),
+    .span_tag_o    (span_tag),
+    .span_status_o (span_status)
+  );
+
+  specular_stream #(
+    `SPECULAR_CORE_PARAM_MAP,
+    .TagBits (TagBits)
+  ) u_stream (
+    .clk_i          (clk_i),
+    .rst_ni         (rst_ni),
+    .span_valid_i   (span_valid),
+    .span_ready_o   (span_ready),
+    .span_c_i       (span_c),
+    .span_psi0_i    (span_psi0),
+    .span_dpsi_i    (span_dpsi),
+    .span_n_i       (span_n),
+    .span_len_i     (span_len),
+    .span_tag_i     (span_tag),
+    .px_valid_o     (px_valid_o),
+    .px_ready_i     (px_ready_i),
+    .px_intensity_o (px_intensity_o),
+    .px_last_o      (px_last_o),
+    .px_tag_o       (px_tag_o)
+  );
+
+  logic [2:0] unused_status;
+  assign unused_status = span_status;
+
+endmodule
