@@ -44,8 +44,9 @@ COPIES = [
     (re.compile(r"\bstages? \d+ *\.\. *\d+"), "a stage range written as numbers"),
 ]
 
-SCAN = ["*.md", "docs/*.md", "rtl/*.md", "rtl/*/*.md", "sim/*.md", "roms/*.md", "scenes/*.md",
-        "tests/*/*.md", "rtl/*.sv", "rtl/*.svh", "rtl/*/*.sv", "sim/*.sv", "sim/*.cpp",
+# Every text a reader sees, the harnesses under rtl/ included (so not the filelists alone).
+SCAN = ["*.md", "docs/*.md", "rtl/**/*.md", "sim/*.md", "roms/*.md", "scenes/*.md",
+        "tests/*/*.md", "rtl/**/*.sv", "rtl/**/*.svh", "sim/*.sv", "sim/*.cpp",
         "sim/*.hpp", "tests/*/*.cpp", "tests/*/*.hpp", "scripts/*.sh", "scripts/*.py"]
 
 

@@ -24,15 +24,11 @@ set(expect_name "CountMax_A")
 
 file(REMOVE_RECURSE ${OUT})
 include(${ROOT}/rtl/specular_filelist.cmake)
-specular_filelist(sources incdirs)
-# The copy keeps the paths relative to the root; sources, then every header of the
-# include directories.
-set(copies "")
-foreach(d IN LISTS incdirs)
-  file(GLOB headers ${d}/*.svh)
-  list(APPEND copies ${headers})
-endforeach()
-list(APPEND copies ${sources})
+specular_filelist(sources incdirs rtl/core/core.f)
+specular_filelist_includes(headers rtl/core/core.f)
+# The copy keeps the paths relative to the root: the include files the sources read, then
+# the sources.
+set(copies ${headers} ${sources})
 set(mut_sources "")
 set(mut_incdirs "")
 foreach(f IN LISTS copies)
