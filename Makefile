@@ -18,7 +18,7 @@ help:
 	@echo "make formal  the formal proofs alone (specular_stream's handshakes, specular_axil's AXI4-Lite rules, phong_stream's bounded check) and their mutants"
 	@echo "make sim-setup-ii  the system stage at SetupII 1, 2, 4 and 8 (turns on SPECULAR_SYSTEM_SETUP_II in $(BUILD): three more models)"
 	@echo "make roms    regenerate every configuration's ROM hex files and roms/build_configs.cmake (romgen --all)"
-	@echo "make stage-table  rewrite docs/pipeline.md's stage table from rtl/core/specular_pkg.sv"
+	@echo "make stage-table  rewrite docs/pipeline.md's stage table from rtl/prim/specular_pkg.sv"
 	@echo "make vcd     write VCD timing diagrams to $(BUILD)/vcd and draw the 4-pixel one"
 	@echo "make report  measure and write $(BUILD)/report/report.md"
 	@echo "make lint    verilator -Wall lint and Yosys synthesis of rtl/"
@@ -64,7 +64,7 @@ sim-setup-ii: configure
 	./$(BUILD)/bin/sim_regression --config default --random 0 --stream-spans 0 --setup-ii 1,2,4,8 \
 	  --images-dir $(BUILD)/scenes --json $(BUILD)/sim_setup_ii.json
 
-# docs/pipeline.md's stage table from rtl/core/specular_pkg.sv (docs/pipeline.md#stage-counts).
+# docs/pipeline.md's stage table from rtl/prim/specular_pkg.sv (docs/pipeline.md#stage-counts).
 stage-table: build
 	$(PYTHON) tests/docs/check_stage_counts.py --sim $(BUILD)/bin/sim_regression --root . --update
 

@@ -208,7 +208,7 @@ struct SceneRunOptions {
 // The regression lines on specular_unit (V), then every scene through specular_stream (SV) of
 // the same configuration, with the same checker and budgets; the scene images are written
 // when images_dir is not empty.
-// Pipeline: the configuration's stage counts (sim/specular_pipeline.sv from rtl/core/specular_pkg.sv),
+// Pipeline: the configuration's stage counts (sim/specular_pipeline.sv from rtl/prim/specular_pkg.sv),
 // where the expected latencies come from.
 template <class V, class Root, class SV, class SRoot, class Pipeline>
 PolicyStats run_config(const specular::BuildConfig& bc, const std::vector<Scanline>& det,

@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
-// specular_pipeline: the stage counts of rtl/core/specular_pkg.sv for one configuration's widths,
+// specular_pipeline: the stage counts of rtl/prim/specular_pkg.sv for one configuration's widths,
 // as public localparams a Verilator testbench reads (docs/pipeline.md#stage-counts). It
 // holds no logic: the testbenches take their expected latencies from here, from the
 // definition the RTL is built from, never from a parameter of the model under test or a
@@ -17,7 +17,7 @@ module specular_pipeline #(
   function automatic logic [8*TreeTableBits-1:0] tree_table();
     tree_table = '0;
     for (int b = 2; b < TreeTableBits; b++) begin
-      tree_table[8*b +: 8] = 8'(specular_prim_pkg::pipe_mul_stages(b));
+      tree_table[8*b +: 8] = 8'(specular_pkg::pipe_mul_stages(b));
     end
   endfunction
 

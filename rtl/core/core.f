@@ -5,7 +5,6 @@
 
 -f rtl/prim/prim.f
 +incdir+rtl/core
-rtl/core/specular_pkg.sv
 // patent blocks 1-14
 rtl/core/specular_reg.sv
 rtl/core/specular_down_counter.sv

@@ -49,7 +49,7 @@ module specular_angle_mul #(
   localparam int PsiTBits  = 1 + PsiMulFrac;
   // Radix-4 tree over the bits of |psi|_t (specular_pipe_mul); the block's registers around
   // it are those specular_pkg::angle_mul_stages counts (docs/pipeline.md#stage-counts).
-  localparam int MulStages = specular_prim_pkg::pipe_mul_stages(PsiTBits);
+  localparam int MulStages = specular_pkg::pipe_mul_stages(PsiTBits);
   localparam int RetimeStages = specular_pkg::Mul11RetimeStages;
   localparam int ZetaBits  = CoefBits + PsiTBits;
   localparam int ZetaFrac  = CoefFrac + PsiMulFrac;

@@ -52,7 +52,7 @@ module specular_cos_k_rom #(
   localparam int Depth     = NumBanks << CosAddrBits;
   localparam int WordBits  = CosInterp ? CosDataBits + 1 + CosDeltaBits : CosDataBits;
   // Radix-4 tree over the bits of d (specular_pipe_mul), t and 3t as the multiplicand.
-  localparam int MulStages = specular_prim_pkg::pipe_mul_stages(CosDeltaBits);
+  localparam int MulStages = specular_pkg::pipe_mul_stages(CosDeltaBits);
 
   if (specular_pkg::Rom12ReadStages != 1 || specular_pkg::Rom12OutStages != 1) begin : gen_pkg_check
     `SPEC_PARAM_ERROR("specular_cos_k_rom: builds one read register and one subtraction register (specular_pkg)")

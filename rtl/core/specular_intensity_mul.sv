@@ -35,7 +35,7 @@ module specular_intensity_mul #(
 
   localparam int ProdBits  = CBits + CosDataBits + 1;
   // Radix-4 tree over the bits of cos^k (specular_pipe_mul), C and 3C as the multiplicand.
-  localparam int MulStages = specular_prim_pkg::pipe_mul_stages(CosDataBits + 1);
+  localparam int MulStages = specular_pkg::pipe_mul_stages(CosDataBits + 1);
   if (specular_pkg::Mul13OutStages != 1) begin : gen_pkg_check
     `SPEC_PARAM_ERROR("specular_intensity_mul: builds one output register behind the tree (specular_pkg)")
   end

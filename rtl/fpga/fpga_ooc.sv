@@ -23,6 +23,7 @@
 //   setup   geo_valid, n1, n2, h1, he [3*VecBits each], n[NBits], len[LenBits],
 //           scale[CBits], tag[TagBits], span_ready
 //   system  as phong (the last bit px_ready)
+//   mul     a[MulBits], b[MulBits]: specular_pipe_mul alone (6 mul; the flow's smoke test)
 // Output parity, over:
 //   unit    intensity_o, valid_o, busy_o
 //   stream  span_ready_o, px_valid_o, px_intensity_o, px_last_o, px_tag_o
@@ -32,6 +33,7 @@
 //   setup   geo_ready_o, span_valid_o, span_c_o, span_psi0_o, span_dpsi_o, span_n_o,
 //           span_len_o, span_tag_o, span_status_o
 //   system  as phong
+//   mul     p_o of specular_pipe_mul
 //
 // Parameters: the interface widths are passed through to the core (TagBits to the stream
 // and the AXI4-Lite core, AddrWidth to the latter only; specular_axil's registers are 32
@@ -44,14 +46,16 @@
 
 module fpga_ooc #(
   parameter int Top       = 1,   // the core: 0 specular_unit, 1 specular_stream, 2 specular_axil,
-                                 // 3 phong_stream, 4 specular_setup, 5 specular_system
+                                 // 3 phong_stream, 4 specular_setup, 5 specular_system,
+                                 // 6 specular_pipe_mul
   parameter int CBits     = 16,
   parameter int AngleBits = 32,
   parameter int NBits     = 10,
   parameter int LenBits   = 11,
   parameter int TagBits   = 16,
   parameter int AddrWidth = 8,
-  parameter int VecBits   = 18   // phong_stream's vector components
+  parameter int VecBits   = 18,  // phong_stream's vector components
+  parameter int MulBits   = 16   // Top 6: the operand width of the lone multiplier
 ) (
   input  logic clk_i,
   input  logic rst_ni,
@@ -66,17 +70,20 @@ module fpga_ooc #(
   localparam int TopPhong  = 3;
   localparam int TopSetup  = 4;
   localparam int TopSystem = 5;
+  localparam int TopMul    = 6;  // specular_pipe_mul alone: the smallest block, for the flow's smoke test
 
   localparam int PxBits  = ((CBits + 7) / 8) * 8;   // AXI4-Stream TDATA: whole bytes
   localparam int InBits  = (Top == TopUnit)   ? 5 + CBits + 2 * AngleBits + NBits + LenBits + 1
                          : (Top == TopStream) ? 2 + CBits + 2 * AngleBits + NBits + LenBits + TagBits
                          : (Top == TopPhong || Top == TopSetup || Top == TopSystem)
                                               ? 2 + 12 * VecBits + NBits + LenBits + CBits + TagBits
+                         : (Top == TopMul)    ? 2 * MulBits
                          :                     2 * AddrWidth + 48;
   localparam int OutBits = (Top == TopUnit)   ? CBits + 2
                          : (Top == TopStream || Top == TopPhong || Top == TopSystem)
                                               ? 3 + CBits + TagBits
                          : (Top == TopSetup)  ? 2 + CBits + 2 * AngleBits + NBits + LenBits + TagBits + 3
+                         : (Top == TopMul)    ? 2 * MulBits
                          :                     41 + PxBits + 3 + TagBits;
 
   logic               core_rst_n;
@@ -333,8 +340,34 @@ module fpga_ooc #(
       .px_last_o      (px_last),
       .px_tag_o       (px_tag)
     );
+  end else if (Top == TopMul) begin : gen_mul
+    logic [MulBits-1:0] a, b, a_q, b_q;
+    logic [MulBits+1:0] a3_q;
+
+    logic unused_rst_n;  // the multiplier has no reset: its datapath carries no state
+
+    assign {a, b} = core_in;
+    assign unused_rst_n = core_rst_n;
+    // The caller's 3a, registered in front of the tree as multiplier 11 does.
+    always_ff @(posedge clk_i) begin
+      a_q  <= a;
+      a3_q <= (MulBits + 2)'(a) + ((MulBits + 2)'(a) << 1);
+      b_q  <= b;
+    end
+
+    specular_pipe_mul #(
+      .ABits (MulBits),
+      .BBits (MulBits)
+    ) u_core (
+      .clk_i (clk_i),
+      .en_i  (1'b1),
+      .a_i   (a_q),
+      .a3_i  (a3_q),
+      .b_i   (b_q),
+      .p_o   (core_out)
+    );
   end else begin : gen_top_check
-    `SPEC_PARAM_ERROR("fpga_ooc: Top must be 0 (unit), 1 (stream), 2 (axil), 3 (phong), 4 (setup) or 5 (system)")
+    `SPEC_PARAM_ERROR("fpga_ooc: Top must be 0 (unit), 1 (stream), 2 (axil), 3 (phong), 4 (setup), 5 (system) or 6 (mul)")
   end
 
 endmodule

@@ -1,10 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 //
-// rtl/prim/prim.f: the shared primitives (stage-count package, delay line, pipelined multiplier, ROM, output buffer, assertion macros).
+// rtl/prim/prim.f: the shared primitives (the stage-count package specular_pkg, delay line, pipelined multiplier, ROM, output buffer, assertion macros).
 // Format and use: rtl/README.md#filelists.
 
 +incdir+rtl/prim
-rtl/prim/specular_prim_pkg.sv
+rtl/prim/specular_pkg.sv
 rtl/prim/specular_delay.sv
 rtl/prim/specular_pipe_mul.sv
 rtl/prim/specular_rom.sv

@@ -10,7 +10,7 @@
 // selected rows (a multiplexer, no carry chain: the AND in front of an adder costs the UP5K
 // its 50 MHz otherwise), then a binary tree of adders with a register after every level
 // adds them, so no stage holds more than one carry chain. Stages:
-// specular_prim_pkg::pipe_mul_stages(BBits) = 1 + clog2(ceil(BBits / 2)) (docs/pipeline.md#stage-counts);
+// specular_pkg::pipe_mul_stages(BBits) = 1 + clog2(ceil(BBits / 2)) (docs/pipeline.md#stage-counts);
 // the block checks at elaboration that the tree it builds has that many levels.
 // Used by multiplier 11 (coef * |psi|), the ROM 12 interpolation (t * d) and
 // multiplier 13 (C * cos^k) of patent UA 71489.
@@ -31,7 +31,7 @@ module specular_pipe_mul #(
 
   localparam int PBits  = ABits + BBits;
   localparam int NRows  = (BBits + 1) / 2;
-  localparam int Levels = specular_prim_pkg::pipe_mul_stages(BBits);
+  localparam int Levels = specular_pkg::pipe_mul_stages(BBits);
 
   // (BBits = 1 needs no multiplier; from 2 on every digit row fits the product's width.)
   if (ABits < 1 || BBits < 2) begin : gen_width_check
@@ -39,7 +39,7 @@ module specular_pipe_mul #(
   end
   // Level 1 registers the rows, levels 2 .. Levels halve them until one is left.
   if (Levels != 1 + ((NRows > 1) ? $clog2(NRows) : 0)) begin : gen_levels_check
-    `SPEC_PARAM_ERROR("specular_pipe_mul: specular_prim_pkg::pipe_mul_stages disagrees with the tree built here")
+    `SPEC_PARAM_ERROR("specular_pipe_mul: specular_pkg::pipe_mul_stages disagrees with the tree built here")
   end
 
   // rows[l][j]: row j after level l; level 0 is combinational.

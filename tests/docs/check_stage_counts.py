@@ -5,7 +5,7 @@
   check_stage_counts.py --sim SIM_REGRESSION --root ROOT [--update | --self-test]
 
 1. The table between the stage-table markers of docs/pipeline.md must equal what
-   `sim_regression --stage-table` prints (the stage counts of rtl/core/specular_pkg.sv at every
+   `sim_regression --stage-table` prints (the stage counts of rtl/prim/specular_pkg.sv at every
    configuration's widths). --update rewrites the table instead (make stage-table).
 2. No document, RTL source, testbench or script may write a latency, a pipeline depth or a
    stage range as a number: they cite docs/pipeline.md#stage-counts or read the package.
@@ -73,7 +73,7 @@ def check(sim, root, update=False):
     elif lines[b + 1 : e] != want:
         print(f"{doc}: the stage table differs from `sim_regression --stage-table` (run `make stage-table`):")
         print("  in the document:\n    " + "\n    ".join(lines[b + 1 : e]))
-        print("  from rtl/core/specular_pkg.sv:\n    " + "\n    ".join(want))
+        print("  from rtl/prim/specular_pkg.sv:\n    " + "\n    ".join(want))
         table_ok = False
     return table_ok, copies(root)
 
@@ -97,7 +97,7 @@ def copies(root):
                     m = rx.search(line)
                     if m:
                         print(f"{f.relative_to(root)}:{n}: '{m.group(0)}': {what}; cite "
-                              "docs/pipeline.md#stage-counts or take it from rtl/core/specular_pkg.sv")
+                              "docs/pipeline.md#stage-counts or take it from rtl/prim/specular_pkg.sv")
                         hits += 1
                         break
     return hits

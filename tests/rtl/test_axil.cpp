@@ -41,7 +41,7 @@ namespace dev = specular::device;
 
 namespace {
 
-// The default configuration's stream latency (sim/specular_pipeline.sv from rtl/core/specular_pkg.sv).
+// The default configuration's stream latency (sim/specular_pipeline.sv from rtl/prim/specular_pkg.sv).
 constexpr uint32_t kStreamLatency = Vpipeline_axi_default_specular_pipeline::StreamLatency;
 
 // Byte offsets (docs/interfaces.md).

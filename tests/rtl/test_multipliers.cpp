@@ -60,7 +60,7 @@ struct RandomStalls {
 
 // ------------------------------------------------------------------------------------
 // specular_pipe_mul: p = a * b exactly through the radix-4 tree every instance uses; the
-// latency it must show is specular_prim_pkg::pipe_mul_stages(BBits) (via sim/specular_pipeline.sv)
+// latency it must show is specular_pkg::pipe_mul_stages(BBits) (via sim/specular_pipeline.sv)
 // ------------------------------------------------------------------------------------
 
 struct MulItem {
@@ -119,7 +119,7 @@ std::vector<MulItem> every_pair(int a_bits, int b_bits) {
   return all;
 }
 
-// specular_prim_pkg::pipe_mul_stages(b), from sim/specular_pipeline.sv's table.
+// specular_pkg::pipe_mul_stages(b), from sim/specular_pipeline.sv's table.
 int tree_stages(int b) {
   using P = Vpipeline_default_specular_pipeline;
   const int bit = 8 * b;

@@ -33,7 +33,7 @@ namespace {
 
 using R = Vunit_specular_unit;  // public parameters (/*verilator public*/)
 // Start in cycle s -> first valid pixel in s + L: the start latch, register 8 and the block
-// latencies and the stream's output buffer, as rtl/core/specular_pkg.sv defines them (read through
+// latencies and the stream's output buffer, as rtl/prim/specular_pkg.sv defines them (read through
 // sim/specular_pipeline.sv, not from the model under test); the tests measure it.
 using P = Vpipeline_default_specular_pipeline;
 constexpr int kLatency = static_cast<int>(P::UnitLatency);

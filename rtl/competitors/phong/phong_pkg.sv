@@ -13,7 +13,7 @@ package phong_pkg;
 
   // phong_mul over a b_bits-wide operand b.
   function automatic int mul_stages(input int b_bits);
-    mul_stages = 1 + specular_prim_pkg::pipe_mul_stages(b_bits);
+    mul_stages = 1 + specular_pkg::pipe_mul_stages(b_bits);
   endfunction
 
   // phong_span_setup: the input register, differences / magnitudes / k, the multiplier

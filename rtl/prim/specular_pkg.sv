@@ -4,9 +4,11 @@
 // specular_pkg: the one definition of the pipeline's stage counts (docs/pipeline.md#stage-counts).
 // Every block sizes its delay lines from these functions, the top levels derive PipeDepth
 // and Latency from them, and the testbenches read their expected latencies from the same
-// functions through sim/specular_pipeline.sv, never from a copy. The multiplier tree's count
-// is specular_prim_pkg's. Changing a stage count is an edit here (and, for a register the
-// block does not yet build, in that block).
+// functions through sim/specular_pipeline.sv, never from a copy. Changing a stage count is
+// an edit here (and, for a register the block does not yet build, in that block). It sits
+// with the primitives because every IP sizes its pipeline from it: the multiplier tree's
+// count serves the setup and the competitors too, and Icarus 11 cannot evaluate a constant
+// function that calls into another package, so the counts cannot be split by IP.
 //
 // Written for Yosys 0.23, Verilator 5.006 and Icarus 11 alike: functions return through
 // their name (Yosys 0.23 has no `return` in constant functions) and callers write
@@ -36,23 +38,30 @@ package specular_pkg;
   // px_valid_o.
   localparam int OutBufStages = 1;
 
+  // Stages of specular_pipe_mul's radix-4 tree over a b_bits-wide multiplier operand: one
+  // register of the selected rows, then one per level of the binary adder tree over the
+  // ceil(b_bits / 2) rows.
+  function automatic int pipe_mul_stages(input int b_bits);
+    pipe_mul_stages = 1 + ((((b_bits + 1) / 2) > 1) ? $clog2((b_bits + 1) / 2) : 0);
+  endfunction
+
   // Multiplier 11 (specular_angle_mul), psi_i to addr_o: the tree runs over the
   // 1 + psi_mul_frac bits of |psi|.
   function automatic int angle_mul_stages(input int psi_mul_frac);
-    angle_mul_stages = Mul11InStages + specular_prim_pkg::pipe_mul_stages(1 + psi_mul_frac) + Mul11OutStages
+    angle_mul_stages = Mul11InStages + pipe_mul_stages(1 + psi_mul_frac) + Mul11OutStages
                        + Mul11RetimeStages;
   endfunction
 
   // ROM 12 (specular_cos_k_rom), address to cos^k: the tree runs over the cos_delta_bits
   // of the step d.
   function automatic int cos_k_rom_stages(input int cos_delta_bits);
-    cos_k_rom_stages = Rom12ReadStages + specular_prim_pkg::pipe_mul_stages(cos_delta_bits) + Rom12OutStages;
+    cos_k_rom_stages = Rom12ReadStages + pipe_mul_stages(cos_delta_bits) + Rom12OutStages;
   endfunction
 
   // Multiplier 13 (specular_intensity_mul), cos^k to the intensity: the tree runs over the
   // cos_data_bits + 1 bits of cos^k.
   function automatic int intensity_mul_stages(input int cos_data_bits);
-    intensity_mul_stages = specular_prim_pkg::pipe_mul_stages(cos_data_bits + 1) + Mul13OutStages;
+    intensity_mul_stages = pipe_mul_stages(cos_data_bits + 1) + Mul13OutStages;
   endfunction
 
   // specular_stream's stages from the accept edge to the output buffer (its PipeDepth).
