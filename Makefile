@@ -22,7 +22,7 @@ help:
 	@echo "make vcd     write VCD timing diagrams to $(BUILD)/vcd and draw the 4-pixel one"
 	@echo "make report  measure and write $(BUILD)/report/report.md"
 	@echo "make lint    verilator -Wall lint and Yosys synthesis of rtl/"
-	@echo "make fpga    out-of-context place and route (nextpnr-ice40, HX8K and UP5K) into $(BUILD)/fpga; FPGA_ARGS adds scripts/fpga.sh options"
+	@echo "make fpga    out-of-context place and route (nextpnr-ice40: HX8K, UP5K; nextpnr-ecp5: FPGA_ARGS=\"--device ecp5\") into $(BUILD)/fpga; FPGA_ARGS adds scripts/fpga.sh options"
 	@echo "make fuzz    libFuzzer (clang-14) on the scene, ROM hex and CLI parsers, FUZZ_SECONDS in all (60)"
 	@echo "make coverage  RTL line/branch/toggle coverage of the regression (build dir $(BUILD)/coverage): summary, annotated sources, HTML"
 	@echo "make xprop   X-propagation: the regression under three Verilator seeds, uninitialized bits random, output digests equal"
@@ -84,13 +84,14 @@ report: build
 lint: build
 	cd $(BUILD) && ctest --output-on-failure -R '^rtl_(lint|yosys)'
 
-# Out-of-context place and route of specular_unit and specular_stream (harnesses in
-# rtl/fpga/) on the iCE40-HX8K and UP5K; prints and writes $(BUILD)/fpga/summary.md.
-# FPGA_ARGS passes options, e.g. FPGA_ARGS="--param CosAddrBits=9 --param CosRomFile=DIR/cos.hex";
-# FPGA_ARGS="--top setup" (or system): the setup's iCE40 fit and synth_ecp5 counts (rtl/fpga/README.md).
+# Out-of-context place and route (harness in rtl/fpga/) of specular_unit, specular_stream and
+# specular_axil on the iCE40-HX8K and UP5K; prints and writes $(BUILD)/fpga/summary.md.
+# FPGA_ARGS passes options, e.g. FPGA_ARGS="--device ecp5" (nextpnr-ecp5 on the smallest of the
+# LFE5U-25F/45F/85F that holds the core, installed into $(BUILD)/fpga-venv on first use),
+# FPGA_ARGS="--top phong --phong-config n64", FPGA_ARGS="--param CosAddrBits=9" (rtl/fpga/README.md).
 FPGA_ARGS ?=
 fpga: deps
-	bash scripts/fpga.sh --out $(BUILD)/fpga $(FPGA_ARGS)
+	FPGA_VENV=$(CURDIR)/$(BUILD)/fpga-venv bash scripts/fpga.sh --out $(BUILD)/fpga $(FPGA_ARGS)
 
 # libFuzzer targets of tests/fuzz, built with clang++-14 in $(BUILD)/fuzz (a CMake
 # configure of its own: the main build uses g++). `make test` replays their corpora.

