@@ -14,12 +14,21 @@
 // the block checks at elaboration that the tree it builds has that many levels.
 // Used by multiplier 11 (coef * |psi|), the ROM 12 interpolation (t * d) and
 // multiplier 13 (C * cos^k) of patent UA 71489.
+//
+// TileBits picks the resources (docs/pipeline.md#multiplier-styles): 0 is the LUT tree above,
+// for a part without DSPs (the iCE40-HX8K); 16 (the UP5K's SB_MAC16) or 18 (the ECP5's
+// MULT18X18D) cut a and b into TileBits-wide tiles, register each tile product (one DSP with
+// its output register), add the products in a registered binary tree and delay the sum to the
+// same pipe_mul_stages(BBits) clocks, so both styles are bit-exact and interchangeable. a3_i
+// is unused there (synthesis drops the caller's 3a register). The tiles must be few enough
+// that 1 + clog2(tiles) <= pipe_mul_stages(BBits); the block refuses otherwise.
 
 `include "specular_assert.svh"
 
 module specular_pipe_mul #(
-  parameter int ABits = 16,
-  parameter int BBits = 16
+  parameter int ABits    = 16,
+  parameter int BBits    = 16,
+  parameter int TileBits = 0    // 0: LUT tree; else the DSP tile width (16 UP5K, 18 ECP5)
 ) (
   input  logic                   clk_i,
   input  logic                   en_i,
@@ -29,40 +38,69 @@ module specular_pipe_mul #(
   output logic [ABits+BBits-1:0] p_o
 );
 
+  localparam bit Tree   = TileBits == 0;
   localparam int PBits  = ABits + BBits;
-  localparam int NRows  = (BBits + 1) / 2;
   localparam int Levels = specular_pkg::pipe_mul_stages(BBits);
+  localparam int TilesA = Tree ? 1 : (ABits + TileBits - 1) / TileBits;
+  localparam int TilesB = Tree ? 1 : (BBits + TileBits - 1) / TileBits;
+  // Rows into the adder tree: the radix-4 digit rows, or the tile products.
+  localparam int NRows  = Tree ? (BBits + 1) / 2 : TilesA * TilesB;
+  // Level 1 registers the rows, the levels after it halve them until one is left; the DSP
+  // style then delays the sum to Levels.
+  localparam int AddLevels = 1 + ((NRows > 1) ? $clog2(NRows) : 0);
 
   // (BBits = 1 needs no multiplier; from 2 on every digit row fits the product's width.)
   if (ABits < 1 || BBits < 2) begin : gen_width_check
     `SPEC_PARAM_ERROR("specular_pipe_mul: ABits must be >= 1 and BBits >= 2")
   end
-  // Level 1 registers the rows, levels 2 .. Levels halve them until one is left.
-  if (Levels != 1 + ((NRows > 1) ? $clog2(NRows) : 0)) begin : gen_levels_check
+  if (Tree && Levels != AddLevels) begin : gen_levels_check
     `SPEC_PARAM_ERROR("specular_pipe_mul: specular_pkg::pipe_mul_stages disagrees with the tree built here")
+  end
+  if (TileBits < 0 || TileBits == 1 || AddLevels > Levels) begin : gen_tile_check
+    `SPEC_PARAM_ERROR("specular_pipe_mul: TileBits must be 0 or >= 2, with 1 + clog2(tiles) <= pipe_mul_stages(BBits)")
   end
 
   // rows[l][j]: row j after level l; level 0 is combinational.
-  logic [PBits-1:0] rows [Levels+1][NRows];
+  logic [PBits-1:0] rows [AddLevels+1][NRows];
 
-  logic [2*NRows-1:0] b_pad;
-  assign b_pad = (2 * NRows)'(b_i);
-  for (genvar j = 0; j < NRows; j++) begin : gen_pp
-    logic [1:0]       digit;
-    logic [ABits+1:0] digit_row;
-    assign digit = b_pad[2*j +: 2];  // Icarus 11: no constant part select in always_comb
-    always_comb begin
-      unique case (digit)
-        2'd0:    digit_row = '0;
-        2'd1:    digit_row = (ABits + 2)'(a_i);
-        2'd2:    digit_row = (ABits + 2)'(a_i) << 1;
-        default: digit_row = a3_i;
-      endcase
+  if (!Tree) begin : gen_tiles
+    logic unused_a3;
+    assign unused_a3 = ^a3_i;
+    logic [TilesA*TileBits-1:0] a_pad;
+    logic [TilesB*TileBits-1:0] b_tiles;
+    assign a_pad   = (TilesA * TileBits)'(a_i);
+    assign b_tiles = (TilesB * TileBits)'(b_i);
+    for (genvar i = 0; i < TilesA; i++) begin : gen_a
+      for (genvar j = 0; j < TilesB; j++) begin : gen_b
+        logic [TileBits-1:0]   ta, tb;
+        logic [2*TileBits-1:0] tp;
+        assign ta = a_pad[i*TileBits +: TileBits];
+        assign tb = b_tiles[j*TileBits +: TileBits];
+        assign tp = (2 * TileBits)'(ta) * (2 * TileBits)'(tb);
+        // The padding tiles' bits are 0, so every product fits the PBits of a * b.
+        assign rows[0][i*TilesB+j] = PBits'({{PBits{1'b0}}, tp} << ((i + j) * TileBits));
+      end
     end
-    assign rows[0][j] = PBits'(digit_row) << (2 * j);
+  end else begin : gen_digits
+    logic [2*NRows-1:0] b_pad;
+    assign b_pad = (2 * NRows)'(b_i);
+    for (genvar j = 0; j < NRows; j++) begin : gen_pp
+      logic [1:0]       digit;
+      logic [ABits+1:0] digit_row;
+      assign digit = b_pad[2*j +: 2];  // Icarus 11: no constant part select in always_comb
+      always_comb begin
+        unique case (digit)
+          2'd0:    digit_row = '0;
+          2'd1:    digit_row = (ABits + 2)'(a_i);
+          2'd2:    digit_row = (ABits + 2)'(a_i) << 1;
+          default: digit_row = a3_i;
+        endcase
+      end
+      assign rows[0][j] = PBits'(digit_row) << (2 * j);
+    end
   end
 
-  for (genvar l = 1; l <= Levels; l++) begin : gen_level
+  for (genvar l = 1; l <= AddLevels; l++) begin : gen_level
     // Level 1 registers the rows as they are; later levels add pairs.
     localparam bit Adds  = l != 1;
     localparam int Shift = l - 1;   // additions done up to this level
@@ -92,7 +130,9 @@ module specular_pipe_mul #(
     end
   end
 
-  assign p_o = rows[Levels][0];
+  // The DSP style's tree is shorter than the radix-4 one: the sum waits out the difference.
+  specular_delay #(.Width (PBits), .Depth (Levels - AddLevels), .Reset (1'b0)) u_align (
+    .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (rows[AddLevels][0]), .q_o (p_o));
 
   // Assertions (rtl/prim/specular_assert.svh): the caller's 3a matches a (it registers both,
   // from the same a, on the same enable). No reset here: checked from the first enabled edge

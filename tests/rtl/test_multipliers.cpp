@@ -9,12 +9,21 @@
 #include "Vangle_mul.h"
 #include "Vangle_mul_patent.h"
 #include "Vintensity_mul.h"
+#include "Vpipe_mul_12x12.h"
+#include "Vpipe_mul_12x12_t16.h"
+#include "Vpipe_mul_12x12_t18.h"
+#include "Vpipe_mul_16x19.h"
+#include "Vpipe_mul_16x19_t16.h"
+#include "Vpipe_mul_16x19_t18.h"
 #include "Vpipe_mul_21x21.h"
+#include "Vpipe_mul_21x21_t16.h"
+#include "Vpipe_mul_21x21_t18.h"
 #include "Vpipe_mul_3x2.h"
 #include "Vpipe_mul_4x8.h"
 #include "Vpipe_mul_5x3.h"
 #include "Vpipe_mul_6x6.h"
 #include "Vpipe_mul_7x5.h"
+#include "Vpipe_mul_7x5_t4.h"
 #include "Vpipeline_default.h"
 #include "Vpipeline_default_specular_pipeline.h"
 #include "Vpipeline_patent.h"
@@ -163,6 +172,32 @@ TEST_CASE("pipe_mul at small widths: every operand pair, with and without stalls
   SECTION("4x8") { every_pair_case<Vpipe_mul_4x8>(4, 8); }
   SECTION("5x3") { every_pair_case<Vpipe_mul_5x3>(5, 3); }
   SECTION("3x2") { every_pair_case<Vpipe_mul_3x2>(3, 2); }
+}
+
+// Both styles (TileBits 0: LUT tree; 16, 18: DSP tiles; docs/pipeline.md#multiplier-styles)
+// at the widths of multipliers 11, 12 and 13: exact products with the same latency,
+// pipe_mul_stages(BBits), with and without stalls.
+template <class Dut>
+void style_case(int a_bits, int b_bits, uint64_t seed) {
+  Dut dut;
+  dut.clk_i = 0;
+  dut.eval();
+  const int latency = tree_stages(b_bits);
+  CHECK(run_pipe_mul(dut, latency, a_bits, b_bits, mul_items(a_bits, b_bits, 5000, seed), false) == 0);
+  CHECK(run_pipe_mul(dut, latency, a_bits, b_bits, mul_items(a_bits, b_bits, 2000, seed + 1), true) == 0);
+}
+
+TEST_CASE("pipe_mul styles: LUT tree and DSP tiles give the same products at the same latency",
+          "[rtl][pipe_mul][style]") {
+  SECTION("21x21 tiles 16") { style_case<Vpipe_mul_21x21_t16>(21, 21, 21); }
+  SECTION("21x21 tiles 18") { style_case<Vpipe_mul_21x21_t18>(21, 21, 22); }
+  SECTION("12x12 tree") { style_case<Vpipe_mul_12x12>(12, 12, 23); }
+  SECTION("12x12 tiles 16") { style_case<Vpipe_mul_12x12_t16>(12, 12, 24); }
+  SECTION("12x12 tiles 18") { style_case<Vpipe_mul_12x12_t18>(12, 12, 25); }
+  SECTION("16x19 tree") { style_case<Vpipe_mul_16x19>(16, 19, 26); }
+  SECTION("16x19 tiles 16") { style_case<Vpipe_mul_16x19_t16>(16, 19, 27); }
+  SECTION("16x19 tiles 18") { style_case<Vpipe_mul_16x19_t18>(16, 19, 28); }
+  SECTION("7x5 tiles 4, every pair") { every_pair_case<Vpipe_mul_7x5_t4>(7, 5); }
 }
 
 // ------------------------------------------------------------------------------------
