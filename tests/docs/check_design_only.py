@@ -7,7 +7,7 @@ machine of the run, are on one page, docs/results.md, generated from the JSON of
 like a run diary: it names the machine or its load, CPU or wall-clock seconds of a build or a
 test, before/after or trial rows, or the session a figure was measured in.
 
-    check_design_only.py ROOT [--exclude docs/PAGE.md ...]
+    check_design_only.py ROOT [--exclude PAGE ...]   (PAGE relative to ROOT)
     check_design_only.py --self-test
 """
 import argparse
@@ -82,7 +82,7 @@ def self_test():
             with open(os.path.join(tmp, rel), "w") as f:
                 f.write(text)
 
-        write("docs/a.md", clean)
+        write("docs/README.md", clean)
         write("docs/measured/README.md", clean)
         write(GENERATED, "Run: commit `abc1234`, this machine, 14 min 3 s, shared with another job.\n")
         write("docs/formal.md", "Measured on this machine.\n")
@@ -111,7 +111,7 @@ def self_test():
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("root", nargs="?", help="repository root")
-    ap.add_argument("--exclude", action="append", default=[], metavar="docs/PAGE.md",
+    ap.add_argument("--exclude", action="append", default=[], metavar="PAGE",
                     help="a page not to check (repeatable)")
     ap.add_argument("--self-test", action="store_true")
     a = ap.parse_args(argv)
