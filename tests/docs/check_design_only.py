@@ -41,6 +41,7 @@ PHRASES = [
     (r"\bbefore:", "a before/after row"),
     (r"\"before\"", "a before/after row"),
     (r"\bbefore/after\b", "a before/after row"),
+    (r"\(before\)", "a before/after column"),
     (r"\bin one session\b|\bthe session's\b", "the session of a run"),
     (r"\btoday(?:'s)?\b", "the date of a run"),
 ]
@@ -92,7 +93,7 @@ def self_test():
             failures.append("a phrase in a page not excluded is not caught (docs/formal.md)")
         planted = ["measured on this machine", "the machine shared with another job", "56.4 CPU s",
                    "the wall time of a run", "48 seconds on two cores", "| `Q36` trial | 5,873 |",
-                   "Before: 51.1", "14 min 18 s", "a fresh clone took", "measured the same way today"]
+                   "Before: 51.1", "| value (before) |", "14 min 18 s", "a fresh clone took", "measured the same way today"]
         for phrase in planted:
             write("docs/measured/README.md", clean + "\n" + phrase + "\n")
             errs = check(tmp, {"docs/formal.md"})
