@@ -7,7 +7,7 @@ JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 PYTHON ?= /usr/bin/python3
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build test formal formal-long sim sim-setup-ii stage-table roms vcd report lint fuzz fpga coverage xprop clean help
+.PHONY: all deps configure build test formal formal-long sim sim-setup-ii stage-table results-page roms vcd report lint fuzz fpga coverage xprop clean help
 
 all: build
 
@@ -19,6 +19,7 @@ help:
 	@echo "make sim-setup-ii  the system stage at SetupII 1, 2, 4 and 8 (turns on SPECULAR_SYSTEM_SETUP_II in $(BUILD): three more models)"
 	@echo "make roms    regenerate every configuration's ROM hex files and roms/build_configs.cmake (romgen --all)"
 	@echo "make stage-table  rewrite docs/pipeline.md's stage table from rtl/prim/specular_pkg.sv"
+	@echo "make results-page  rewrite docs/results.md (the measured results) from docs/measured/*.json and docs/fpga_figures.json"
 	@echo "make vcd     write VCD timing diagrams to $(BUILD)/vcd and draw the 4-pixel one"
 	@echo "make report  measure and write $(BUILD)/report/report.md"
 	@echo "make lint    verilator -Wall lint and Yosys synthesis of rtl/"
@@ -67,6 +68,11 @@ sim-setup-ii: configure
 # docs/pipeline.md's stage table from rtl/prim/specular_pkg.sv (docs/pipeline.md#stage-counts).
 stage-table: build
 	$(PYTHON) tests/docs/check_stage_counts.py --sim $(BUILD)/bin/sim_regression --root . --update
+
+# docs/results.md, the one page of measured results, from the committed JSON of the runs
+# (scripts/results_page.py; the ctest docs_results_page checks it is up to date).
+results-page:
+	$(PYTHON) scripts/results_page.py --write
 
 roms: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target romgen phong_romgen setup_romgen
