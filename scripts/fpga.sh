@@ -233,7 +233,7 @@ core_of()    { case "$1" in unit) echo specular_unit ;; stream) echo specular_st
 # file named by a parameter), parameters, options, this script and the tool versions.
 run_key() {
   {
-    printf '%s\n' "$@" "${params[@]+"${params[@]}"}"
+    printf '%s\n' "$@" "${run_params[@]+"${run_params[@]}"}"
     for f in "${sources[@]}" "${RTL_FILELISTS[@]}" "$me"; do sha256sum "$f"; done
     python3 scripts/rtl_filelist.py --includes "${fpga_filelists[@]}" | xargs -r sha256sum
     find roms -name '*.hex' -type f -print0 2>/dev/null | sort -z | xargs -0 -r sha256sum
@@ -257,6 +257,20 @@ for top in "${tops[@]}"; do
   esac
   for dev in "${devices[@]}"; do
     dir="$out/${top}${phong_cfg:+_$phong_cfg}${setup_ii:+_ii$setup_ii}_${dev}"
+    # The multipliers in the resources of the part (docs/pipeline.md#multiplier-styles): LUT
+    # trees on the HX8K, SB_MAC16 tiles on the UP5K, MULT18X18D tiles on the ECP5, unless
+    # --param sets the style. The setup and the competitor do not build theirs through it yet.
+    style_param=
+    case "$dev" in hx8k) tile=0 ;; up5k) tile=16 ;; *) tile=18 ;; esac
+    case "$top" in
+      unit|stream|axil|system) style_param="MulTileBits=$tile" ;;
+      mul) style_param="TileBits=$tile" ;;
+    esac
+    if [ -n "$style_param" ] && [[ " ${params[*]+"${params[*]}"} " == *" ${style_param%=*}="* ]]; then
+      style_param=
+    fi
+    run_params=("${params[@]+"${params[@]}"}")
+    [ -z "$style_param" ] || run_params+=("$style_param")
     mkdir -p "$dir"
     noflat=""
     [ "$hier" = 1 ] && noflat=" -noflatten"
@@ -268,6 +282,7 @@ for top in "${tops[@]}"; do
     {
       echo "read_verilog -sv -defer${incflags} ${sources[*]}"
       for a in "${core_chparam[@]+"${core_chparam[@]}"}"; do echo "chparam $a $core"; done
+      [ -z "$style_param" ] || echo "chparam -set ${style_param%=*} ${style_param#*=} $core"
       echo "chparam -set Top $top_id $harness"
       for a in "${harness_chparam[@]+"${harness_chparam[@]}"}"; do echo "chparam $a $harness"; done
       echo "hierarchy -check -top $harness"
@@ -395,7 +410,7 @@ PY3
     t1=$(date +%s)
     if [[ "$dev" == ecp5* ]]; then export FPGA_NEXTPNR_VERSION=$ecp5_version; else export FPGA_NEXTPNR_VERSION=$ice40_version; fi
     python3 - "$dir" "$top" "$dev" "$harness" "$core" "$freq" "$seed" "$synth_rc" "$pnr_rc" \
-      "$((t1 - t0))" "$((t_synth - t0))" "$synth" "$phong_cfg" "${params[@]+"${params[@]}"}" <<'PY'
+      "$((t1 - t0))" "$((t_synth - t0))" "$synth" "$phong_cfg" "${run_params[@]+"${run_params[@]}"}" <<'PY'
 import json, os, re, subprocess, sys
 d, top, dev, harness, core, freq, seed, synth_rc, pnr_rc, secs, synth_secs, synth, phong_cfg = sys.argv[1:14]
 params = sys.argv[14:]

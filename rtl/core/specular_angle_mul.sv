@@ -33,7 +33,8 @@ module specular_angle_mul #(
   parameter int PsiMulFrac  = 20,
   parameter bit CosInterp   = 1'b1,
   parameter int CosAddrBits = 8,
-  parameter int CosFracBits = 12
+  parameter int CosFracBits = 12,
+  parameter int MulTileBits = 0    // specular_pipe_mul's TileBits: 0 LUT tree, 16 / 18 DSP tiles
 ) (
   input  logic                          clk_i,
   input  logic                          rst_ni,
@@ -123,8 +124,9 @@ module specular_angle_mul #(
 
   logic [ZetaBits-1:0] zeta;
   specular_pipe_mul #(
-    .ABits  (CoefBits),
-    .BBits  (PsiTBits)
+    .ABits    (CoefBits),
+    .BBits    (PsiTBits),
+    .TileBits (MulTileBits)
   ) u_tree (
     .clk_i (clk_i),
     .en_i  (en_i),

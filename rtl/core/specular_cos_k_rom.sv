@@ -38,7 +38,8 @@ module specular_cos_k_rom #(
   parameter bit CosInterp    = 1'b1,
   parameter int CosDeltaBits = 12,
   parameter int CosFracBits  = 12,
-  parameter     CosRomFile   = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex"
+  parameter     CosRomFile   = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex",
+  parameter int MulTileBits  = 0   // specular_pipe_mul's TileBits: 0 LUT tree, 16 / 18 DSP tiles
 ) (
   input  logic                   clk_i,
   input  logic                   en_i,     // pipeline advance: holds every stage while stalled
@@ -116,8 +117,9 @@ module specular_cos_k_rom #(
     assign d = word_q[CosDeltaBits-1:0];
 
     specular_pipe_mul #(
-      .ABits  (CosFracBits),
-      .BBits  (CosDeltaBits)
+      .ABits    (CosFracBits),
+      .BBits    (CosDeltaBits),
+      .TileBits (MulTileBits)
     ) u_step (
       .clk_i (clk_i),
       .en_i  (en_i),

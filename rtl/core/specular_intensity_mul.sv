@@ -17,7 +17,8 @@
 
 module specular_intensity_mul #(
   parameter int CBits       = 16,
-  parameter int CosDataBits = 18
+  parameter int CosDataBits = 18,
+  parameter int MulTileBits = 0    // specular_pipe_mul's TileBits: 0 LUT tree, 16 / 18 DSP tiles
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
@@ -42,8 +43,9 @@ module specular_intensity_mul #(
 
   logic [ProdBits-1:0] prod;
   specular_pipe_mul #(
-    .ABits  (CBits),
-    .BBits  (CosDataBits + 1)
+    .ABits    (CBits),
+    .BBits    (CosDataBits + 1),
+    .TileBits (MulTileBits)
   ) u_tree (
     .clk_i (clk_i),
     .en_i  (en_i),

@@ -21,6 +21,11 @@
 //                          of the interpolation weight (cos_addr_bits, ...)
 //   NumBanks, BankMaxN     decoder 10: the banks, and the largest n of each (NBits bits per
 //                          bank, bank 0 in the least significant bits) (banks, bank_max_n)
+//   MulTileBits            the multipliers' resources (specular_pipe_mul's TileBits): 0 LUT
+//                          trees (iCE40-HX8K), 16 SB_MAC16 tiles (UP5K), 18 MULT18X18D tiles
+//                          (ECP5); bit-exact and of equal latency in every style
+//                          (docs/pipeline.md#multiplier-styles). Not a Format field: the
+//                          arithmetic is the same.
 //   CoefRomFile, CosRomFile  the ROM files, read with $readmemh at elaboration, paths
 //                          relative to the working directory (formats: roms/README.md)
 // The numeric parameters are /*verilator public*/ (Verilator keeps the metacomment in a
@@ -50,6 +55,7 @@
   parameter int NumBanks     /*verilator public*/ = 8, \
   parameter logic [NumBanks*NBits-1:0] BankMaxN /*verilator public*/ = \
       {10'd1000, 10'd13, 10'd9, 10'd6, 10'd4, 10'd3, 10'd2, 10'd1}, \
+  parameter int MulTileBits  /*verilator public*/ = 0, \
   parameter     CoefRomFile = "roms/coef_minimax.hex", \
   parameter     CosRomFile  = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex"
 
@@ -71,6 +77,7 @@
   .CosFracBits  (CosFracBits), \
   .NumBanks     (NumBanks), \
   .BankMaxN     (BankMaxN), \
+  .MulTileBits  (MulTileBits), \
   .CoefRomFile  (CoefRomFile), \
   .CosRomFile   (CosRomFile)
 

@@ -280,7 +280,8 @@ module specular_stream #(
     .PsiMulFrac  (PsiMulFrac),
     .CosInterp   (CosInterp),
     .CosAddrBits (CosAddrBits),
-    .CosFracBits (CosFracBits)
+    .CosFracBits (CosFracBits),
+    .MulTileBits (MulTileBits)
   ) u_mul11 (
     .clk_i     (clk_i),
     .rst_ni    (rst_ni),
@@ -300,7 +301,8 @@ module specular_stream #(
     .CosInterp    (CosInterp),
     .CosDeltaBits (CosDeltaBits),
     .CosFracBits  (CosFracBits),
-    .CosRomFile   (CosRomFile)
+    .CosRomFile   (CosRomFile),
+    .MulTileBits  (MulTileBits)
   ) u_cos_k_rom12 (
     .clk_i  (clk_i),
     .en_i   (adv),
@@ -321,7 +323,8 @@ module specular_stream #(
 
   specular_intensity_mul #(
     .CBits       (CBits),
-    .CosDataBits (CosDataBits)
+    .CosDataBits (CosDataBits),
+    .MulTileBits (MulTileBits)
   ) u_mul13 (
     .clk_i       (clk_i),
     .rst_ni      (rst_ni),

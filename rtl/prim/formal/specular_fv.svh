@@ -29,6 +29,7 @@
   parameter int CosFracBits  = 1, \
   parameter int NumBanks     = 2, \
   parameter logic [NumBanks*NBits-1:0] BankMaxN = {4'd15, 4'd1}, \
+  parameter int MulTileBits  = 0, \
   parameter     CoefRomFile  = "rtl/core/formal/coef_fv.hex", \
   parameter     CosRomFile   = "rtl/core/formal/cos_k_fv.hex", \
   parameter int TagBits      = 2
