@@ -7,7 +7,7 @@ JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 PYTHON ?= /usr/bin/python3
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build test formal formal-long sim sim-setup-ii stage-table results-page roms vcd report lint fuzz fpga coverage xprop clean help
+.PHONY: all deps configure build test formal formal-long sim sim-setup-ii stage-table results-page roms vcd report readme-picture lint fuzz fpga coverage xprop clean help
 
 all: build
 
@@ -22,6 +22,7 @@ help:
 	@echo "make results-page  rewrite docs/results.md (the measured results) from docs/measured/*.json and docs/fpga_figures.json"
 	@echo "make vcd     write VCD timing diagrams to $(BUILD)/vcd and draw the 4-pixel one"
 	@echo "make report  measure and write $(BUILD)/report/report.md"
+	@echo "make readme-picture  render scenes/torus_point.json through the RTL into docs/img/readme_scene.png (the README's picture)"
 	@echo "make lint    verilator -Wall lint and Yosys synthesis of rtl/"
 	@echo "make fpga    out-of-context place and route (nextpnr-ice40: HX8K, UP5K; nextpnr-ecp5: FPGA_ARGS=\"--device ecp5\") into $(BUILD)/fpga; FPGA_ARGS adds scripts/fpga.sh options"
 	@echo "make fuzz    libFuzzer (clang-14) on the scene, ROM hex and CLI parsers, FUZZ_SECONDS in all (60)"
@@ -86,6 +87,11 @@ vcd: build
 
 report: build
 	$(PYTHON) scripts/make_report.py --build $(BUILD) --out $(BUILD)/report
+
+# The README's picture (scripts/readme_picture.py): one scene through the RTL beside its double
+# reference and the device error, written into docs/img/ (committed).
+readme-picture: build
+	$(PYTHON) scripts/readme_picture.py --sim $(BUILD)/bin/sim_regression --out docs/img/readme_scene.png
 
 lint: build
 	cd $(BUILD) && ctest --output-on-failure -R '^rtl_(lint|yosys)'
