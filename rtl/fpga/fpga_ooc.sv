@@ -41,6 +41,7 @@
 // copy here.
 
 `include "specular_assert.svh"
+`include "specular_geo_ports.svh"
 
 module fpga_ooc #(
   parameter int Top       = 1,   // the core: 0 specular_unit, 1 specular_stream, 2 specular_axil,
@@ -71,7 +72,7 @@ module fpga_ooc #(
   localparam int InBits  = (Top == TopUnit)   ? 5 + CBits + 2 * AngleBits + NBits + LenBits + 1
                          : (Top == TopStream) ? 2 + CBits + 2 * AngleBits + NBits + LenBits + TagBits
                          : (Top == TopPhong || Top == TopSetup || Top == TopSystem)
-                                              ? 2 + 12 * VecBits + NBits + LenBits + CBits + TagBits
+                                              ? 2 + `SPECULAR_GEO_DATA_BITS
                          :                     2 * AddrWidth + 48;
   localparam int OutBits = (Top == TopUnit)   ? CBits + 2
                          : (Top == TopStream || Top == TopPhong || Top == TopSystem)
@@ -218,121 +219,93 @@ module fpga_ooc #(
       .m_axis_px_tuser  (px_tuser),
       .irq_o            (irq)
     );
-  end else if (Top == TopPhong) begin : gen_phong
-    logic                 geo_valid, geo_ready, px_valid, px_ready, px_last;
-    logic [3*VecBits-1:0] n1, n2, h1, he;
-    logic [NBits-1:0]     n;
-    logic [LenBits-1:0]   len;
-    logic [CBits-1:0]     scale, px_intensity;
-    logic [TagBits-1:0]   tag, px_tag;
+  end else if (Top == TopPhong || Top == TopSetup || Top == TopSystem) begin : gen_geo
+    // The geometry span side (rtl/prim/specular_geo_ports.svh), then the ready of the
+    // core's output side (px_ready or span_ready).
+    logic                 geo_valid, geo_ready, out_ready;
+    logic [3*VecBits-1:0] geo_n1, geo_n2, geo_h1, geo_he;
+    logic [NBits-1:0]     geo_n;
+    logic [LenBits-1:0]   geo_len;
+    logic [CBits-1:0]     geo_scale;
+    logic [TagBits-1:0]   geo_tag;
 
-    assign {geo_valid, n1, n2, h1, he, n, len, scale, tag, px_ready} = core_in;
-    assign core_out = {geo_ready, px_valid, px_intensity, px_last, px_tag};
+    assign {geo_valid, `SPECULAR_GEO_DATA(geo_, ), out_ready} = core_in;
 
-    phong_stream #(
-      .VecBits (VecBits),
-      .LenBits (LenBits),
-      .NBits   (NBits),
-      .CBits   (CBits),
-      .TagBits (TagBits)
-    ) u_core (
-      .clk_i          (clk_i),
-      .rst_ni         (core_rst_n),
-      .geo_valid_i    (geo_valid),
-      .geo_ready_o    (geo_ready),
-      .geo_n1_i       (n1),
-      .geo_n2_i       (n2),
-      .geo_h1_i       (h1),
-      .geo_he_i       (he),
-      .geo_n_i        (n),
-      .geo_len_i      (len),
-      .geo_scale_i    (scale),
-      .geo_tag_i      (tag),
-      .px_valid_o     (px_valid),
-      .px_ready_i     (px_ready),
-      .px_intensity_o (px_intensity),
-      .px_last_o      (px_last),
-      .px_tag_o       (px_tag)
-    );
-  end else if (Top == TopSetup) begin : gen_setup
-    logic                 geo_valid, geo_ready, span_valid, span_ready;
-    logic [3*VecBits-1:0] n1, n2, h1, he;
-    logic [NBits-1:0]     n, span_n;
-    logic [LenBits-1:0]   len, span_len;
-    logic [CBits-1:0]     scale, span_c;
-    logic [AngleBits-1:0] span_psi0, span_dpsi;
-    logic [TagBits-1:0]   tag, span_tag;
-    logic [2:0]           span_status;
+    if (Top == TopSetup) begin : gen_setup
+      logic                 span_valid;
+      logic [NBits-1:0]     span_n;
+      logic [LenBits-1:0]   span_len;
+      logic [CBits-1:0]     span_c;
+      logic [AngleBits-1:0] span_psi0, span_dpsi;
+      logic [TagBits-1:0]   span_tag;
+      logic [2:0]           span_status;
 
-    assign {geo_valid, n1, n2, h1, he, n, len, scale, tag, span_ready} = core_in;
-    assign core_out = {geo_ready, span_valid, span_c, span_psi0, span_dpsi, span_n, span_len,
-                       span_tag, span_status};
+      assign core_out = {geo_ready, span_valid, span_c, span_psi0, span_dpsi, span_n, span_len,
+                         span_tag, span_status};
 
-    // specular_setup's register widths are fixed (C 16, angles 32, n 10, l 11): with other
-    // CBits, AngleBits, NBits or LenBits the port widths differ and elaboration says so.
-    specular_setup #(
-      .VecBits (VecBits),
-      .TagBits (TagBits)
-    ) u_core (
-      .clk_i         (clk_i),
-      .rst_ni        (core_rst_n),
-      .geo_valid_i   (geo_valid),
-      .geo_ready_o   (geo_ready),
-      .geo_n1_i      (n1),
-      .geo_n2_i      (n2),
-      .geo_h1_i      (h1),
-      .geo_he_i      (he),
-      .geo_n_i       (n),
-      .geo_len_i     (len),
-      .geo_scale_i   (scale),
-      .geo_tag_i     (tag),
-      .span_valid_o  (span_valid),
-      .span_ready_i  (span_ready),
-      .span_c_o      (span_c),
-      .span_psi0_o   (span_psi0),
-      .span_dpsi_o   (span_dpsi),
-      .span_n_o      (span_n),
-      .span_len_o    (span_len),
-      .span_tag_o    (span_tag),
-      .span_status_o (span_status)
-    );
-  end else if (Top == TopSystem) begin : gen_system
-    logic                 geo_valid, geo_ready, px_valid, px_ready, px_last;
-    logic [3*VecBits-1:0] n1, n2, h1, he;
-    logic [NBits-1:0]     n;
-    logic [LenBits-1:0]   len;
-    logic [CBits-1:0]     scale, px_intensity;
-    logic [TagBits-1:0]   tag, px_tag;
+      // specular_setup's register widths are fixed (C 16, angles 32, n 10, l 11): with other
+      // CBits, AngleBits, NBits or LenBits the port widths differ and elaboration says so.
+      specular_setup #(
+        .VecBits (VecBits),
+        .TagBits (TagBits)
+      ) u_core (
+        .clk_i         (clk_i),
+        .rst_ni        (core_rst_n),
+        `SPECULAR_GEO_MAP(geo_, , ),
+        .span_valid_o  (span_valid),
+        .span_ready_i  (out_ready),
+        .span_c_o      (span_c),
+        .span_psi0_o   (span_psi0),
+        .span_dpsi_o   (span_dpsi),
+        .span_n_o      (span_n),
+        .span_len_o    (span_len),
+        .span_tag_o    (span_tag),
+        .span_status_o (span_status)
+      );
+    end else begin : gen_px
+      logic               px_valid, px_last;
+      logic [CBits-1:0]   px_intensity;
+      logic [TagBits-1:0] px_tag;
 
-    assign {geo_valid, n1, n2, h1, he, n, len, scale, tag, px_ready} = core_in;
-    assign core_out = {geo_ready, px_valid, px_intensity, px_last, px_tag};
+      assign core_out = {geo_ready, px_valid, px_intensity, px_last, px_tag};
 
-    specular_system #(
-      .CBits     (CBits),
-      .AngleBits (AngleBits),
-      .NBits     (NBits),
-      .LenBits   (LenBits),
-      .TagBits   (TagBits),
-      .VecBits   (VecBits)
-    ) u_core (
-      .clk_i          (clk_i),
-      .rst_ni         (core_rst_n),
-      .geo_valid_i    (geo_valid),
-      .geo_ready_o    (geo_ready),
-      .geo_n1_i       (n1),
-      .geo_n2_i       (n2),
-      .geo_h1_i       (h1),
-      .geo_he_i       (he),
-      .geo_n_i        (n),
-      .geo_len_i      (len),
-      .geo_scale_i    (scale),
-      .geo_tag_i      (tag),
-      .px_valid_o     (px_valid),
-      .px_ready_i     (px_ready),
-      .px_intensity_o (px_intensity),
-      .px_last_o      (px_last),
-      .px_tag_o       (px_tag)
-    );
+      if (Top == TopPhong) begin : gen_phong
+        phong_stream #(
+          .VecBits (VecBits),
+          .LenBits (LenBits),
+          .NBits   (NBits),
+          .CBits   (CBits),
+          .TagBits (TagBits)
+        ) u_core (
+          .clk_i          (clk_i),
+          .rst_ni         (core_rst_n),
+          `SPECULAR_GEO_MAP(geo_, , ),
+          .px_valid_o     (px_valid),
+          .px_ready_i     (out_ready),
+          .px_intensity_o (px_intensity),
+          .px_last_o      (px_last),
+          .px_tag_o       (px_tag)
+        );
+      end else begin : gen_system
+        specular_system #(
+          .CBits     (CBits),
+          .AngleBits (AngleBits),
+          .NBits     (NBits),
+          .LenBits   (LenBits),
+          .TagBits   (TagBits),
+          .VecBits   (VecBits)
+        ) u_core (
+          .clk_i          (clk_i),
+          .rst_ni         (core_rst_n),
+          `SPECULAR_GEO_MAP(geo_, , ),
+          .px_valid_o     (px_valid),
+          .px_ready_i     (out_ready),
+          .px_intensity_o (px_intensity),
+          .px_last_o      (px_last),
+          .px_tag_o       (px_tag)
+        );
+      end
+    end
   end else begin : gen_top_check
     `SPEC_PARAM_ERROR("fpga_ooc: Top must be 0 (unit), 1 (stream), 2 (axil), 3 (phong), 4 (setup) or 5 (system)")
   end

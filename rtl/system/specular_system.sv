@@ -21,6 +21,7 @@
 
 `include "specular_assert.svh"
 `include "specular_params.svh"
+`include "specular_geo_ports.svh"
 
 module specular_system #(
   `SPECULAR_CORE_PARAMS,
@@ -36,16 +37,7 @@ module specular_system #(
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
-  input  logic                 geo_valid_i,
-  output logic                 geo_ready_o,
-  input  logic [3*VecBits-1:0] geo_n1_i,
-  input  logic [3*VecBits-1:0] geo_n2_i,
-  input  logic [3*VecBits-1:0] geo_h1_i,
-  input  logic [3*VecBits-1:0] geo_he_i,
-  input  logic [NBits-1:0]     geo_n_i,
-  input  logic [LenBits-1:0]   geo_len_i,
-  input  logic [CBits-1:0]     geo_scale_i,
-  input  logic [TagBits-1:0]   geo_tag_i,
+  `SPECULAR_GEO_PORTS,
   output logic                 px_valid_o,
   input  logic                 px_ready_i,
   output logic [CBits-1:0]     px_intensity_o,
@@ -83,16 +75,7 @@ module specular_system #(
   ) u_setup (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni),
-    .geo_valid_i   (geo_valid_i),
-    .geo_ready_o   (geo_ready_o),
-    .geo_n1_i      (geo_n1_i),
-    .geo_n2_i      (geo_n2_i),
-    .geo_h1_i      (geo_h1_i),
-    .geo_he_i      (geo_he_i),
-    .geo_n_i       (geo_n_i),
-    .geo_len_i     (geo_len_i),
-    .geo_scale_i   (geo_scale_i),
-    .geo_tag_i     (geo_tag_i),
+    `SPECULAR_GEO_PORT_MAP,
     .span_valid_o  (span_valid),
     .span_ready_i  (span_ready),
     .span_c_o      (span_c),

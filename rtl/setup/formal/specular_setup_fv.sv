@@ -48,32 +48,30 @@
 //   p_count, p_head, p_tail, p_adv = u_dut.u_out_buf.{count_q, head_q, tail_q, adv_q}
 // With FV_PROPERTIES_ONLY defined (the mutant runs) the invariants and probes are left out.
 
+`include "specular_geo_ports.svh"
+
 module specular_setup_fv #(
   parameter int VecBits = 18,
   parameter int TagBits = 2,
   // Registers after the input register (the core's tau of the descriptor, TC = 96); set by
   // scripts/formal_setup.sh from the length of the valid delay line.
-  parameter int Depth   = 96
+  parameter int Depth   = 96,
+  // specular_setup's fixed register formats (the widths of its ports)
+  localparam int CBits     = 16,
+  localparam int AngleBits = 32,
+  localparam int NBits     = 10,
+  localparam int LenBits   = 11
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
-  input  logic                 geo_valid_i,
-  output logic                 geo_ready_o,
-  input  logic [3*VecBits-1:0] geo_n1_i,
-  input  logic [3*VecBits-1:0] geo_n2_i,
-  input  logic [3*VecBits-1:0] geo_h1_i,
-  input  logic [3*VecBits-1:0] geo_he_i,
-  input  logic [9:0]           geo_n_i,
-  input  logic [10:0]          geo_len_i,
-  input  logic [15:0]          geo_scale_i,
-  input  logic [TagBits-1:0]   geo_tag_i,
+  `SPECULAR_GEO_PORTS,
   output logic                 span_valid_o,
   input  logic                 span_ready_i,
-  output logic [15:0]          span_c_o,
-  output logic [31:0]          span_psi0_o,
-  output logic [31:0]          span_dpsi_o,
-  output logic [9:0]           span_n_o,
-  output logic [10:0]          span_len_o,
+  output logic [CBits-1:0]     span_c_o,
+  output logic [AngleBits-1:0] span_psi0_o,
+  output logic [AngleBits-1:0] span_dpsi_o,
+  output logic [NBits-1:0]     span_n_o,
+  output logic [LenBits-1:0]   span_len_o,
   output logic [TagBits-1:0]   span_tag_o,
   output logic [2:0]           span_status_o,
   // The solver's choice of the tracked span (P4): high at the accept of the span to track.
@@ -86,16 +84,7 @@ module specular_setup_fv #(
   ) u_dut (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni),
-    .geo_valid_i   (geo_valid_i),
-    .geo_ready_o   (geo_ready_o),
-    .geo_n1_i      (geo_n1_i),
-    .geo_n2_i      (geo_n2_i),
-    .geo_h1_i      (geo_h1_i),
-    .geo_he_i      (geo_he_i),
-    .geo_n_i       (geo_n_i),
-    .geo_len_i     (geo_len_i),
-    .geo_scale_i   (geo_scale_i),
-    .geo_tag_i     (geo_tag_i),
+    `SPECULAR_GEO_PORT_MAP,
     .span_valid_o  (span_valid_o),
     .span_ready_i  (span_ready_i),
     .span_c_o      (span_c_o),
@@ -115,9 +104,9 @@ module specular_setup_fv #(
   localparam int SeqBits    = $clog2(Depth + 5);
   localparam int StreakMax  = Latency + 1;
   localparam int StreakBits = $clog2(Latency + 2);
-  localparam int GeoBits    = 12 * VecBits + 10 + 11 + 16 + TagBits;
-  localparam int SpanBits   = 16 + 32 + 32 + 10 + 11 + TagBits + 3;
-  localparam int OutW       = 11 + 10 + TagBits + 3;  // u_dly_out: {len, n, tag, 3 flags}
+  localparam int GeoBits    = `SPECULAR_GEO_DATA_BITS;
+  localparam int SpanBits   = CBits + 2 * AngleBits + NBits + LenBits + TagBits + 3;
+  localparam int OutW       = LenBits + NBits + TagBits + 3;  // u_dly_out: {len, n, tag, 3 flags}
 
   logic accept, xfer;
   assign accept = geo_valid_i && geo_ready_o;
@@ -138,8 +127,7 @@ module specular_setup_fv #(
 
   logic [GeoBits-1:0] geo_bus, geo_held_q;
   logic               geo_pend_q;
-  assign geo_bus = {geo_n1_i, geo_n2_i, geo_h1_i, geo_he_i, geo_n_i, geo_len_i, geo_scale_i,
-                    geo_tag_i};
+  assign geo_bus = `SPECULAR_GEO_DATA(geo_, _i);
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       geo_pend_q <= 1'b0;

@@ -59,6 +59,7 @@
 //   p_count, p_head, p_tail, p_adv = u_out_buf.{count_q, head_q, tail_q, adv_q}
 
 `include "formal/specular_fv.svh"
+`include "specular_geo_ports.svh"
 
 module phong_stream_fv #(
   parameter int VecBits       = 2,
@@ -85,16 +86,7 @@ module phong_stream_fv #(
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
-  input  logic                 geo_valid_i,
-  output logic                 geo_ready_o,
-  input  logic [3*VecBits-1:0] geo_n1_i,
-  input  logic [3*VecBits-1:0] geo_n2_i,
-  input  logic [3*VecBits-1:0] geo_h1_i,
-  input  logic [3*VecBits-1:0] geo_he_i,
-  input  logic [NBits-1:0]     geo_n_i,
-  input  logic [LenBits-1:0]   geo_len_i,
-  input  logic [CBits-1:0]     geo_scale_i,
-  input  logic [TagBits-1:0]   geo_tag_i,
+  `SPECULAR_GEO_PORTS,
   output logic                 px_valid_o,
   input  logic                 px_ready_i,
   output logic [CBits-1:0]     px_intensity_o,
@@ -127,16 +119,7 @@ module phong_stream_fv #(
   ) u_dut (
     .clk_i          (clk_i),
     .rst_ni         (rst_ni),
-    .geo_valid_i    (geo_valid_i),
-    .geo_ready_o    (geo_ready_o),
-    .geo_n1_i       (geo_n1_i),
-    .geo_n2_i       (geo_n2_i),
-    .geo_h1_i       (geo_h1_i),
-    .geo_he_i       (geo_he_i),
-    .geo_n_i        (geo_n_i),
-    .geo_len_i      (geo_len_i),
-    .geo_scale_i    (geo_scale_i),
-    .geo_tag_i      (geo_tag_i),
+    `SPECULAR_GEO_PORT_MAP,
     .px_valid_o     (px_valid_o),
     .px_ready_i     (px_ready_i),
     .px_intensity_o (px_intensity_o),
@@ -150,7 +133,7 @@ module phong_stream_fv #(
   localparam int SeqBits   = $clog2(Depth + SpDepth + 3);
   localparam int IdxBits   = LenBits + 1;
   localparam int RBits     = LenBits + 2;
-  localparam int GeoBits   = 12 * VecBits + NBits + LenBits + CBits + TagBits;
+  localparam int GeoBits   = `SPECULAR_GEO_DATA_BITS;
   localparam int PixBits   = CBits + 1 + TagBits;
 
   logic accept, xfer;
@@ -164,8 +147,7 @@ module phong_stream_fv #(
 
   logic [GeoBits-1:0] geo_bus, geo_held_q;
   logic               geo_pend_q;
-  assign geo_bus = {geo_n1_i, geo_n2_i, geo_h1_i, geo_he_i, geo_n_i, geo_len_i, geo_scale_i,
-                    geo_tag_i};
+  assign geo_bus = `SPECULAR_GEO_DATA(geo_, _i);
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       geo_pend_q <= 1'b0;
