@@ -105,7 +105,7 @@ defines="-DSYNTHESIS"
 if [ -n "$mutant" ]; then
   defines+=" -DFV_PROPERTIES_ONLY"
 fi
-read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/core/formal/specular_stream_fv.sv"
+read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/prim/formal/specular_axis_props.sv rtl/core/formal/specular_stream_fv.sv"
 # The tag delay line: one register of Depth * TagBits bits (stages 1 .. PipeDepth - 1,
 # stage j in bits [j*TagBits-1 -: TagBits]; rtl/prim/specular_delay.sv). Latency = PipeDepth + 1
 # (the output buffer) = tag line length + 2.

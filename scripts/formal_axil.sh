@@ -90,7 +90,7 @@ t0=$(date +%s)
 # contents and drives each of its outputs from an \$anyseq cell. Exactly one cell u_stream
 # (specular_axis's specular_stream) must exist, else the RTL changed under the script.
 yosys -q -l "$out/yosys_${tag}.log" -p "
-  read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/axi/formal/specular_axil_fv.sv
+  read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/prim/formal/specular_axis_props.sv rtl/axi/formal/specular_axil_fv.sv
   hierarchy -check -top specular_axil_fv
   proc
   select -assert-count 1 */u_stream

@@ -98,7 +98,7 @@ defines="-DSYNTHESIS"
 if [ -n "$mutant" ] || [ -n "$bounded" ]; then
   defines+=" -DFV_PROPERTIES_ONLY"
 fi
-read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/competitors/phong/formal/phong_stream_fv.sv"
+read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/prim/formal/specular_axis_props.sv rtl/competitors/phong/formal/phong_stream_fv.sv"
 
 # The depths of the harness: the span pipe's valid line (u_setup.vld_q, setup_stages) and
 # the control's stage valids (u_control.vld_q, PipeDepth). Latency: from the accept edge to

@@ -89,7 +89,7 @@ defines="-DSYNTHESIS"
 if [ -n "$mutant" ] || [ -n "$bounded" ]; then
   defines+=" -DFV_PROPERTIES_ONLY"
 fi
-read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/setup/formal/specular_setup_fv.sv"
+read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/prim/formal/specular_axis_props.sv rtl/setup/formal/specular_setup_fv.sv"
 
 # Depth of the harness: the length of the valid delay line (one bit per register after the
 # input register; rtl/prim/specular_delay.sv), the descriptor's tau.

@@ -146,49 +146,48 @@ module specular_axil_fv #(
   // ---------------------------------------------------------------------------------
   `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
 
-  logic                 aw_pend_q, w_pend_q, ar_pend_q;
-  logic [AddrWidth+2:0] aw_held_q, ar_held_q;
-  logic [35:0]          w_held_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      aw_pend_q <= 1'b0;
-      w_pend_q  <= 1'b0;
-      ar_pend_q <= 1'b0;
-      aw_held_q <= '0;
-      w_held_q  <= '0;
-      ar_held_q <= '0;
-    end else begin
-      aw_pend_q <= s_axil_awvalid && !s_axil_awready;
-      w_pend_q  <= s_axil_wvalid && !s_axil_wready;
-      ar_pend_q <= s_axil_arvalid && !s_axil_arready;
-      aw_held_q <= {s_axil_awprot, s_axil_awaddr};
-      w_held_q  <= {s_axil_wstrb, s_axil_wdata};
-      ar_held_q <= {s_axil_arprot, s_axil_araddr};
-    end
-  end
-  always_comb begin
-    if (rst_ni && aw_pend_q) begin
-      assume (s_axil_awvalid);
-      assume ({s_axil_awprot, s_axil_awaddr} == aw_held_q);
-    end
-    if (rst_ni && w_pend_q) begin
-      assume (s_axil_wvalid);
-      assume ({s_axil_wstrb, s_axil_wdata} == w_held_q);
-    end
-    if (rst_ni && ar_pend_q) begin
-      assume (s_axil_arvalid);
-      assume ({s_axil_arprot, s_axil_araddr} == ar_held_q);
-    end
-  end
+  specular_axis_props #(.Width(AddrWidth + 3), .Source(1'b1)) u_aw_rules (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .valid_i (s_axil_awvalid),
+    .ready_i (s_axil_awready),
+    .data_i  ({s_axil_awprot, s_axil_awaddr})
+  );
+  specular_axis_props #(.Width(36), .Source(1'b1)) u_w_rules (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .valid_i (s_axil_wvalid),
+    .ready_i (s_axil_wready),
+    .data_i  ({s_axil_wstrb, s_axil_wdata})
+  );
+  specular_axis_props #(.Width(AddrWidth + 3), .Source(1'b1)) u_ar_rules (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .valid_i (s_axil_arvalid),
+    .ready_i (s_axil_arready),
+    .data_i  ({s_axil_arprot, s_axil_araddr})
+  );
+  // P3 / P4: the responses held under backpressure (the slave drives B and R)
+  specular_axis_props #(.Width(2), .Source(1'b0)) u_b_rules (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .valid_i (s_axil_bvalid),
+    .ready_i (s_axil_bready),
+    .data_i  (s_axil_bresp)
+  );
+  specular_axis_props #(.Width(34), .Source(1'b0)) u_r_rules (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .valid_i (s_axil_rvalid),
+    .ready_i (s_axil_rready),
+    .data_i  ({s_axil_rresp, s_axil_rdata})
+  );
 
   // ---------------------------------------------------------------------------------
   // Requests and responses: outstanding counts, the addresses of the open requests
   // ---------------------------------------------------------------------------------
   logic [1:0]           aw_out_q, w_out_q, ar_out_q;
   logic [AddrWidth-1:0] f_awaddr_q, f_araddr_q;
-  logic                 b_stall_q, r_stall_q;
-  logic [1:0]           bresp_held_q, rresp_held_q;
-  logic [31:0]          rdata_held_q;
   logic [1:0]           b_wait_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -197,11 +196,6 @@ module specular_axil_fv #(
       ar_out_q     <= '0;
       f_awaddr_q   <= '0;
       f_araddr_q   <= '0;
-      b_stall_q    <= 1'b0;
-      r_stall_q    <= 1'b0;
-      bresp_held_q <= '0;
-      rresp_held_q <= '0;
-      rdata_held_q <= '0;
       b_wait_q     <= '0;
     end else begin
       aw_out_q     <= aw_out_q + 2'(aw_fire) - 2'(b_fire);
@@ -209,11 +203,6 @@ module specular_axil_fv #(
       ar_out_q     <= ar_out_q + 2'(ar_fire) - 2'(r_fire);
       if (aw_fire) f_awaddr_q <= s_axil_awaddr;
       if (ar_fire) f_araddr_q <= s_axil_araddr;
-      b_stall_q    <= s_axil_bvalid && !s_axil_bready;
-      r_stall_q    <= s_axil_rvalid && !s_axil_rready;
-      bresp_held_q <= s_axil_bresp;
-      rresp_held_q <= s_axil_rresp;
-      rdata_held_q <= s_axil_rdata;
       // clocks with both AW and W accepted and no B yet
       b_wait_q     <= (aw_out_q != '0 && w_out_q != '0 && !s_axil_bvalid) ? b_wait_q + 2'd1 : 2'd0;
     end
@@ -233,16 +222,7 @@ module specular_axil_fv #(
       assert (aw_out_q <= 2'd1);
       assert (w_out_q <= 2'd1);
       assert (ar_out_q <= 2'd1);
-      // P3 / P4: responses held under backpressure
-      if (b_stall_q) begin
-        assert (s_axil_bvalid);
-        assert (s_axil_bresp == bresp_held_q);
-      end
-      if (r_stall_q) begin
-        assert (s_axil_rvalid);
-        assert (s_axil_rresp == rresp_held_q);
-        assert (s_axil_rdata == rdata_held_q);
-      end
+      // P3 / P4: u_b_rules, u_r_rules (above)
       // P6: progress
       assert (b_wait_q <= 2'd1);
       if (ar_out_q != '0) begin

@@ -133,46 +133,24 @@ module specular_stream_fv #(
   // ---------------------------------------------------------------------------------
   `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
 
-  logic [SpanBits-1:0] span_bus, span_held_q;
-  logic                span_pend_q;
-  assign span_bus = {span_c_i, span_psi0_i, span_dpsi_i, span_n_i, span_len_i, span_tag_i};
-
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      span_pend_q <= 1'b0;
-      span_held_q <= '0;
-    end else begin
-      span_pend_q <= span_valid_i && !span_ready_o;
-      span_held_q <= span_bus;
-    end
-  end
-  always_comb begin
-    if (rst_ni && span_pend_q) begin
-      assume (span_valid_i);
-      assume (span_bus == span_held_q);
-    end
-  end
+  specular_axis_props #(.Width(SpanBits), .Source(1'b1)) u_span_rules (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .valid_i (span_valid_i),
+    .ready_i (span_ready_o),
+    .data_i  ({span_c_i, span_psi0_i, span_dpsi_i, span_n_i, span_len_i, span_tag_i})
+  );
 
   // ---------------------------------------------------------------------------------
   // P1: valid held and pixel stable while stalled
   // ---------------------------------------------------------------------------------
-  logic               stall_q;
-  logic [PixBits-1:0] px_held_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      stall_q   <= 1'b0;
-      px_held_q <= '0;
-    end else begin
-      stall_q   <= px_valid_o && !px_ready_i;
-      px_held_q <= {px_intensity_o, px_last_o, px_tag_o};
-    end
-  end
-  always_comb begin
-    if (rst_ni && stall_q) begin
-      assert (px_valid_o);
-      assert ({px_intensity_o, px_last_o, px_tag_o} == px_held_q);
-    end
-  end
+  specular_axis_props #(.Width(PixBits), .Source(1'b0)) u_px_rules (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .valid_i (px_valid_o),
+    .ready_i (px_ready_i),
+    .data_i  ({px_intensity_o, px_last_o, px_tag_o})
+  );
 
   // ---------------------------------------------------------------------------------
   // P2: pixels owed; P5: nothing out after reset before an accept; P6: an invalid output

@@ -48,6 +48,7 @@
 //   p_count, p_head, p_tail, p_adv = u_dut.u_out_buf.{count_q, head_q, tail_q, adv_q}
 // With FV_PROPERTIES_ONLY defined (the mutant runs) the invariants and probes are left out.
 
+`include "formal/specular_fv.svh"
 `include "specular_geo_ports.svh"
 
 module specular_setup_fv #(
@@ -115,56 +116,28 @@ module specular_setup_fv #(
   // ---------------------------------------------------------------------------------
   // Assumptions: start in reset; AXI4-Stream producer on the geometry side
   // ---------------------------------------------------------------------------------
-  logic f_started_q = 1'b0;
-  always_ff @(posedge clk_i) begin
-    f_started_q <= 1'b1;
-  end
-  always_comb begin
-    if (!f_started_q) begin
-      assume (!rst_ni);
-    end
-  end
+  `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
 
-  logic [GeoBits-1:0] geo_bus, geo_held_q;
-  logic               geo_pend_q;
-  assign geo_bus = `SPECULAR_GEO_DATA(geo_, _i);
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      geo_pend_q <= 1'b0;
-      geo_held_q <= '0;
-    end else begin
-      geo_pend_q <= geo_valid_i && !geo_ready_o;
-      geo_held_q <= geo_bus;
-    end
-  end
-  always_comb begin
-    if (rst_ni && geo_pend_q) begin
-      assume (geo_valid_i);
-      assume (geo_bus == geo_held_q);
-    end
-  end
+  specular_axis_props #(.Width(GeoBits), .Source(1'b1)) u_geo_rules (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .valid_i (geo_valid_i),
+    .ready_i (geo_ready_o),
+    .data_i  (`SPECULAR_GEO_DATA(geo_, _i))
+  );
 
   // ---------------------------------------------------------------------------------
   // P1: valid held and descriptor stable while stalled; P5: no output in reset
   // ---------------------------------------------------------------------------------
-  logic                stall_q;
-  logic [SpanBits-1:0] span_bus, span_held_q;
-  assign span_bus = {span_c_o, span_psi0_o, span_dpsi_o, span_n_o, span_len_o, span_tag_o,
-                     span_status_o};
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      stall_q     <= 1'b0;
-      span_held_q <= '0;
-    end else begin
-      stall_q     <= span_valid_o && !span_ready_i;
-      span_held_q <= span_bus;
-    end
-  end
+  specular_axis_props #(.Width(SpanBits), .Source(1'b0)) u_span_rules (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .valid_i (span_valid_o),
+    .ready_i (span_ready_i),
+    .data_i  ({span_c_o, span_psi0_o, span_dpsi_o, span_n_o, span_len_o, span_tag_o,
+               span_status_o})
+  );
   always_comb begin
-    if (rst_ni && stall_q) begin
-      assert (span_valid_o);
-      assert (span_bus == span_held_q);
-    end
     if (!rst_ni) begin
       assert (!span_valid_o);
     end

@@ -145,24 +145,13 @@ module phong_stream_fv #(
   // ---------------------------------------------------------------------------------
   `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
 
-  logic [GeoBits-1:0] geo_bus, geo_held_q;
-  logic               geo_pend_q;
-  assign geo_bus = `SPECULAR_GEO_DATA(geo_, _i);
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      geo_pend_q <= 1'b0;
-      geo_held_q <= '0;
-    end else begin
-      geo_pend_q <= geo_valid_i && !geo_ready_o;
-      geo_held_q <= geo_bus;
-    end
-  end
-  always_comb begin
-    if (rst_ni && geo_pend_q) begin
-      assume (geo_valid_i);
-      assume (geo_bus == geo_held_q);
-    end
-  end
+  specular_axis_props #(.Width(GeoBits), .Source(1'b1)) u_geo_rules (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .valid_i (geo_valid_i),
+    .ready_i (geo_ready_o),
+    .data_i  (`SPECULAR_GEO_DATA(geo_, _i))
+  );
 
   logic [SeqBits-1:0] f_k_q;
   always_ff @(posedge clk_i) begin
@@ -177,23 +166,16 @@ module phong_stream_fv #(
   // ---------------------------------------------------------------------------------
   // P1: valid held and pixel stable while stalled; P4: no pixel in reset; P5: idle reads 0
   // ---------------------------------------------------------------------------------
-  logic               stall_q;
-  logic [PixBits-1:0] px_bus, px_held_q;
+  logic [PixBits-1:0] px_bus;
   assign px_bus = {px_intensity_o, px_last_o, px_tag_o};
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      stall_q   <= 1'b0;
-      px_held_q <= '0;
-    end else begin
-      stall_q   <= px_valid_o && !px_ready_i;
-      px_held_q <= px_bus;
-    end
-  end
+  specular_axis_props #(.Width(PixBits), .Source(1'b0)) u_px_rules (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .valid_i (px_valid_o),
+    .ready_i (px_ready_i),
+    .data_i  (px_bus)
+  );
   always_comb begin
-    if (rst_ni && stall_q) begin
-      assert (px_valid_o);
-      assert (px_bus == px_held_q);
-    end
     if (!rst_ni) begin
       assert (!px_valid_o);
     end
