@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 //
 // specular_axil_fv: formal property harness of specular_axil's AXI4-Lite slave
-// (rtl/axi/specular_axil.sv; the rules in docs/interfaces.md). Run by scripts/formal_axil.sh
+// (rtl/axi/specular_axil.sv; the rules in docs/interfaces.md). Run by scripts/formal.sh axil
 // (ctests rtl_formal_axil and rtl_formal_axil_mutant): Yosys read_verilog -formal, the
 // stream core cut out (its outputs become free values every clock, so the proof holds
-// whatever the core does), Yosys sat -tempinduct: base case from reset plus induction, an
-// unbounded proof. Overview and figures: docs/formal.md.
+// whatever the core does), the unbounded proof (base case from reset and induction). Overview and figures: docs/formal.md.
 //
 // Reduced parameters: the stream core's and TagBits are those of specular_stream_fv.sv
 // (rtl/prim/formal/specular_fv.svh; the core is cut out anyway, they only keep
@@ -36,10 +35,9 @@
 //   P8 reset             after a reset, bvalid and rvalid are low (P1, P5 with counters
 //                        cleared by the reset)
 // Strengthening invariants (for induction, proven like the properties) tie the harness's
-// counters and recorded addresses to the slave's holding registers, read through probe
-// wires that scripts/formal_axil.sh connects to the flattened instance (Yosys has no
-// hierarchical references):
-//   p_aw_full = u_dut.aw_full_q   p_w_full = u_dut.w_full_q   p_awaddr = u_dut.awaddr_q
+// counters and recorded addresses to the slave's holding registers, read through the probe
+// wires p_* of the probe table of its target in scripts/formal.sh (connect after flatten; Yosys reads
+// no hierarchical references).
 // With FV_PROPERTIES_ONLY defined (the mutant runs) the invariants and probes are left out.
 
 `include "specular_params.svh"

@@ -42,21 +42,14 @@
 //   P6 idle      while px_valid_o is low, px_intensity_o and px_last_o are 0
 // Strengthening invariants (needed for induction, proven like the properties) relate the
 // harness state to the stage valids, last flags, counter 5, the tag registers and the
-// output buffer of the core. Those are read through probe wires that scripts/formal.sh
-// connects to the flattened instance (connect -set after flatten; Yosys has no
-// hierarchical references):
-//   p_vld   = u_dut.u_control14.vld_q    p_last = u_dut.u_control14.last_q
-//   p_cnt   = u_dut.cnt0                 p_tag0 = u_dut.tag0
-//   p_zero  = u_dut.u_counter5.zero_q
-//   p_tagline = u_dut.u_tag_line.gen_regs.line_q, the tags of stages 1 .. Depth - 1
-//   p_count = u_dut.u_out_buf.count_q    p_adv  = u_dut.u_out_buf.adv_q
-//   p_head  = u_dut.u_out_buf.head_q     p_tail = u_dut.u_out_buf.tail_q
+// output buffer of the core, read through the probe wires p_* of the probe table of
+// target stream in scripts/formal.sh (connect after flatten; Yosys reads no hierarchical
+// references).
 // The invariants are local: ghost registers shifted with the pipeline carry each stage's
 // FIFO slot and pixel index and running counts of valid and last pixels, so every invariant
 // relates two neighbouring stages (or a stage before and after one edge) and none is a sum
-// or a walk over the whole pipeline; that took the induction step (Yosys's sat) from 6 to
-// 20 CPU minutes down to about two, and lets ABC's scorr prove each property on its own in
-// under a second (docs/formal.md#run-time).
+// or a walk over the whole pipeline: each property's induction step is local, so ABC's
+// scorr proves them one by one (docs/formal.md#the-flow).
 // With FV_PROPERTIES_ONLY defined (the mutant runs) the invariants and probes are left out.
 // Latency (the core's PipeDepth + 1, the output buffer's clock) is a parameter set by
 // scripts/formal.sh.

@@ -3,12 +3,12 @@
 //
 // specular_setup_fv: formal property harness of specular_setup's handshakes (geometry span
 // in, span descriptor out; docs/interfaces.md#geometry-span-interface,
-// docs/setup_hw.md#the-rtl). Run by scripts/formal_setup.sh (ctests rtl_formal_setup and
-// rtl_formal_setup_mutant): Yosys read_verilog -formal, Yosys sat -tempinduct (base case
-// from reset plus induction: an unbounded proof). Everything below the instance is under
+// docs/setup_hw.md#the-rtl). Run by scripts/formal.sh setup (ctests rtl_formal_setup_*):
+// the unbounded proof (base case from reset and induction), the bounded check and a mutant
+// (docs/formal.md#specular_setup-the-span-handshakes). Everything below the instance is under
 // `ifdef FORMAL; this file is not in the filelist rtl/specular.f.
 //
-// ABSTRACTION (in scripts/formal_setup.sh, documented in docs/formal.md): the script
+// ABSTRACTION (in scripts/formal.sh setup, documented in docs/formal.md): the script
 // cuts the arithmetic datapath where it reaches the descriptor (the wires c_96, psi0_96,
 // dpsi_96, a_pos_96, opp_h_96, n_96, len_96 and the status flags become free values every
 // clock) and removes the logic left without a reader. What remains is the control: the
@@ -40,12 +40,9 @@
 // Strengthening invariants (needed for induction, proven like the properties) relate ghost
 // registers shifted with the pipeline (g_seq: per stage, the number of the stage's span, or
 // for an empty stage the number of the next span to come below the ones above it) to the
-// core's stage valids, tags and output buffer, read through probe wires that
-// scripts/formal_setup.sh connects after flatten:
-//   p_vld0  = u_dut.in_valid_q                     p_tag0 = u_dut.tag_q
-//   p_vline = u_dut.u_dly_valid.gen_regs.line_q    (stages 1 .. Depth)
-//   p_oline = u_dut.u_dly_out.gen_regs.line_q      ({len, n, tag, 3 flags} per stage)
-//   p_count, p_head, p_tail, p_adv = u_dut.u_out_buf.{count_q, head_q, tail_q, adv_q}
+// core's stage valids, tags and output buffer, read through the probe wires p_* of
+// the probe table of its target in scripts/formal.sh (connect after flatten; Yosys reads
+// no hierarchical references).
 // With FV_PROPERTIES_ONLY defined (the mutant runs) the invariants and probes are left out.
 
 `include "formal/specular_fv.svh"
@@ -55,7 +52,7 @@ module specular_setup_fv #(
   parameter int VecBits = 18,
   parameter int TagBits = 2,
   // Registers after the input register (the core's tau of the descriptor, TC = 96); set by
-  // scripts/formal_setup.sh from the length of the valid delay line.
+  // scripts/formal.sh setup from the length of the valid delay line.
   parameter int Depth   = 96,
   // specular_setup's fixed register formats (the widths of its ports)
   localparam int CBits     = 16,
@@ -228,7 +225,7 @@ module specular_setup_fv #(
 `ifndef FV_PROPERTIES_ONLY
   // ---------------------------------------------------------------------------------
   // Strengthening invariants on the core's state (probes connected by
-  // scripts/formal_setup.sh). Left out (FV_PROPERTIES_ONLY) by the mutant runs.
+  // scripts/formal.sh setup). Left out (FV_PROPERTIES_ONLY) by the mutant runs.
   // ---------------------------------------------------------------------------------
   logic                    p_vld0;    // the input register holds a span (stage 0)
   logic [TagBits-1:0]      p_tag0;    // ... its tag

@@ -3,8 +3,8 @@
 //
 // phong_stream_fv: formal property harness of phong_stream's handshakes (geometry span in,
 // pixels out; docs/interfaces.md#geometry-span-interface, docs/phong_hw.md). Run by
-// scripts/formal_phong.sh: Yosys read_verilog -formal, Yosys sat -tempinduct (base case from
-// reset plus induction: an unbounded proof), or a bounded model check from reset (ABC bmc3).
+// scripts/formal.sh phong: the unbounded proof (base case from reset and induction), or a
+// bounded model check from reset (docs/formal.md#phong_stream-the-span-and-pixel-handshakes).
 // Everything below the instance is under `ifdef FORMAL; this file is not in the filelist
 // rtl/specular.f.
 //
@@ -16,7 +16,7 @@
 // span pipe's valid line and its len and tag registers) is the same shift structure at any
 // depth. LenBits 3 (spans of 1..8 pixels), TagBits 2.
 //
-// ABSTRACTION (scripts/formal_phong.sh, docs/formal.md#phong_stream-the-span-and-pixel-handshakes):
+// ABSTRACTION (scripts/formal.sh phong, docs/formal.md#phong_stream-the-span-and-pixel-handshakes):
 // the script cuts the pixel value where it leaves the power unit (cutpoint u_dut.intensity:
 // a free value every clock) and removes the logic left without a reader (the span setup's
 // multipliers, the accumulators, phong_dot, phong_norm, phong_pow, the n/scale line). No
@@ -43,20 +43,15 @@
 //               geo_ready_o high in one of them: only the pixels of the span in stage 0
 //               hold the span side back
 // geo_ready_o depending on registers only (never on geo_valid_i or px_ready_i) is checked
-// on the netlist by scripts/formal_phong.sh (no combinational path into it).
+// on the netlist by scripts/formal.sh phong (no combinational path into it).
 //
 // Strengthening invariants (needed for induction, proven like the properties; left out with
 // FV_PROPERTIES_ONLY, the bounded and mutant runs) use ghost registers shifted with the
 // pipelines, in the style of specular_stream_fv.sv: per span-pipe stage, the span number
 // (g_sseq, shifted when the span pipe moves: geo_ready_o); per pixel stage, the span number
 // and pixel index (g_seq, g_idx, shifted with the output buffer's advance). Each relates
-// neighbouring stages. Probes (connected by the script after flatten):
-//   p_sp_vld = u_dut.u_setup.vld_q    p_len1, p_tag1, p_len2, p_tag2 = u_setup.{len,tag}_{1,2}
-//   p_side   = u_setup.u_side.gen_regs.line_q (the span pipe's multiplier stages)
-//   p_lenh, p_tagh = u_dut.{len_h, tag_h} (the span pipe's head)
-//   p_vld, p_last = u_dut.u_control.{vld_q, last_q}   p_cnt, p_zero = u_counter.{cnt_q, zero_q}
-//   p_tag0 = u_dut.tag0   p_tagline = u_tag_line.gen_regs.line_q
-//   p_count, p_head, p_tail, p_adv = u_out_buf.{count_q, head_q, tail_q, adv_q}
+// neighbouring stages. The probe wires p_* carry the core's state: the probe table of its target in scripts/formal.sh (connect after flatten; Yosys reads
+// no hierarchical references).
 
 `include "formal/specular_fv.svh"
 `include "specular_geo_ports.svh"
@@ -79,7 +74,7 @@ module phong_stream_fv #(
   parameter int ExpFracBits   = 2,
   parameter int ExpBits       = 2,
   // The span pipe's stages (phong_pkg::setup_stages) and the pixel pipeline's (PipeDepth):
-  // scripts/formal_phong.sh sets them from the widths of u_setup.vld_q and
+  // scripts/formal.sh phong sets them from the widths of u_setup.vld_q and
   // u_control.vld_q; a wrong value fails on the probe widths.
   parameter int SpDepth       = 5,
   parameter int Depth         = 40
@@ -249,7 +244,7 @@ module phong_stream_fv #(
 `ifndef FV_PROPERTIES_ONLY
   // ---------------------------------------------------------------------------------
   // Strengthening invariants on the core's state (probes connected by
-  // scripts/formal_phong.sh). Left out (FV_PROPERTIES_ONLY) by the bounded and mutant runs.
+  // scripts/formal.sh phong). Left out (FV_PROPERTIES_ONLY) by the bounded and mutant runs.
   // ---------------------------------------------------------------------------------
   localparam int MulDepth = SpDepth - 3;   // u_setup.u_side: the multiplier stages
   localparam int AccBits  = VecBits + LenBits;
