@@ -51,7 +51,8 @@
 //                 (output 27)
 //   output buffer two entries (specular_out_buf): the pixel handshake
 // (each block's stage count follows its parameters: specular_pkg, docs/pipeline.md#stage-counts).
-// Every stage holds at most one carry chain, which is what an iCE40 needs for 100 MHz.
+// Every stage holds at most one carry chain: the clock period is bounded by one adder and
+// its routing, never by two adders in series (rtl/fpga/README.md).
 // C, the tag, the bank and the n-valid flag of each pixel travel beside it (specular_delay), so every
 // pixel uses its own span's values while consecutive spans overlap in the pipeline.
 // Register 3 (psi0) is the span bus itself: mux 7 takes psi0 straight from span_psi0_i.

@@ -503,8 +503,9 @@ module specular_setup #(
       n1_23 <= n1_22;
       // tau 24
       // W = H2 - x H1, or N1 - cos t1 H1 for opposite halfway vectors. Both arms are
-      // written out: Yosys' share pass merges their products into one (the same H1), and
-      // selecting the operands first instead cost 9 more MULT18X18D on the ECP5
+      // written out: Yosys' share pass merges their products into one (the same H1);
+      // operands selected first would hide that common operand behind a multiplexer, and
+      // each arm would keep multipliers of its own
       // (docs/setup_hw.md#sharing-over-setupii-clocks).
       w_q <= opp_h_23 ? {sub_scaled(n1_23.z, cos_t1_23, h1_23.z, UnitFrac), sub_scaled(n1_23.y, cos_t1_23, h1_23.y, UnitFrac),
                          sub_scaled(n1_23.x, cos_t1_23, h1_23.x, UnitFrac)}
