@@ -144,42 +144,17 @@ module specular_axil_fv #(
   // ---------------------------------------------------------------------------------
   `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
 
-  specular_axis_props #(.Width(AddrWidth + 3), .Source(1'b1)) u_aw_rules (
-    .clk_i   (clk_i),
-    .rst_ni  (rst_ni),
-    .valid_i (s_axil_awvalid),
-    .ready_i (s_axil_awready),
-    .data_i  ({s_axil_awprot, s_axil_awaddr})
-  );
-  specular_axis_props #(.Width(36), .Source(1'b1)) u_w_rules (
-    .clk_i   (clk_i),
-    .rst_ni  (rst_ni),
-    .valid_i (s_axil_wvalid),
-    .ready_i (s_axil_wready),
-    .data_i  ({s_axil_wstrb, s_axil_wdata})
-  );
-  specular_axis_props #(.Width(AddrWidth + 3), .Source(1'b1)) u_ar_rules (
-    .clk_i   (clk_i),
-    .rst_ni  (rst_ni),
-    .valid_i (s_axil_arvalid),
-    .ready_i (s_axil_arready),
-    .data_i  ({s_axil_arprot, s_axil_araddr})
-  );
+  `SPECULAR_FV_AXIS_RULES(u_aw_rules, 1'b1, AddrWidth + 3, s_axil_awvalid, s_axil_awready,
+                          {s_axil_awprot, s_axil_awaddr});
+  `SPECULAR_FV_AXIS_RULES(u_w_rules, 1'b1, 36, s_axil_wvalid, s_axil_wready,
+                          {s_axil_wstrb, s_axil_wdata});
+  `SPECULAR_FV_AXIS_RULES(u_ar_rules, 1'b1, AddrWidth + 3, s_axil_arvalid, s_axil_arready,
+                          {s_axil_arprot, s_axil_araddr});
   // P3 / P4: the responses held under backpressure (the slave drives B and R)
-  specular_axis_props #(.Width(2), .Source(1'b0)) u_b_rules (
-    .clk_i   (clk_i),
-    .rst_ni  (rst_ni),
-    .valid_i (s_axil_bvalid),
-    .ready_i (s_axil_bready),
-    .data_i  (s_axil_bresp)
-  );
-  specular_axis_props #(.Width(34), .Source(1'b0)) u_r_rules (
-    .clk_i   (clk_i),
-    .rst_ni  (rst_ni),
-    .valid_i (s_axil_rvalid),
-    .ready_i (s_axil_rready),
-    .data_i  ({s_axil_rresp, s_axil_rdata})
-  );
+  `SPECULAR_FV_AXIS_RULES(u_b_rules, 1'b0, 2, s_axil_bvalid, s_axil_bready,
+                          s_axil_bresp);
+  `SPECULAR_FV_AXIS_RULES(u_r_rules, 1'b0, 34, s_axil_rvalid, s_axil_rready,
+                          {s_axil_rresp, s_axil_rdata});
 
   // ---------------------------------------------------------------------------------
   // Requests and responses: outstanding counts, the addresses of the open requests

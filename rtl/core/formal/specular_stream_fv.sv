@@ -126,24 +126,14 @@ module specular_stream_fv #(
   // ---------------------------------------------------------------------------------
   `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
 
-  specular_axis_props #(.Width(SpanBits), .Source(1'b1)) u_span_rules (
-    .clk_i   (clk_i),
-    .rst_ni  (rst_ni),
-    .valid_i (span_valid_i),
-    .ready_i (span_ready_o),
-    .data_i  ({span_c_i, span_psi0_i, span_dpsi_i, span_n_i, span_len_i, span_tag_i})
-  );
+  `SPECULAR_FV_AXIS_RULES(u_span_rules, 1'b1, SpanBits, span_valid_i, span_ready_o,
+                          {span_c_i, span_psi0_i, span_dpsi_i, span_n_i, span_len_i, span_tag_i});
 
   // ---------------------------------------------------------------------------------
   // P1: valid held and pixel stable while stalled
   // ---------------------------------------------------------------------------------
-  specular_axis_props #(.Width(PixBits), .Source(1'b0)) u_px_rules (
-    .clk_i   (clk_i),
-    .rst_ni  (rst_ni),
-    .valid_i (px_valid_o),
-    .ready_i (px_ready_i),
-    .data_i  ({px_intensity_o, px_last_o, px_tag_o})
-  );
+  `SPECULAR_FV_AXIS_RULES(u_px_rules, 1'b0, PixBits, px_valid_o, px_ready_i,
+                          {px_intensity_o, px_last_o, px_tag_o});
 
   // ---------------------------------------------------------------------------------
   // P2: pixels owed; P5: nothing out after reset before an accept; P6: an invalid output

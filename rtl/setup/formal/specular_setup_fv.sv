@@ -115,25 +115,15 @@ module specular_setup_fv #(
   // ---------------------------------------------------------------------------------
   `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
 
-  specular_axis_props #(.Width(GeoBits), .Source(1'b1)) u_geo_rules (
-    .clk_i   (clk_i),
-    .rst_ni  (rst_ni),
-    .valid_i (geo_valid_i),
-    .ready_i (geo_ready_o),
-    .data_i  (`SPECULAR_GEO_DATA(geo_, _i))
-  );
+  `SPECULAR_FV_AXIS_RULES(u_geo_rules, 1'b1, GeoBits, geo_valid_i, geo_ready_o,
+                          `SPECULAR_GEO_DATA(geo_, _i));
 
   // ---------------------------------------------------------------------------------
   // P1: valid held and descriptor stable while stalled; P5: no output in reset
   // ---------------------------------------------------------------------------------
-  specular_axis_props #(.Width(SpanBits), .Source(1'b0)) u_span_rules (
-    .clk_i   (clk_i),
-    .rst_ni  (rst_ni),
-    .valid_i (span_valid_o),
-    .ready_i (span_ready_i),
-    .data_i  ({span_c_o, span_psi0_o, span_dpsi_o, span_n_o, span_len_o, span_tag_o,
-               span_status_o})
-  );
+  `SPECULAR_FV_AXIS_RULES(u_span_rules, 1'b0, SpanBits, span_valid_o, span_ready_i,
+                          {span_c_o, span_psi0_o, span_dpsi_o, span_n_o, span_len_o,
+                           span_tag_o, span_status_o});
   always_comb begin
     if (!rst_ni) begin
       assert (!span_valid_o);

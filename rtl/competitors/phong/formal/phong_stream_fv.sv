@@ -140,13 +140,8 @@ module phong_stream_fv #(
   // ---------------------------------------------------------------------------------
   `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
 
-  specular_axis_props #(.Width(GeoBits), .Source(1'b1)) u_geo_rules (
-    .clk_i   (clk_i),
-    .rst_ni  (rst_ni),
-    .valid_i (geo_valid_i),
-    .ready_i (geo_ready_o),
-    .data_i  (`SPECULAR_GEO_DATA(geo_, _i))
-  );
+  `SPECULAR_FV_AXIS_RULES(u_geo_rules, 1'b1, GeoBits, geo_valid_i, geo_ready_o,
+                          `SPECULAR_GEO_DATA(geo_, _i));
 
   logic [SeqBits-1:0] f_k_q;
   always_ff @(posedge clk_i) begin
@@ -163,13 +158,8 @@ module phong_stream_fv #(
   // ---------------------------------------------------------------------------------
   logic [PixBits-1:0] px_bus;
   assign px_bus = {px_intensity_o, px_last_o, px_tag_o};
-  specular_axis_props #(.Width(PixBits), .Source(1'b0)) u_px_rules (
-    .clk_i   (clk_i),
-    .rst_ni  (rst_ni),
-    .valid_i (px_valid_o),
-    .ready_i (px_ready_i),
-    .data_i  (px_bus)
-  );
+  `SPECULAR_FV_AXIS_RULES(u_px_rules, 1'b0, PixBits, px_valid_o, px_ready_i,
+                          px_bus);
   always_comb begin
     if (!rst_ni) begin
       assert (!px_valid_o);
