@@ -66,6 +66,7 @@
 
 `include "specular_assert.svh"
 `include "specular_params.svh"
+`include "specular_span_ports.svh"
 
 module specular_stream #(
   `SPECULAR_CORE_PARAMS,
@@ -73,14 +74,7 @@ module specular_stream #(
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
-  input  logic                 span_valid_i,
-  output logic                 span_ready_o,
-  input  logic [CBits-1:0]     span_c_i,
-  input  logic [AngleBits-1:0] span_psi0_i,
-  input  logic [AngleBits-1:0] span_dpsi_i,
-  input  logic [NBits-1:0]     span_n_i,
-  input  logic [LenBits-1:0]   span_len_i,
-  input  logic [TagBits-1:0]   span_tag_i,
+  `SPECULAR_SPAN_PORTS(input, output, _i, _o),
   output logic                 px_valid_o,
   input  logic                 px_ready_i,
   output logic [CBits-1:0]     px_intensity_o,

@@ -58,6 +58,7 @@
 
 `include "specular_assert.svh"
 `include "specular_geo_ports.svh"
+`include "specular_span_ports.svh"
 
 module specular_setup #(
   parameter int VecBits       = 18,
@@ -84,14 +85,7 @@ module specular_setup #(
   input  logic                 clk_i,
   input  logic                 rst_ni,
   `SPECULAR_GEO_PORTS,
-  output logic                 span_valid_o,
-  input  logic                 span_ready_i,
-  output logic [CBits-1:0]     span_c_o,
-  output logic [AngleBits-1:0] span_psi0_o,
-  output logic [AngleBits-1:0] span_dpsi_o,
-  output logic [NBits-1:0]     span_n_o,
-  output logic [LenBits-1:0]   span_len_o,
-  output logic [TagBits-1:0]   span_tag_o,
+  `SPECULAR_SPAN_PORTS(output, input, _o, _i),
   output logic [2:0]           span_status_o
 );
 

@@ -22,6 +22,7 @@
 `include "specular_assert.svh"
 `include "specular_params.svh"
 `include "specular_geo_ports.svh"
+`include "specular_span_ports.svh"
 
 module specular_system #(
   `SPECULAR_CORE_PARAMS,
@@ -76,14 +77,7 @@ module specular_system #(
     .clk_i         (clk_i),
     .rst_ni        (rst_ni),
     `SPECULAR_GEO_PORT_MAP,
-    .span_valid_o  (span_valid),
-    .span_ready_i  (span_ready),
-    .span_c_o      (span_c),
-    .span_psi0_o   (span_psi0),
-    .span_dpsi_o   (span_dpsi),
-    .span_n_o      (span_n),
-    .span_len_o    (span_len),
-    .span_tag_o    (span_tag),
+    `SPECULAR_SPAN_MAP(_o, _i, span_, , ),
     .span_status_o (span_status)
   );
 
@@ -93,14 +87,7 @@ module specular_system #(
   ) u_stream (
     .clk_i          (clk_i),
     .rst_ni         (rst_ni),
-    .span_valid_i   (span_valid),
-    .span_ready_o   (span_ready),
-    .span_c_i       (span_c),
-    .span_psi0_i    (span_psi0),
-    .span_dpsi_i    (span_dpsi),
-    .span_n_i       (span_n),
-    .span_len_i     (span_len),
-    .span_tag_i     (span_tag),
+    `SPECULAR_SPAN_MAP(_i, _o, span_, , ),
     .px_valid_o     (px_valid_o),
     .px_ready_i     (px_ready_i),
     .px_intensity_o (px_intensity_o),

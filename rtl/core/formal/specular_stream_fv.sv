@@ -56,6 +56,7 @@
 
 `include "specular_params.svh"
 `include "formal/specular_fv.svh"
+`include "specular_span_ports.svh"
 
 module specular_stream_fv #(
   `SPECULAR_FV_PARAMS,
@@ -66,15 +67,8 @@ module specular_stream_fv #(
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
-  input  logic                 span_valid_i,
-  input  logic [CBits-1:0]     span_c_i,
-  input  logic [AngleBits-1:0] span_psi0_i,
-  input  logic [AngleBits-1:0] span_dpsi_i,
-  input  logic [NBits-1:0]     span_n_i,
-  input  logic [LenBits-1:0]   span_len_i,
-  input  logic [TagBits-1:0]   span_tag_i,
+  `SPECULAR_SPAN_PORTS(input, output, _i, _o),
   input  logic                 px_ready_i,
-  output logic                 span_ready_o,
   output logic                 px_valid_o,
   output logic [CBits-1:0]     px_intensity_o,
   output logic                 px_last_o,
@@ -87,14 +81,7 @@ module specular_stream_fv #(
   ) u_dut (
     .clk_i          (clk_i),
     .rst_ni         (rst_ni),
-    .span_valid_i   (span_valid_i),
-    .span_ready_o   (span_ready_o),
-    .span_c_i       (span_c_i),
-    .span_psi0_i    (span_psi0_i),
-    .span_dpsi_i    (span_dpsi_i),
-    .span_n_i       (span_n_i),
-    .span_len_i     (span_len_i),
-    .span_tag_i     (span_tag_i),
+    `SPECULAR_SPAN_MAP(_i, _o, span_, _i, _o),
     .px_valid_o     (px_valid_o),
     .px_ready_i     (px_ready_i),
     .px_intensity_o (px_intensity_o),
@@ -127,7 +114,7 @@ module specular_stream_fv #(
   `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
 
   `SPECULAR_FV_AXIS_RULES(u_span_rules, 1'b1, SpanBits, span_valid_i, span_ready_o,
-                          {span_c_i, span_psi0_i, span_dpsi_i, span_n_i, span_len_i, span_tag_i});
+                          `SPECULAR_SPAN_DATA(span_, _i));
 
   // ---------------------------------------------------------------------------------
   // P1: valid held and pixel stable while stalled

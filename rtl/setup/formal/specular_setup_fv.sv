@@ -47,6 +47,7 @@
 
 `include "formal/specular_fv.svh"
 `include "specular_geo_ports.svh"
+`include "specular_span_ports.svh"
 
 module specular_setup_fv #(
   parameter int VecBits = 18,
@@ -63,14 +64,7 @@ module specular_setup_fv #(
   input  logic                 clk_i,
   input  logic                 rst_ni,
   `SPECULAR_GEO_PORTS,
-  output logic                 span_valid_o,
-  input  logic                 span_ready_i,
-  output logic [CBits-1:0]     span_c_o,
-  output logic [AngleBits-1:0] span_psi0_o,
-  output logic [AngleBits-1:0] span_dpsi_o,
-  output logic [NBits-1:0]     span_n_o,
-  output logic [LenBits-1:0]   span_len_o,
-  output logic [TagBits-1:0]   span_tag_o,
+  `SPECULAR_SPAN_PORTS(output, input, _o, _i),
   output logic [2:0]           span_status_o,
   // The solver's choice of the tracked span (P4): high at the accept of the span to track.
   input  logic                 f_pick_i
@@ -83,14 +77,7 @@ module specular_setup_fv #(
     .clk_i         (clk_i),
     .rst_ni        (rst_ni),
     `SPECULAR_GEO_PORT_MAP,
-    .span_valid_o  (span_valid_o),
-    .span_ready_i  (span_ready_i),
-    .span_c_o      (span_c_o),
-    .span_psi0_o   (span_psi0_o),
-    .span_dpsi_o   (span_dpsi_o),
-    .span_n_o      (span_n_o),
-    .span_len_o    (span_len_o),
-    .span_tag_o    (span_tag_o),
+    `SPECULAR_SPAN_MAP(_o, _i, span_, _o, _i),
     .span_status_o (span_status_o)
   );
 
@@ -122,8 +109,7 @@ module specular_setup_fv #(
   // P1: valid held and descriptor stable while stalled; P5: no output in reset
   // ---------------------------------------------------------------------------------
   `SPECULAR_FV_AXIS_RULES(u_span_rules, 1'b0, SpanBits, span_valid_o, span_ready_i,
-                          {span_c_o, span_psi0_o, span_dpsi_o, span_n_o, span_len_o,
-                           span_tag_o, span_status_o});
+                          {`SPECULAR_SPAN_DATA(span_, _o), span_status_o});
   always_comb begin
     if (!rst_ni) begin
       assert (!span_valid_o);
