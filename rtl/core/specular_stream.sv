@@ -75,11 +75,7 @@ module specular_stream #(
   input  logic                 clk_i,
   input  logic                 rst_ni,
   `SPECULAR_SPAN_PORTS(input, output, _i, _o),
-  output logic                 px_valid_o,
-  input  logic                 px_ready_i,
-  output logic [CBits-1:0]     px_intensity_o,
-  output logic                 px_last_o,
-  output logic [TagBits-1:0]   px_tag_o
+  `SPECULAR_PX_PORTS
 );
 
   // Stage counts of the blocks and of the whole pipeline: specular_pkg, their one

@@ -42,6 +42,7 @@
 
 `include "specular_assert.svh"
 `include "specular_geo_ports.svh"
+`include "specular_span_ports.svh"
 
 module fpga_ooc #(
   parameter int Top       = 1,   // the core: 0 specular_unit, 1 specular_stream, 2 specular_axil,
@@ -134,13 +135,13 @@ module fpga_ooc #(
     );
   end else if (Top == TopStream) begin : gen_stream
     logic                 span_valid, span_ready, px_valid, px_ready, px_last;
-    logic [CBits-1:0]     c, px_intensity;
-    logic [AngleBits-1:0] psi0, dpsi;
-    logic [NBits-1:0]     n;
-    logic [LenBits-1:0]   len;
-    logic [TagBits-1:0]   tag, px_tag;
+    logic [CBits-1:0]     span_c, px_intensity;
+    logic [AngleBits-1:0] span_psi0, span_dpsi;
+    logic [NBits-1:0]     span_n;
+    logic [LenBits-1:0]   span_len;
+    logic [TagBits-1:0]   span_tag, px_tag;
 
-    assign {span_valid, c, psi0, dpsi, n, len, tag, px_ready} = core_in;
+    assign {span_valid, `SPECULAR_SPAN_DATA(span_, ), px_ready} = core_in;
     assign core_out = {span_ready, px_valid, px_intensity, px_last, px_tag};
 
     specular_stream #(
@@ -152,19 +153,8 @@ module fpga_ooc #(
     ) u_core (
       .clk_i          (clk_i),
       .rst_ni         (core_rst_n),
-      .span_valid_i   (span_valid),
-      .span_ready_o   (span_ready),
-      .span_c_i       (c),
-      .span_psi0_i    (psi0),
-      .span_dpsi_i    (dpsi),
-      .span_n_i       (n),
-      .span_len_i     (len),
-      .span_tag_i     (tag),
-      .px_valid_o     (px_valid),
-      .px_ready_i     (px_ready),
-      .px_intensity_o (px_intensity),
-      .px_last_o      (px_last),
-      .px_tag_o       (px_tag)
+      `SPECULAR_SPAN_MAP(_i, _o, span_, , ),
+      `SPECULAR_PX_MAP(px_, , )
     );
   end else if (Top == TopAxil) begin : gen_axil
     logic                 awvalid, awready, wvalid, wready, bvalid, bready;
@@ -263,10 +253,11 @@ module fpga_ooc #(
         .span_status_o (span_status)
       );
     end else begin : gen_px
-      logic               px_valid, px_last;
+      logic               px_valid, px_ready, px_last;
       logic [CBits-1:0]   px_intensity;
       logic [TagBits-1:0] px_tag;
 
+      assign px_ready = out_ready;
       assign core_out = {geo_ready, px_valid, px_intensity, px_last, px_tag};
 
       if (Top == TopPhong) begin : gen_phong
@@ -280,11 +271,7 @@ module fpga_ooc #(
           .clk_i          (clk_i),
           .rst_ni         (core_rst_n),
           `SPECULAR_GEO_MAP(geo_, , ),
-          .px_valid_o     (px_valid),
-          .px_ready_i     (out_ready),
-          .px_intensity_o (px_intensity),
-          .px_last_o      (px_last),
-          .px_tag_o       (px_tag)
+          `SPECULAR_PX_MAP(px_, , )
         );
       end else begin : gen_system
         specular_system #(
@@ -298,11 +285,7 @@ module fpga_ooc #(
           .clk_i          (clk_i),
           .rst_ni         (core_rst_n),
           `SPECULAR_GEO_MAP(geo_, , ),
-          .px_valid_o     (px_valid),
-          .px_ready_i     (out_ready),
-          .px_intensity_o (px_intensity),
-          .px_last_o      (px_last),
-          .px_tag_o       (px_tag)
+          `SPECULAR_PX_MAP(px_, , )
         );
       end
     end

@@ -14,6 +14,13 @@
 //                                        span_valid``I .. to the signals P``valid``PI, ...,
 //                                        span_ready``O to P``ready``PO
 //   `SPECULAR_SPAN_DATA(P, I)            the descriptor {c, psi0, dpsi, n, len, tag}
+//
+// The pixel interface (docs/interfaces.md#stream-interface-specular_stream), the output of
+// specular_stream, phong_stream and specular_system and of their harnesses:
+//   `SPECULAR_PX_PORTS                   px_valid_o, px_ready_i, px_intensity_o (CBits),
+//                                        px_last_o, px_tag_o; no comma at either end
+//   `SPECULAR_PX_MAP(P, I, O)            their connections to P``valid``O, P``ready``I, ...
+//   `SPECULAR_PX_PORT_MAP                the pass-through map, (px_, _i, _o)
 
 `ifndef SPECULAR_SPAN_PORTS_SVH
 `define SPECULAR_SPAN_PORTS_SVH
@@ -39,5 +46,21 @@
   .span_tag``I   (P``tag``PI)
 
 `define SPECULAR_SPAN_DATA(P, I) {P``c``I, P``psi0``I, P``dpsi``I, P``n``I, P``len``I, P``tag``I}
+
+`define SPECULAR_PX_PORTS \
+  output logic                 px_valid_o, \
+  input  logic                 px_ready_i, \
+  output logic [CBits-1:0]     px_intensity_o, \
+  output logic                 px_last_o, \
+  output logic [TagBits-1:0]   px_tag_o
+
+`define SPECULAR_PX_MAP(P, I, O) \
+  .px_valid_o     (P``valid``O), \
+  .px_ready_i     (P``ready``I), \
+  .px_intensity_o (P``intensity``O), \
+  .px_last_o      (P``last``O), \
+  .px_tag_o       (P``tag``O)
+
+`define SPECULAR_PX_PORT_MAP `SPECULAR_PX_MAP(px_, _i, _o)
 
 `endif  // SPECULAR_SPAN_PORTS_SVH

@@ -39,11 +39,7 @@ module specular_system #(
   input  logic                 clk_i,
   input  logic                 rst_ni,
   `SPECULAR_GEO_PORTS,
-  output logic                 px_valid_o,
-  input  logic                 px_ready_i,
-  output logic [CBits-1:0]     px_intensity_o,
-  output logic                 px_last_o,
-  output logic [TagBits-1:0]   px_tag_o
+  `SPECULAR_PX_PORTS
 );
 
   // specular_setup produces the registers in the default formats (16-bit C with 15
@@ -88,11 +84,7 @@ module specular_system #(
     .clk_i          (clk_i),
     .rst_ni         (rst_ni),
     `SPECULAR_SPAN_MAP(_i, _o, span_, , ),
-    .px_valid_o     (px_valid_o),
-    .px_ready_i     (px_ready_i),
-    .px_intensity_o (px_intensity_o),
-    .px_last_o      (px_last_o),
-    .px_tag_o       (px_tag_o)
+    `SPECULAR_PX_PORT_MAP
   );
 
   logic [2:0] unused_status;

@@ -27,6 +27,7 @@
 
 `include "specular_assert.svh"
 `include "specular_geo_ports.svh"
+`include "specular_span_ports.svh"
 
 module phong_stream #(
   parameter int VecBits       = 18,
@@ -53,11 +54,7 @@ module phong_stream #(
   input  logic                   clk_i,
   input  logic                   rst_ni,
   `SPECULAR_GEO_PORTS,
-  output logic                   px_valid_o,
-  input  logic                   px_ready_i,
-  output logic [CBits-1:0]       px_intensity_o,
-  output logic                   px_last_o,
-  output logic [TagBits-1:0]     px_tag_o
+  `SPECULAR_PX_PORTS
 );
 
   localparam int AccBits   = VecBits + LenBits;

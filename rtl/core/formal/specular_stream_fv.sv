@@ -68,11 +68,7 @@ module specular_stream_fv #(
   input  logic                 clk_i,
   input  logic                 rst_ni,
   `SPECULAR_SPAN_PORTS(input, output, _i, _o),
-  input  logic                 px_ready_i,
-  output logic                 px_valid_o,
-  output logic [CBits-1:0]     px_intensity_o,
-  output logic                 px_last_o,
-  output logic [TagBits-1:0]   px_tag_o
+  `SPECULAR_PX_PORTS
 );
 
   specular_stream #(
@@ -82,11 +78,7 @@ module specular_stream_fv #(
     .clk_i          (clk_i),
     .rst_ni         (rst_ni),
     `SPECULAR_SPAN_MAP(_i, _o, span_, _i, _o),
-    .px_valid_o     (px_valid_o),
-    .px_ready_i     (px_ready_i),
-    .px_intensity_o (px_intensity_o),
-    .px_last_o      (px_last_o),
-    .px_tag_o       (px_tag_o)
+    `SPECULAR_PX_PORT_MAP
   );
 
 `ifdef FORMAL

@@ -55,6 +55,7 @@
 
 `include "formal/specular_fv.svh"
 `include "specular_geo_ports.svh"
+`include "specular_span_ports.svh"
 
 module phong_stream_fv #(
   parameter int VecBits       = 2,
@@ -82,11 +83,7 @@ module phong_stream_fv #(
   input  logic                 clk_i,
   input  logic                 rst_ni,
   `SPECULAR_GEO_PORTS,
-  output logic                 px_valid_o,
-  input  logic                 px_ready_i,
-  output logic [CBits-1:0]     px_intensity_o,
-  output logic                 px_last_o,
-  output logic [TagBits-1:0]   px_tag_o,
+  `SPECULAR_PX_PORTS,
   // P3: the number of the tracked span (held constant by an assumption).
   input  logic [$clog2(Depth + SpDepth + 3)-1:0] f_k_i
 );
@@ -115,11 +112,7 @@ module phong_stream_fv #(
     .clk_i          (clk_i),
     .rst_ni         (rst_ni),
     `SPECULAR_GEO_PORT_MAP,
-    .px_valid_o     (px_valid_o),
-    .px_ready_i     (px_ready_i),
-    .px_intensity_o (px_intensity_o),
-    .px_last_o      (px_last_o),
-    .px_tag_o       (px_tag_o)
+    `SPECULAR_PX_PORT_MAP
   );
 
 `ifdef FORMAL
