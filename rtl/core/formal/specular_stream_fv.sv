@@ -197,22 +197,13 @@ module specular_stream_fv #(
   // P4: no bubble with spans always offered and ready always high
   // ---------------------------------------------------------------------------------
   logic [StreakBits-1:0] streak_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      streak_q <= '0;
-    end else if (span_valid_i && px_ready_i) begin
-      if (streak_q != StreakBits'(StreakMax)) begin
-        streak_q <= streak_q + 1'b1;
-      end
-    end else begin
-      streak_q <= '0;
-    end
-  end
-  always_comb begin
-    if (rst_ni && streak_q == StreakBits'(StreakMax)) begin
-      assert (px_valid_o);
-    end
-  end
+  specular_streak_props #(.Max(StreakMax), .CBits(StreakBits)) u_rate (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .cond_i  (span_valid_i && px_ready_i),
+    .ok_i    (px_valid_o),
+    .count_o (streak_q)
+  );
 
 `ifndef FV_PROPERTIES_ONLY
   // ---------------------------------------------------------------------------------

@@ -159,44 +159,25 @@ module specular_setup_fv #(
   // P2: valid does not wait for ready
   // ---------------------------------------------------------------------------------
   logic [StreakBits-1:0] lo_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      lo_q <= '0;
-    end else if (!span_ready_i && n_acc_q != n_out_q) begin
-      if (lo_q != StreakBits'(Latency)) begin
-        lo_q <= lo_q + 1'b1;
-      end
-    end else begin
-      lo_q <= '0;
-    end
-  end
-  always_comb begin
-    if (rst_ni && lo_q == StreakBits'(Latency)) begin
-      assert (span_valid_o);
-    end
-  end
+  specular_streak_props #(.Max(Latency), .CBits(StreakBits)) u_no_wait (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .cond_i  (!span_ready_i && n_acc_q != n_out_q),
+    .ok_i    (span_valid_o),
+    .count_o (lo_q)
+  );
 
   // ---------------------------------------------------------------------------------
   // P6: one span per clock
   // ---------------------------------------------------------------------------------
   logic [StreakBits-1:0] streak_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      streak_q <= '0;
-    end else if (geo_valid_i && span_ready_i) begin
-      if (streak_q != StreakBits'(StreakMax)) begin
-        streak_q <= streak_q + 1'b1;
-      end
-    end else begin
-      streak_q <= '0;
-    end
-  end
-  always_comb begin
-    if (rst_ni && streak_q == StreakBits'(StreakMax)) begin
-      assert (span_valid_o);
-      assert (geo_ready_o);
-    end
-  end
+  specular_streak_props #(.Max(StreakMax), .CBits(StreakBits)) u_rate (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .cond_i  (geo_valid_i && span_ready_i),
+    .ok_i    (span_valid_o && geo_ready_o),
+    .count_o (streak_q)
+  );
 
 `ifndef FV_PROPERTIES_ONLY
   // ---------------------------------------------------------------------------------
