@@ -69,6 +69,7 @@
 
 `include "specular_assert.svh"
 `include "specular_params.svh"
+`include "specular_axil_ports.svh"
 
 module specular_axil #(
   `SPECULAR_CORE_PARAMS,
@@ -80,25 +81,7 @@ module specular_axil #(
   input  logic                 rst_ni,
 
   // AXI4-Lite slave
-  input  logic [AddrWidth-1:0] s_axil_awaddr,
-  input  logic [2:0]           s_axil_awprot,
-  input  logic                 s_axil_awvalid,
-  output logic                 s_axil_awready,
-  input  logic [31:0]          s_axil_wdata,
-  input  logic [3:0]           s_axil_wstrb,
-  input  logic                 s_axil_wvalid,
-  output logic                 s_axil_wready,
-  output logic [1:0]           s_axil_bresp,
-  output logic                 s_axil_bvalid,
-  input  logic                 s_axil_bready,
-  input  logic [AddrWidth-1:0] s_axil_araddr,
-  input  logic [2:0]           s_axil_arprot,
-  input  logic                 s_axil_arvalid,
-  output logic                 s_axil_arready,
-  output logic [31:0]          s_axil_rdata,
-  output logic [1:0]           s_axil_rresp,
-  output logic                 s_axil_rvalid,
-  input  logic                 s_axil_rready,
+  `SPECULAR_AXIL_PORTS,
 
   // AXI4-Stream master: pixels (as specular_axis)
   output logic [((CBits + 7) / 8) * 8-1:0] m_axis_px_tdata,

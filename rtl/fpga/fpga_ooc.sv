@@ -43,6 +43,7 @@
 `include "specular_assert.svh"
 `include "specular_geo_ports.svh"
 `include "specular_span_ports.svh"
+`include "specular_axil_ports.svh"
 
 module fpga_ooc #(
   parameter int Top       = 1,   // the core: 0 specular_unit, 1 specular_stream, 2 specular_axil,
@@ -183,25 +184,7 @@ module fpga_ooc #(
     ) u_core (
       .clk_i            (clk_i),
       .rst_ni           (core_rst_n),
-      .s_axil_awaddr    (awaddr),
-      .s_axil_awprot    (awprot),
-      .s_axil_awvalid   (awvalid),
-      .s_axil_awready   (awready),
-      .s_axil_wdata     (wdata),
-      .s_axil_wstrb     (wstrb),
-      .s_axil_wvalid    (wvalid),
-      .s_axil_wready    (wready),
-      .s_axil_bresp     (bresp),
-      .s_axil_bvalid    (bvalid),
-      .s_axil_bready    (bready),
-      .s_axil_araddr    (araddr),
-      .s_axil_arprot    (arprot),
-      .s_axil_arvalid   (arvalid),
-      .s_axil_arready   (arready),
-      .s_axil_rdata     (rdata),
-      .s_axil_rresp     (rresp),
-      .s_axil_rvalid    (rvalid),
-      .s_axil_rready    (rready),
+      `SPECULAR_AXIL_MAP(),
       .m_axis_px_tdata  (px_tdata),
       .m_axis_px_tvalid (px_tvalid),
       .m_axis_px_tready (px_tready),
