@@ -84,11 +84,7 @@ module specular_axil #(
   `SPECULAR_AXIL_PORTS,
 
   // AXI4-Stream master: pixels (as specular_axis)
-  output logic [((CBits + 7) / 8) * 8-1:0] m_axis_px_tdata,
-  output logic                             m_axis_px_tvalid,
-  input  logic                             m_axis_px_tready,
-  output logic                             m_axis_px_tlast,
-  output logic [TagBits-1:0]               m_axis_px_tuser,
+  `SPECULAR_AXIS_PX_PORTS,
 
   output logic                 irq_o
 );
@@ -423,11 +419,7 @@ module specular_axil #(
     .s_axis_span_tuser  (fifo_head[FifoWidth-1 -: TagBits]),
     .s_axis_span_tvalid (level_q != '0),
     .s_axis_span_tready (core_span_tready),
-    .m_axis_px_tdata    (m_axis_px_tdata),
-    .m_axis_px_tlast    (m_axis_px_tlast),
-    .m_axis_px_tuser    (m_axis_px_tuser),
-    .m_axis_px_tvalid   (m_axis_px_tvalid),
-    .m_axis_px_tready   (m_axis_px_tready)
+    `SPECULAR_AXIS_PX_MAP(m_axis_px_)
   );
 
   assign px_fire    = m_axis_px_tvalid && m_axis_px_tready;

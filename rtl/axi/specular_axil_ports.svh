@@ -1,7 +1,7 @@
 // SPDX-License-Identifier: Apache-2.0
 //
-// The AXI4-Lite slave port of specular_axil (docs/interfaces.md#axi4-lite-register-interface-specular_axil),
-// written once for the module, its formal harness (rtl/axi/formal/specular_axil_fv.sv) and
+// The AXI4-Lite slave port of specular_axil
+// (docs/interfaces.md#axi4-lite-register-interface-specular_axil), written once for the module, its formal harness (rtl/axi/formal/specular_axil_fv.sv) and
 // the out-of-context harness (rtl/fpga/fpga_ooc.sv). A module that uses these macros names
 // its address width AddrWidth; the data is 32 bits.
 //
@@ -9,6 +9,12 @@
 //                           either end
 //   `SPECULAR_AXIL_MAP(P)   their named connections to P``awaddr .. P``rready: s_axil_ maps
 //                           them through, an empty P to local signals awaddr, ...
+//
+// The AXI4-Stream pixel master of specular_axis and specular_axil
+// (docs/interfaces.md#axi4-stream-wrapper-specular_axis), CBits and TagBits wide:
+//   `SPECULAR_AXIS_PX_PORTS   m_axis_px_tdata (CBits rounded up to whole bytes), _tlast,
+//                             _tuser (the tag), _tvalid, _tready
+//   `SPECULAR_AXIS_PX_MAP(P)  their connections to P``tdata .. P``tready
 
 `ifndef SPECULAR_AXIL_PORTS_SVH
 `define SPECULAR_AXIL_PORTS_SVH
@@ -54,5 +60,19 @@
   .s_axil_rresp   (P``rresp), \
   .s_axil_rvalid  (P``rvalid), \
   .s_axil_rready  (P``rready)
+
+`define SPECULAR_AXIS_PX_PORTS \
+  output logic [((CBits + 7) / 8) * 8-1:0] m_axis_px_tdata, \
+  output logic                             m_axis_px_tlast, \
+  output logic [TagBits-1:0]               m_axis_px_tuser, \
+  output logic                             m_axis_px_tvalid, \
+  input  logic                             m_axis_px_tready
+
+`define SPECULAR_AXIS_PX_MAP(P) \
+  .m_axis_px_tdata  (P``tdata), \
+  .m_axis_px_tlast  (P``tlast), \
+  .m_axis_px_tuser  (P``tuser), \
+  .m_axis_px_tvalid (P``tvalid), \
+  .m_axis_px_tready (P``tready)
 
 `endif  // SPECULAR_AXIL_PORTS_SVH

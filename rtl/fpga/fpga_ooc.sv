@@ -185,11 +185,7 @@ module fpga_ooc #(
       .clk_i            (clk_i),
       .rst_ni           (core_rst_n),
       `SPECULAR_AXIL_MAP(),
-      .m_axis_px_tdata  (px_tdata),
-      .m_axis_px_tvalid (px_tvalid),
-      .m_axis_px_tready (px_tready),
-      .m_axis_px_tlast  (px_tlast),
-      .m_axis_px_tuser  (px_tuser),
+      `SPECULAR_AXIS_PX_MAP(px_),
       .irq_o            (irq)
     );
   end else if (Top == TopPhong || Top == TopSetup || Top == TopSystem) begin : gen_geo

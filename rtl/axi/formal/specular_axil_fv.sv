@@ -52,11 +52,7 @@ module specular_axil_fv #(
   input  logic                 clk_i,
   input  logic                 rst_ni,
   `SPECULAR_AXIL_PORTS,
-  output logic [((CBits + 7) / 8) * 8-1:0] m_axis_px_tdata,
-  output logic                 m_axis_px_tvalid,
-  input  logic                 m_axis_px_tready,
-  output logic                 m_axis_px_tlast,
-  output logic [TagBits-1:0]   m_axis_px_tuser,
+  `SPECULAR_AXIS_PX_PORTS,
   output logic                 irq_o
 );
 
@@ -69,11 +65,7 @@ module specular_axil_fv #(
     .clk_i            (clk_i),
     .rst_ni           (rst_ni),
     `SPECULAR_AXIL_MAP(s_axil_),
-    .m_axis_px_tdata  (m_axis_px_tdata),
-    .m_axis_px_tvalid (m_axis_px_tvalid),
-    .m_axis_px_tready (m_axis_px_tready),
-    .m_axis_px_tlast  (m_axis_px_tlast),
-    .m_axis_px_tuser  (m_axis_px_tuser),
+    `SPECULAR_AXIS_PX_MAP(m_axis_px_),
     .irq_o            (irq_o)
   );
 
