@@ -1,7 +1,7 @@
 # SPDX-License-Identifier: Apache-2.0
 #
 # The unbounded proof with ABC (yosys-abc, which comes with Yosys) on the AIGER of a formal
-# model. Sourced by scripts/formal.sh, scripts/formal_phong.sh and scripts/formal_setup.sh;
+# model. Sourced by scripts/formal.sh, the formal driver;
 # the flow, what was measured and how a false property fails it:
 # docs/formal.md#run-time.
 #

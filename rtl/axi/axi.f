@@ -4,5 +4,6 @@
 // Format and use: rtl/README.md#filelists.
 
 -f rtl/core/core.f
++incdir+rtl/axi
 rtl/axi/specular_axis.sv
 rtl/axi/specular_axil.sv

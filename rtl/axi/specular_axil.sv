@@ -69,6 +69,7 @@
 
 `include "specular_assert.svh"
 `include "specular_params.svh"
+`include "specular_axil_ports.svh"
 
 module specular_axil #(
   `SPECULAR_CORE_PARAMS,
@@ -80,32 +81,10 @@ module specular_axil #(
   input  logic                 rst_ni,
 
   // AXI4-Lite slave
-  input  logic [AddrWidth-1:0] s_axil_awaddr,
-  input  logic [2:0]           s_axil_awprot,
-  input  logic                 s_axil_awvalid,
-  output logic                 s_axil_awready,
-  input  logic [31:0]          s_axil_wdata,
-  input  logic [3:0]           s_axil_wstrb,
-  input  logic                 s_axil_wvalid,
-  output logic                 s_axil_wready,
-  output logic [1:0]           s_axil_bresp,
-  output logic                 s_axil_bvalid,
-  input  logic                 s_axil_bready,
-  input  logic [AddrWidth-1:0] s_axil_araddr,
-  input  logic [2:0]           s_axil_arprot,
-  input  logic                 s_axil_arvalid,
-  output logic                 s_axil_arready,
-  output logic [31:0]          s_axil_rdata,
-  output logic [1:0]           s_axil_rresp,
-  output logic                 s_axil_rvalid,
-  input  logic                 s_axil_rready,
+  `SPECULAR_AXIL_PORTS,
 
   // AXI4-Stream master: pixels (as specular_axis)
-  output logic [((CBits + 7) / 8) * 8-1:0] m_axis_px_tdata,
-  output logic                             m_axis_px_tvalid,
-  input  logic                             m_axis_px_tready,
-  output logic                             m_axis_px_tlast,
-  output logic [TagBits-1:0]               m_axis_px_tuser,
+  `SPECULAR_AXIS_PX_PORTS,
 
   output logic                 irq_o
 );
@@ -145,7 +124,7 @@ module specular_axil #(
   localparam int ErrFull   = 1;
 
   // Build information: the core's latency (specular_pkg, docs/pipeline.md#stage-counts); the
-  // testbench checks it against the measured latency.
+  // testbench checks it against the latency it observes.
   localparam int Latency     = specular_pkg::stream_latency(PsiMulFrac, CosDeltaBits, CosDataBits);
   localparam int CosWordBits = CosInterp ? CosDataBits + 1 + CosDeltaBits : CosDataBits;
   localparam int RomBits     = NumBanks * (2 ** CosAddrBits) * CosWordBits;
@@ -440,11 +419,7 @@ module specular_axil #(
     .s_axis_span_tuser  (fifo_head[FifoWidth-1 -: TagBits]),
     .s_axis_span_tvalid (level_q != '0),
     .s_axis_span_tready (core_span_tready),
-    .m_axis_px_tdata    (m_axis_px_tdata),
-    .m_axis_px_tlast    (m_axis_px_tlast),
-    .m_axis_px_tuser    (m_axis_px_tuser),
-    .m_axis_px_tvalid   (m_axis_px_tvalid),
-    .m_axis_px_tready   (m_axis_px_tready)
+    `SPECULAR_AXIS_PX_MAP(m_axis_px_)
   );
 
   assign px_fire    = m_axis_px_tvalid && m_axis_px_tready;

@@ -30,6 +30,7 @@
 // specular_stream's span_ready_o.
 
 `include "specular_params.svh"
+`include "specular_axil_ports.svh"
 
 module specular_axis #(
   `SPECULAR_CORE_PARAMS,
@@ -43,11 +44,7 @@ module specular_axis #(
   input  logic               s_axis_span_tvalid,
   output logic               s_axis_span_tready,
 
-  output logic [((CBits + 7) / 8) * 8-1:0] m_axis_px_tdata,
-  output logic                             m_axis_px_tlast,
-  output logic [TagBits-1:0]               m_axis_px_tuser,
-  output logic                             m_axis_px_tvalid,
-  input  logic                             m_axis_px_tready
+  `SPECULAR_AXIS_PX_PORTS
 );
 
   // Descriptor layout: bit offsets of each field in s_axis_span_tdata (read by testbenches).

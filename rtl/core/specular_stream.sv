@@ -51,7 +51,8 @@
 //                 (output 27)
 //   output buffer two entries (specular_out_buf): the pixel handshake
 // (each block's stage count follows its parameters: specular_pkg, docs/pipeline.md#stage-counts).
-// Every stage holds at most one carry chain, which is what an iCE40 needs for 100 MHz.
+// Every stage holds at most one carry chain: the clock period is bounded by one adder and
+// its routing, never by two adders in series (rtl/fpga/README.md).
 // C, the tag, the bank and the n-valid flag of each pixel travel beside it (specular_delay), so every
 // pixel uses its own span's values while consecutive spans overlap in the pipeline.
 // Register 3 (psi0) is the span bus itself: mux 7 takes psi0 straight from span_psi0_i.
@@ -65,6 +66,7 @@
 
 `include "specular_assert.svh"
 `include "specular_params.svh"
+`include "specular_span_ports.svh"
 
 module specular_stream #(
   `SPECULAR_CORE_PARAMS,
@@ -72,19 +74,8 @@ module specular_stream #(
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
-  input  logic                 span_valid_i,
-  output logic                 span_ready_o,
-  input  logic [CBits-1:0]     span_c_i,
-  input  logic [AngleBits-1:0] span_psi0_i,
-  input  logic [AngleBits-1:0] span_dpsi_i,
-  input  logic [NBits-1:0]     span_n_i,
-  input  logic [LenBits-1:0]   span_len_i,
-  input  logic [TagBits-1:0]   span_tag_i,
-  output logic                 px_valid_o,
-  input  logic                 px_ready_i,
-  output logic [CBits-1:0]     px_intensity_o,
-  output logic                 px_last_o,
-  output logic [TagBits-1:0]   px_tag_o
+  `SPECULAR_SPAN_PORTS(input, output, _i, _o),
+  `SPECULAR_PX_PORTS
 );
 
   // Stage counts of the blocks and of the whole pipeline: specular_pkg, their one

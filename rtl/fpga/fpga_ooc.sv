@@ -43,6 +43,9 @@
 // copy here.
 
 `include "specular_assert.svh"
+`include "specular_geo_ports.svh"
+`include "specular_span_ports.svh"
+`include "specular_axil_ports.svh"
 
 module fpga_ooc #(
   parameter int Top       = 1,   // the core: 0 specular_unit, 1 specular_stream, 2 specular_axil,
@@ -76,7 +79,7 @@ module fpga_ooc #(
   localparam int InBits  = (Top == TopUnit)   ? 5 + CBits + 2 * AngleBits + NBits + LenBits + 1
                          : (Top == TopStream) ? 2 + CBits + 2 * AngleBits + NBits + LenBits + TagBits
                          : (Top == TopPhong || Top == TopSetup || Top == TopSystem)
-                                              ? 2 + 12 * VecBits + NBits + LenBits + CBits + TagBits
+                                              ? 2 + `SPECULAR_GEO_DATA_BITS
                          : (Top == TopMul)    ? 2 * MulBits
                          :                     2 * AddrWidth + 48;
   localparam int OutBits = (Top == TopUnit)   ? CBits + 2
@@ -140,13 +143,13 @@ module fpga_ooc #(
     );
   end else if (Top == TopStream) begin : gen_stream
     logic                 span_valid, span_ready, px_valid, px_ready, px_last;
-    logic [CBits-1:0]     c, px_intensity;
-    logic [AngleBits-1:0] psi0, dpsi;
-    logic [NBits-1:0]     n;
-    logic [LenBits-1:0]   len;
-    logic [TagBits-1:0]   tag, px_tag;
+    logic [CBits-1:0]     span_c, px_intensity;
+    logic [AngleBits-1:0] span_psi0, span_dpsi;
+    logic [NBits-1:0]     span_n;
+    logic [LenBits-1:0]   span_len;
+    logic [TagBits-1:0]   span_tag, px_tag;
 
-    assign {span_valid, c, psi0, dpsi, n, len, tag, px_ready} = core_in;
+    assign {span_valid, `SPECULAR_SPAN_DATA(span_, ), px_ready} = core_in;
     assign core_out = {span_ready, px_valid, px_intensity, px_last, px_tag};
 
     specular_stream #(
@@ -158,19 +161,8 @@ module fpga_ooc #(
     ) u_core (
       .clk_i          (clk_i),
       .rst_ni         (core_rst_n),
-      .span_valid_i   (span_valid),
-      .span_ready_o   (span_ready),
-      .span_c_i       (c),
-      .span_psi0_i    (psi0),
-      .span_dpsi_i    (dpsi),
-      .span_n_i       (n),
-      .span_len_i     (len),
-      .span_tag_i     (tag),
-      .px_valid_o     (px_valid),
-      .px_ready_i     (px_ready),
-      .px_intensity_o (px_intensity),
-      .px_last_o      (px_last),
-      .px_tag_o       (px_tag)
+      `SPECULAR_SPAN_MAP(_i, _o, span_, , ),
+      `SPECULAR_PX_MAP(px_, , )
     );
   end else if (Top == TopAxil) begin : gen_axil
     logic                 awvalid, awready, wvalid, wready, bvalid, bready;
@@ -199,147 +191,90 @@ module fpga_ooc #(
     ) u_core (
       .clk_i            (clk_i),
       .rst_ni           (core_rst_n),
-      .s_axil_awaddr    (awaddr),
-      .s_axil_awprot    (awprot),
-      .s_axil_awvalid   (awvalid),
-      .s_axil_awready   (awready),
-      .s_axil_wdata     (wdata),
-      .s_axil_wstrb     (wstrb),
-      .s_axil_wvalid    (wvalid),
-      .s_axil_wready    (wready),
-      .s_axil_bresp     (bresp),
-      .s_axil_bvalid    (bvalid),
-      .s_axil_bready    (bready),
-      .s_axil_araddr    (araddr),
-      .s_axil_arprot    (arprot),
-      .s_axil_arvalid   (arvalid),
-      .s_axil_arready   (arready),
-      .s_axil_rdata     (rdata),
-      .s_axil_rresp     (rresp),
-      .s_axil_rvalid    (rvalid),
-      .s_axil_rready    (rready),
-      .m_axis_px_tdata  (px_tdata),
-      .m_axis_px_tvalid (px_tvalid),
-      .m_axis_px_tready (px_tready),
-      .m_axis_px_tlast  (px_tlast),
-      .m_axis_px_tuser  (px_tuser),
+      `SPECULAR_AXIL_MAP(),
+      `SPECULAR_AXIS_PX_MAP(px_),
       .irq_o            (irq)
     );
-  end else if (Top == TopPhong) begin : gen_phong
-    logic                 geo_valid, geo_ready, px_valid, px_ready, px_last;
-    logic [3*VecBits-1:0] n1, n2, h1, he;
-    logic [NBits-1:0]     n;
-    logic [LenBits-1:0]   len;
-    logic [CBits-1:0]     scale, px_intensity;
-    logic [TagBits-1:0]   tag, px_tag;
+  end else if (Top == TopPhong || Top == TopSetup || Top == TopSystem) begin : gen_geo
+    // The geometry span side (rtl/prim/specular_geo_ports.svh), then the ready of the
+    // core's output side (px_ready or span_ready).
+    logic                 geo_valid, geo_ready, out_ready;
+    logic [3*VecBits-1:0] geo_n1, geo_n2, geo_h1, geo_he;
+    logic [NBits-1:0]     geo_n;
+    logic [LenBits-1:0]   geo_len;
+    logic [CBits-1:0]     geo_scale;
+    logic [TagBits-1:0]   geo_tag;
 
-    assign {geo_valid, n1, n2, h1, he, n, len, scale, tag, px_ready} = core_in;
-    assign core_out = {geo_ready, px_valid, px_intensity, px_last, px_tag};
+    assign {geo_valid, `SPECULAR_GEO_DATA(geo_, ), out_ready} = core_in;
 
-    phong_stream #(
-      .VecBits (VecBits),
-      .LenBits (LenBits),
-      .NBits   (NBits),
-      .CBits   (CBits),
-      .TagBits (TagBits)
-    ) u_core (
-      .clk_i          (clk_i),
-      .rst_ni         (core_rst_n),
-      .geo_valid_i    (geo_valid),
-      .geo_ready_o    (geo_ready),
-      .geo_n1_i       (n1),
-      .geo_n2_i       (n2),
-      .geo_h1_i       (h1),
-      .geo_he_i       (he),
-      .geo_n_i        (n),
-      .geo_len_i      (len),
-      .geo_scale_i    (scale),
-      .geo_tag_i      (tag),
-      .px_valid_o     (px_valid),
-      .px_ready_i     (px_ready),
-      .px_intensity_o (px_intensity),
-      .px_last_o      (px_last),
-      .px_tag_o       (px_tag)
-    );
-  end else if (Top == TopSetup) begin : gen_setup
-    logic                 geo_valid, geo_ready, span_valid, span_ready;
-    logic [3*VecBits-1:0] n1, n2, h1, he;
-    logic [NBits-1:0]     n, span_n;
-    logic [LenBits-1:0]   len, span_len;
-    logic [CBits-1:0]     scale, span_c;
-    logic [AngleBits-1:0] span_psi0, span_dpsi;
-    logic [TagBits-1:0]   tag, span_tag;
-    logic [2:0]           span_status;
+    if (Top == TopSetup) begin : gen_setup
+      logic                 span_valid;
+      logic [NBits-1:0]     span_n;
+      logic [LenBits-1:0]   span_len;
+      logic [CBits-1:0]     span_c;
+      logic [AngleBits-1:0] span_psi0, span_dpsi;
+      logic [TagBits-1:0]   span_tag;
+      logic [2:0]           span_status;
 
-    assign {geo_valid, n1, n2, h1, he, n, len, scale, tag, span_ready} = core_in;
-    assign core_out = {geo_ready, span_valid, span_c, span_psi0, span_dpsi, span_n, span_len,
-                       span_tag, span_status};
+      assign core_out = {geo_ready, span_valid, span_c, span_psi0, span_dpsi, span_n, span_len,
+                         span_tag, span_status};
 
-    // specular_setup's register widths are fixed (C 16, angles 32, n 10, l 11): with other
-    // CBits, AngleBits, NBits or LenBits the port widths differ and elaboration says so.
-    specular_setup #(
-      .VecBits (VecBits),
-      .TagBits (TagBits)
-    ) u_core (
-      .clk_i         (clk_i),
-      .rst_ni        (core_rst_n),
-      .geo_valid_i   (geo_valid),
-      .geo_ready_o   (geo_ready),
-      .geo_n1_i      (n1),
-      .geo_n2_i      (n2),
-      .geo_h1_i      (h1),
-      .geo_he_i      (he),
-      .geo_n_i       (n),
-      .geo_len_i     (len),
-      .geo_scale_i   (scale),
-      .geo_tag_i     (tag),
-      .span_valid_o  (span_valid),
-      .span_ready_i  (span_ready),
-      .span_c_o      (span_c),
-      .span_psi0_o   (span_psi0),
-      .span_dpsi_o   (span_dpsi),
-      .span_n_o      (span_n),
-      .span_len_o    (span_len),
-      .span_tag_o    (span_tag),
-      .span_status_o (span_status)
-    );
-  end else if (Top == TopSystem) begin : gen_system
-    logic                 geo_valid, geo_ready, px_valid, px_ready, px_last;
-    logic [3*VecBits-1:0] n1, n2, h1, he;
-    logic [NBits-1:0]     n;
-    logic [LenBits-1:0]   len;
-    logic [CBits-1:0]     scale, px_intensity;
-    logic [TagBits-1:0]   tag, px_tag;
+      // specular_setup's register widths are fixed (C 16, angles 32, n 10, l 11): with other
+      // CBits, AngleBits, NBits or LenBits the port widths differ and elaboration says so.
+      specular_setup #(
+        .VecBits (VecBits),
+        .TagBits (TagBits)
+      ) u_core (
+        .clk_i         (clk_i),
+        .rst_ni        (core_rst_n),
+        `SPECULAR_GEO_MAP(geo_, , ),
+        .span_valid_o  (span_valid),
+        .span_ready_i  (out_ready),
+        .span_c_o      (span_c),
+        .span_psi0_o   (span_psi0),
+        .span_dpsi_o   (span_dpsi),
+        .span_n_o      (span_n),
+        .span_len_o    (span_len),
+        .span_tag_o    (span_tag),
+        .span_status_o (span_status)
+      );
+    end else begin : gen_px
+      logic               px_valid, px_ready, px_last;
+      logic [CBits-1:0]   px_intensity;
+      logic [TagBits-1:0] px_tag;
 
-    assign {geo_valid, n1, n2, h1, he, n, len, scale, tag, px_ready} = core_in;
-    assign core_out = {geo_ready, px_valid, px_intensity, px_last, px_tag};
+      assign px_ready = out_ready;
+      assign core_out = {geo_ready, px_valid, px_intensity, px_last, px_tag};
 
-    specular_system #(
-      .CBits     (CBits),
-      .AngleBits (AngleBits),
-      .NBits     (NBits),
-      .LenBits   (LenBits),
-      .TagBits   (TagBits),
-      .VecBits   (VecBits)
-    ) u_core (
-      .clk_i          (clk_i),
-      .rst_ni         (core_rst_n),
-      .geo_valid_i    (geo_valid),
-      .geo_ready_o    (geo_ready),
-      .geo_n1_i       (n1),
-      .geo_n2_i       (n2),
-      .geo_h1_i       (h1),
-      .geo_he_i       (he),
-      .geo_n_i        (n),
-      .geo_len_i      (len),
-      .geo_scale_i    (scale),
-      .geo_tag_i      (tag),
-      .px_valid_o     (px_valid),
-      .px_ready_i     (px_ready),
-      .px_intensity_o (px_intensity),
-      .px_last_o      (px_last),
-      .px_tag_o       (px_tag)
-    );
+      if (Top == TopPhong) begin : gen_phong
+        phong_stream #(
+          .VecBits (VecBits),
+          .LenBits (LenBits),
+          .NBits   (NBits),
+          .CBits   (CBits),
+          .TagBits (TagBits)
+        ) u_core (
+          .clk_i          (clk_i),
+          .rst_ni         (core_rst_n),
+          `SPECULAR_GEO_MAP(geo_, , ),
+          `SPECULAR_PX_MAP(px_, , )
+        );
+      end else begin : gen_system
+        specular_system #(
+          .CBits     (CBits),
+          .AngleBits (AngleBits),
+          .NBits     (NBits),
+          .LenBits   (LenBits),
+          .TagBits   (TagBits),
+          .VecBits   (VecBits)
+        ) u_core (
+          .clk_i          (clk_i),
+          .rst_ni         (core_rst_n),
+          `SPECULAR_GEO_MAP(geo_, , ),
+          `SPECULAR_PX_MAP(px_, , )
+        );
+      end
+    end
   end else if (Top == TopMul) begin : gen_mul
     logic [MulBits-1:0] a, b, a_q, b_q;
     logic [MulBits+1:0] a3_q;

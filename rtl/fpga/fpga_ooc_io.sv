@@ -5,8 +5,8 @@
 // (rtl/fpga/README.md). Not part of the device.
 //
 // A core under test has far more input and output bits than an iCE40 package has pins
-// (about 110 to 120 inputs against 39 IO on a UP5K sg48), and timing measured out of
-// context must not include a pin: every core input and output passes through a
+// (a core has a hundred or more inputs, a small package a few dozen IO), and the timing out
+// of context must not include a pin: every core input and output passes through a
 // flip-flop here, all clocked by the core clock.
 //
 //   clk_i     the core clock

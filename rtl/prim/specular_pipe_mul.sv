@@ -7,8 +7,9 @@
 //
 // b is taken two bits at a time; each digit selects 0, a, 2a or 3a (a3_i, which the caller
 // computes a clock earlier, off this pipeline's path). The first stage only registers the
-// selected rows (a multiplexer, no carry chain: the AND in front of an adder costs the UP5K
-// its 50 MHz otherwise), then a binary tree of adders with a register after every level
+// selected rows (a multiplexer, no carry chain: an AND in front of the first adder would
+// put logic before its carry chain, on the longest path), then a binary tree of adders with
+// a register after every level
 // adds them, so no stage holds more than one carry chain. Stages:
 // specular_pkg::pipe_mul_stages(BBits) = 1 + clog2(ceil(BBits / 2)) (docs/pipeline.md#stage-counts);
 // the block checks at elaboration that the tree it builds has that many levels.

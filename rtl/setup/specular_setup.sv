@@ -11,9 +11,9 @@
 // Ports:
 //   clk_i, rst_ni                      clock; asynchronous reset, active low: drops every
 //                                      span in flight, the setup is empty afterwards
-//   geo_valid_i, geo_ready_o           geometry span handshake
-//   geo_n1_i, geo_n2_i, geo_h1_i, geo_he_i  {z, y, x}, VecBits each, signed
-//   geo_n_i[10], geo_len_i[11], geo_scale_i[16], geo_tag_i[TagBits]
+//   geo_*                              the geometry span interface
+//                                      (rtl/prim/specular_geo_ports.svh; NBits 10,
+//                                      LenBits 11, CBits 16)
 //   span_valid_o, span_ready_i         span descriptor handshake (specular_stream's span side)
 //   span_c_o[16], span_psi0_o[32], span_dpsi_o[32], span_n_o[10], span_len_o[11], span_tag_o
 //   span_status_o[3]                   SetupStatus of scanline_setup.hpp: 0 ok, 1 invalid_input,
@@ -57,6 +57,8 @@
 // Patent block numbers do not apply: the patent leaves the setup to the host.
 
 `include "specular_assert.svh"
+`include "specular_geo_ports.svh"
+`include "specular_span_ports.svh"
 
 module specular_setup #(
   parameter int VecBits       = 18,
@@ -71,28 +73,19 @@ module specular_setup #(
   parameter     LogRecipFile  = "roms/setup/log_recip.hex",
   parameter     LogValueFile  = "roms/setup/log_value.hex",
   parameter     Exp2File      = "roms/setup/exp2.hex",
-  parameter     RecipLenFile  = "roms/setup/recip_len.hex"
+  parameter     RecipLenFile  = "roms/setup/recip_len.hex",
+  // The register formats of specular_stream's defaults (device::Format in
+  // model/device/device_model.hpp), which the golden model requires: the widths of the
+  // geometry ports (rtl/prim/specular_geo_ports.svh) and of the descriptor.
+  localparam int CBits        = 16,
+  localparam int AngleBits    = 32,
+  localparam int NBits        = 10,
+  localparam int LenBits      = 11
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
-  input  logic                 geo_valid_i,
-  output logic                 geo_ready_o,
-  input  logic [3*VecBits-1:0] geo_n1_i,
-  input  logic [3*VecBits-1:0] geo_n2_i,
-  input  logic [3*VecBits-1:0] geo_h1_i,
-  input  logic [3*VecBits-1:0] geo_he_i,
-  input  logic [9:0]           geo_n_i,
-  input  logic [10:0]          geo_len_i,
-  input  logic [15:0]          geo_scale_i,
-  input  logic [TagBits-1:0]   geo_tag_i,
-  output logic                 span_valid_o,
-  input  logic                 span_ready_i,
-  output logic [15:0]          span_c_o,
-  output logic [31:0]          span_psi0_o,
-  output logic [31:0]          span_dpsi_o,
-  output logic [9:0]           span_n_o,
-  output logic [10:0]          span_len_o,
-  output logic [TagBits-1:0]   span_tag_o,
+  `SPECULAR_GEO_PORTS,
+  `SPECULAR_SPAN_PORTS(output, input, _o, _i),
   output logic [2:0]           span_status_o
 );
 
@@ -115,13 +108,7 @@ module specular_setup #(
   localparam logic signed [CordicW-1:0] Pi = CordicW'(specular_setup_pkg::Pi);
   localparam logic signed [63:0] InvGain = specular_setup_pkg::InvGain;
 
-  // The register formats of specular_stream's defaults (device::Format in
-  // model/device/device_model.hpp), which the golden model requires.
-  localparam int CBits     = 16;
-  localparam int AngleBits = 32;
-  localparam int AngleFrac = 28;
-  localparam int NBits     = 10;
-  localparam int LenBits   = 11;
+  localparam int AngleFrac = 28;  // psi0 and dpsi: fraction bits (Format's)
   localparam int MaxN      = 1000;
   localparam int Up        = CordicFrac - UnitFrac;  // Q44 -> Q50
   // Sharing (docs/setup_hw.md#sharing-over-setupii-clocks). The normalizers of the codes:
@@ -510,8 +497,9 @@ module specular_setup #(
       n1_23 <= n1_22;
       // tau 24
       // W = H2 - x H1, or N1 - cos t1 H1 for opposite halfway vectors. Both arms are
-      // written out: Yosys' share pass merges their products into one (the same H1), and
-      // selecting the operands first instead cost 9 more MULT18X18D on the ECP5
+      // written out: Yosys' share pass merges their products into one (the same H1);
+      // operands selected first would hide that common operand behind a multiplexer, and
+      // each arm would keep multipliers of its own
       // (docs/setup_hw.md#sharing-over-setupii-clocks).
       w_q <= opp_h_23 ? {sub_scaled(n1_23.z, cos_t1_23, h1_23.z, UnitFrac), sub_scaled(n1_23.y, cos_t1_23, h1_23.y, UnitFrac),
                          sub_scaled(n1_23.x, cos_t1_23, h1_23.x, UnitFrac)}
@@ -714,7 +702,7 @@ module specular_setup #(
 
   // Assertions (rtl/prim/specular_assert.svh): the handshake inputs are known.
   `SPEC_ASSERT_KNOWN(GeoValidKnown_A, geo_valid_i, clk_i, rst_ni)
-  `SPEC_ASSERT_KNOWN_IF(GeoDataKnown_A, {geo_n1_i, geo_n2_i, geo_h1_i, geo_he_i, geo_n_i, geo_len_i, geo_scale_i},
-                        geo_valid_i && geo_ready_o, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(GeoDataKnown_A, `SPECULAR_GEO_DATA(geo_, _i), geo_valid_i && geo_ready_o,
+                        clk_i, rst_ni)
 
 endmodule

@@ -21,6 +21,8 @@
 
 `include "specular_assert.svh"
 `include "specular_params.svh"
+`include "specular_geo_ports.svh"
+`include "specular_span_ports.svh"
 
 module specular_system #(
   `SPECULAR_CORE_PARAMS,
@@ -36,21 +38,8 @@ module specular_system #(
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
-  input  logic                 geo_valid_i,
-  output logic                 geo_ready_o,
-  input  logic [3*VecBits-1:0] geo_n1_i,
-  input  logic [3*VecBits-1:0] geo_n2_i,
-  input  logic [3*VecBits-1:0] geo_h1_i,
-  input  logic [3*VecBits-1:0] geo_he_i,
-  input  logic [NBits-1:0]     geo_n_i,
-  input  logic [LenBits-1:0]   geo_len_i,
-  input  logic [CBits-1:0]     geo_scale_i,
-  input  logic [TagBits-1:0]   geo_tag_i,
-  output logic                 px_valid_o,
-  input  logic                 px_ready_i,
-  output logic [CBits-1:0]     px_intensity_o,
-  output logic                 px_last_o,
-  output logic [TagBits-1:0]   px_tag_o
+  `SPECULAR_GEO_PORTS,
+  `SPECULAR_PX_PORTS
 );
 
   // specular_setup produces the registers in the default formats (16-bit C with 15
@@ -83,24 +72,8 @@ module specular_system #(
   ) u_setup (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni),
-    .geo_valid_i   (geo_valid_i),
-    .geo_ready_o   (geo_ready_o),
-    .geo_n1_i      (geo_n1_i),
-    .geo_n2_i      (geo_n2_i),
-    .geo_h1_i      (geo_h1_i),
-    .geo_he_i      (geo_he_i),
-    .geo_n_i       (geo_n_i),
-    .geo_len_i     (geo_len_i),
-    .geo_scale_i   (geo_scale_i),
-    .geo_tag_i     (geo_tag_i),
-    .span_valid_o  (span_valid),
-    .span_ready_i  (span_ready),
-    .span_c_o      (span_c),
-    .span_psi0_o   (span_psi0),
-    .span_dpsi_o   (span_dpsi),
-    .span_n_o      (span_n),
-    .span_len_o    (span_len),
-    .span_tag_o    (span_tag),
+    `SPECULAR_GEO_PORT_MAP,
+    `SPECULAR_SPAN_MAP(_o, _i, span_, , ),
     .span_status_o (span_status)
   );
 
@@ -110,19 +83,8 @@ module specular_system #(
   ) u_stream (
     .clk_i          (clk_i),
     .rst_ni         (rst_ni),
-    .span_valid_i   (span_valid),
-    .span_ready_o   (span_ready),
-    .span_c_i       (span_c),
-    .span_psi0_i    (span_psi0),
-    .span_dpsi_i    (span_dpsi),
-    .span_n_i       (span_n),
-    .span_len_i     (span_len),
-    .span_tag_i     (span_tag),
-    .px_valid_o     (px_valid_o),
-    .px_ready_i     (px_ready_i),
-    .px_intensity_o (px_intensity_o),
-    .px_last_o      (px_last_o),
-    .px_tag_o       (px_tag_o)
+    `SPECULAR_SPAN_MAP(_i, _o, span_, , ),
+    `SPECULAR_PX_PORT_MAP
   );
 
   logic [2:0] unused_status;

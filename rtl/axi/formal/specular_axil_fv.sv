@@ -1,11 +1,10 @@
 // SPDX-License-Identifier: Apache-2.0
 //
 // specular_axil_fv: formal property harness of specular_axil's AXI4-Lite slave
-// (rtl/axi/specular_axil.sv; the rules in docs/interfaces.md). Run by scripts/formal_axil.sh
+// (rtl/axi/specular_axil.sv; the rules in docs/interfaces.md). Run by scripts/formal.sh axil
 // (ctests rtl_formal_axil and rtl_formal_axil_mutant): Yosys read_verilog -formal, the
 // stream core cut out (its outputs become free values every clock, so the proof holds
-// whatever the core does), Yosys sat -tempinduct: base case from reset plus induction, an
-// unbounded proof. Overview and figures: docs/formal.md.
+// whatever the core does), the unbounded proof (base case from reset and induction). Overview and figures: docs/formal.md.
 //
 // Reduced parameters: the stream core's and TagBits are those of specular_stream_fv.sv
 // (rtl/prim/formal/specular_fv.svh; the core is cut out anyway, they only keep
@@ -36,14 +35,14 @@
 //   P8 reset             after a reset, bvalid and rvalid are low (P1, P5 with counters
 //                        cleared by the reset)
 // Strengthening invariants (for induction, proven like the properties) tie the harness's
-// counters and recorded addresses to the slave's holding registers, read through probe
-// wires that scripts/formal_axil.sh connects to the flattened instance (Yosys has no
-// hierarchical references):
-//   p_aw_full = u_dut.aw_full_q   p_w_full = u_dut.w_full_q   p_awaddr = u_dut.awaddr_q
+// counters and recorded addresses to the slave's holding registers, read through the probe
+// wires p_* of the probe table of its target in scripts/formal.sh (connect after flatten; Yosys reads
+// no hierarchical references).
 // With FV_PROPERTIES_ONLY defined (the mutant runs) the invariants and probes are left out.
 
 `include "specular_params.svh"
 `include "formal/specular_fv.svh"
+`include "specular_axil_ports.svh"
 
 module specular_axil_fv #(
   `SPECULAR_FV_PARAMS,
@@ -52,30 +51,8 @@ module specular_axil_fv #(
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
-  input  logic [AddrWidth-1:0] s_axil_awaddr,
-  input  logic [2:0]           s_axil_awprot,
-  input  logic                 s_axil_awvalid,
-  output logic                 s_axil_awready,
-  input  logic [31:0]          s_axil_wdata,
-  input  logic [3:0]           s_axil_wstrb,
-  input  logic                 s_axil_wvalid,
-  output logic                 s_axil_wready,
-  output logic [1:0]           s_axil_bresp,
-  output logic                 s_axil_bvalid,
-  input  logic                 s_axil_bready,
-  input  logic [AddrWidth-1:0] s_axil_araddr,
-  input  logic [2:0]           s_axil_arprot,
-  input  logic                 s_axil_arvalid,
-  output logic                 s_axil_arready,
-  output logic [31:0]          s_axil_rdata,
-  output logic [1:0]           s_axil_rresp,
-  output logic                 s_axil_rvalid,
-  input  logic                 s_axil_rready,
-  output logic [((CBits + 7) / 8) * 8-1:0] m_axis_px_tdata,
-  output logic                 m_axis_px_tvalid,
-  input  logic                 m_axis_px_tready,
-  output logic                 m_axis_px_tlast,
-  output logic [TagBits-1:0]   m_axis_px_tuser,
+  `SPECULAR_AXIL_PORTS,
+  `SPECULAR_AXIS_PX_PORTS,
   output logic                 irq_o
 );
 
@@ -87,30 +64,8 @@ module specular_axil_fv #(
   ) u_dut (
     .clk_i            (clk_i),
     .rst_ni           (rst_ni),
-    .s_axil_awaddr    (s_axil_awaddr),
-    .s_axil_awprot    (s_axil_awprot),
-    .s_axil_awvalid   (s_axil_awvalid),
-    .s_axil_awready   (s_axil_awready),
-    .s_axil_wdata     (s_axil_wdata),
-    .s_axil_wstrb     (s_axil_wstrb),
-    .s_axil_wvalid    (s_axil_wvalid),
-    .s_axil_wready    (s_axil_wready),
-    .s_axil_bresp     (s_axil_bresp),
-    .s_axil_bvalid    (s_axil_bvalid),
-    .s_axil_bready    (s_axil_bready),
-    .s_axil_araddr    (s_axil_araddr),
-    .s_axil_arprot    (s_axil_arprot),
-    .s_axil_arvalid   (s_axil_arvalid),
-    .s_axil_arready   (s_axil_arready),
-    .s_axil_rdata     (s_axil_rdata),
-    .s_axil_rresp     (s_axil_rresp),
-    .s_axil_rvalid    (s_axil_rvalid),
-    .s_axil_rready    (s_axil_rready),
-    .m_axis_px_tdata  (m_axis_px_tdata),
-    .m_axis_px_tvalid (m_axis_px_tvalid),
-    .m_axis_px_tready (m_axis_px_tready),
-    .m_axis_px_tlast  (m_axis_px_tlast),
-    .m_axis_px_tuser  (m_axis_px_tuser),
+    `SPECULAR_AXIL_MAP(s_axil_),
+    `SPECULAR_AXIS_PX_MAP(m_axis_px_),
     .irq_o            (irq_o)
   );
 
@@ -146,49 +101,23 @@ module specular_axil_fv #(
   // ---------------------------------------------------------------------------------
   `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
 
-  logic                 aw_pend_q, w_pend_q, ar_pend_q;
-  logic [AddrWidth+2:0] aw_held_q, ar_held_q;
-  logic [35:0]          w_held_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      aw_pend_q <= 1'b0;
-      w_pend_q  <= 1'b0;
-      ar_pend_q <= 1'b0;
-      aw_held_q <= '0;
-      w_held_q  <= '0;
-      ar_held_q <= '0;
-    end else begin
-      aw_pend_q <= s_axil_awvalid && !s_axil_awready;
-      w_pend_q  <= s_axil_wvalid && !s_axil_wready;
-      ar_pend_q <= s_axil_arvalid && !s_axil_arready;
-      aw_held_q <= {s_axil_awprot, s_axil_awaddr};
-      w_held_q  <= {s_axil_wstrb, s_axil_wdata};
-      ar_held_q <= {s_axil_arprot, s_axil_araddr};
-    end
-  end
-  always_comb begin
-    if (rst_ni && aw_pend_q) begin
-      assume (s_axil_awvalid);
-      assume ({s_axil_awprot, s_axil_awaddr} == aw_held_q);
-    end
-    if (rst_ni && w_pend_q) begin
-      assume (s_axil_wvalid);
-      assume ({s_axil_wstrb, s_axil_wdata} == w_held_q);
-    end
-    if (rst_ni && ar_pend_q) begin
-      assume (s_axil_arvalid);
-      assume ({s_axil_arprot, s_axil_araddr} == ar_held_q);
-    end
-  end
+  `SPECULAR_FV_AXIS_RULES(u_aw_rules, 1'b1, AddrWidth + 3, s_axil_awvalid, s_axil_awready,
+                          {s_axil_awprot, s_axil_awaddr});
+  `SPECULAR_FV_AXIS_RULES(u_w_rules, 1'b1, 36, s_axil_wvalid, s_axil_wready,
+                          {s_axil_wstrb, s_axil_wdata});
+  `SPECULAR_FV_AXIS_RULES(u_ar_rules, 1'b1, AddrWidth + 3, s_axil_arvalid, s_axil_arready,
+                          {s_axil_arprot, s_axil_araddr});
+  // P3 / P4: the responses held under backpressure (the slave drives B and R)
+  `SPECULAR_FV_AXIS_RULES(u_b_rules, 1'b0, 2, s_axil_bvalid, s_axil_bready,
+                          s_axil_bresp);
+  `SPECULAR_FV_AXIS_RULES(u_r_rules, 1'b0, 34, s_axil_rvalid, s_axil_rready,
+                          {s_axil_rresp, s_axil_rdata});
 
   // ---------------------------------------------------------------------------------
   // Requests and responses: outstanding counts, the addresses of the open requests
   // ---------------------------------------------------------------------------------
   logic [1:0]           aw_out_q, w_out_q, ar_out_q;
   logic [AddrWidth-1:0] f_awaddr_q, f_araddr_q;
-  logic                 b_stall_q, r_stall_q;
-  logic [1:0]           bresp_held_q, rresp_held_q;
-  logic [31:0]          rdata_held_q;
   logic [1:0]           b_wait_q;
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
@@ -197,11 +126,6 @@ module specular_axil_fv #(
       ar_out_q     <= '0;
       f_awaddr_q   <= '0;
       f_araddr_q   <= '0;
-      b_stall_q    <= 1'b0;
-      r_stall_q    <= 1'b0;
-      bresp_held_q <= '0;
-      rresp_held_q <= '0;
-      rdata_held_q <= '0;
       b_wait_q     <= '0;
     end else begin
       aw_out_q     <= aw_out_q + 2'(aw_fire) - 2'(b_fire);
@@ -209,11 +133,6 @@ module specular_axil_fv #(
       ar_out_q     <= ar_out_q + 2'(ar_fire) - 2'(r_fire);
       if (aw_fire) f_awaddr_q <= s_axil_awaddr;
       if (ar_fire) f_araddr_q <= s_axil_araddr;
-      b_stall_q    <= s_axil_bvalid && !s_axil_bready;
-      r_stall_q    <= s_axil_rvalid && !s_axil_rready;
-      bresp_held_q <= s_axil_bresp;
-      rresp_held_q <= s_axil_rresp;
-      rdata_held_q <= s_axil_rdata;
       // clocks with both AW and W accepted and no B yet
       b_wait_q     <= (aw_out_q != '0 && w_out_q != '0 && !s_axil_bvalid) ? b_wait_q + 2'd1 : 2'd0;
     end
@@ -233,16 +152,7 @@ module specular_axil_fv #(
       assert (aw_out_q <= 2'd1);
       assert (w_out_q <= 2'd1);
       assert (ar_out_q <= 2'd1);
-      // P3 / P4: responses held under backpressure
-      if (b_stall_q) begin
-        assert (s_axil_bvalid);
-        assert (s_axil_bresp == bresp_held_q);
-      end
-      if (r_stall_q) begin
-        assert (s_axil_rvalid);
-        assert (s_axil_rresp == rresp_held_q);
-        assert (s_axil_rdata == rdata_held_q);
-      end
+      // P3 / P4: u_b_rules, u_r_rules (above)
       // P6: progress
       assert (b_wait_q <= 2'd1);
       if (ar_out_q != '0) begin

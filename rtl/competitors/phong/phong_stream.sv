@@ -26,6 +26,8 @@
 // the previous span's last pixel leaves stage 0.
 
 `include "specular_assert.svh"
+`include "specular_geo_ports.svh"
+`include "specular_span_ports.svh"
 
 module phong_stream #(
   parameter int VecBits       = 18,
@@ -51,21 +53,8 @@ module phong_stream #(
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
-  input  logic                   geo_valid_i,
-  output logic                   geo_ready_o,
-  input  logic [3*VecBits-1:0]   geo_n1_i,
-  input  logic [3*VecBits-1:0]   geo_n2_i,
-  input  logic [3*VecBits-1:0]   geo_h1_i,
-  input  logic [3*VecBits-1:0]   geo_he_i,
-  input  logic [NBits-1:0]       geo_n_i,
-  input  logic [LenBits-1:0]     geo_len_i,
-  input  logic [CBits-1:0]       geo_scale_i,
-  input  logic [TagBits-1:0]     geo_tag_i,
-  output logic                   px_valid_o,
-  input  logic                   px_ready_i,
-  output logic [CBits-1:0]       px_intensity_o,
-  output logic                   px_last_o,
-  output logic [TagBits-1:0]     px_tag_o
+  `SPECULAR_GEO_PORTS,
+  `SPECULAR_PX_PORTS
 );
 
   localparam int AccBits   = VecBits + LenBits;
@@ -274,8 +263,7 @@ module phong_stream #(
   // Assertions (rtl/prim/specular_assert.svh)
   // ---------------------------------------------------------------------------------
   `SPEC_ASSERT_KNOWN(GeoValidKnown_A, geo_valid_i, clk_i, rst_ni)
-  `SPEC_ASSERT_KNOWN_IF(GeoKnown_A, {geo_n1_i, geo_n2_i, geo_h1_i, geo_he_i, geo_n_i, geo_len_i, geo_scale_i},
-                        geo_valid_i, clk_i, rst_ni)
+  `SPEC_ASSERT_KNOWN_IF(GeoKnown_A, `SPECULAR_GEO_DATA(geo_, _i), geo_valid_i, clk_i, rst_ni)
   `SPEC_ASSERT_KNOWN(PxReadyKnown_A, px_ready_i, clk_i, rst_ni)
   `SPEC_ASSERT_KNOWN_IF(PxKnown_A, {px_intensity_o, px_last_o, px_tag_o}, px_valid_o, clk_i, rst_ni)
 

@@ -42,27 +42,21 @@
 //   P6 idle      while px_valid_o is low, px_intensity_o and px_last_o are 0
 // Strengthening invariants (needed for induction, proven like the properties) relate the
 // harness state to the stage valids, last flags, counter 5, the tag registers and the
-// output buffer of the core. Those are read through probe wires that scripts/formal.sh
-// connects to the flattened instance (connect -set after flatten; Yosys has no
-// hierarchical references):
-//   p_vld   = u_dut.u_control14.vld_q    p_last = u_dut.u_control14.last_q
-//   p_cnt   = u_dut.cnt0                 p_tag0 = u_dut.tag0
-//   p_zero  = u_dut.u_counter5.zero_q
-//   p_tagline = u_dut.u_tag_line.gen_regs.line_q, the tags of stages 1 .. Depth - 1
-//   p_count = u_dut.u_out_buf.count_q    p_adv  = u_dut.u_out_buf.adv_q
-//   p_head  = u_dut.u_out_buf.head_q     p_tail = u_dut.u_out_buf.tail_q
+// output buffer of the core, read through the probe wires p_* of the probe table of
+// target stream in scripts/formal.sh (connect after flatten; Yosys reads no hierarchical
+// references).
 // The invariants are local: ghost registers shifted with the pipeline carry each stage's
 // FIFO slot and pixel index and running counts of valid and last pixels, so every invariant
 // relates two neighbouring stages (or a stage before and after one edge) and none is a sum
-// or a walk over the whole pipeline; that took the induction step (Yosys's sat) from 6 to
-// 20 CPU minutes down to about two, and lets ABC's scorr prove each property on its own in
-// under a second (docs/formal.md#run-time).
+// or a walk over the whole pipeline: each property's induction step is local, so ABC's
+// scorr proves them one by one (docs/formal.md#the-flow).
 // With FV_PROPERTIES_ONLY defined (the mutant runs) the invariants and probes are left out.
 // Latency (the core's PipeDepth + 1, the output buffer's clock) is a parameter set by
 // scripts/formal.sh.
 
 `include "specular_params.svh"
 `include "formal/specular_fv.svh"
+`include "specular_span_ports.svh"
 
 module specular_stream_fv #(
   `SPECULAR_FV_PARAMS,
@@ -73,19 +67,8 @@ module specular_stream_fv #(
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
-  input  logic                 span_valid_i,
-  input  logic [CBits-1:0]     span_c_i,
-  input  logic [AngleBits-1:0] span_psi0_i,
-  input  logic [AngleBits-1:0] span_dpsi_i,
-  input  logic [NBits-1:0]     span_n_i,
-  input  logic [LenBits-1:0]   span_len_i,
-  input  logic [TagBits-1:0]   span_tag_i,
-  input  logic                 px_ready_i,
-  output logic                 span_ready_o,
-  output logic                 px_valid_o,
-  output logic [CBits-1:0]     px_intensity_o,
-  output logic                 px_last_o,
-  output logic [TagBits-1:0]   px_tag_o
+  `SPECULAR_SPAN_PORTS(input, output, _i, _o),
+  `SPECULAR_PX_PORTS
 );
 
   specular_stream #(
@@ -94,19 +77,8 @@ module specular_stream_fv #(
   ) u_dut (
     .clk_i          (clk_i),
     .rst_ni         (rst_ni),
-    .span_valid_i   (span_valid_i),
-    .span_ready_o   (span_ready_o),
-    .span_c_i       (span_c_i),
-    .span_psi0_i    (span_psi0_i),
-    .span_dpsi_i    (span_dpsi_i),
-    .span_n_i       (span_n_i),
-    .span_len_i     (span_len_i),
-    .span_tag_i     (span_tag_i),
-    .px_valid_o     (px_valid_o),
-    .px_ready_i     (px_ready_i),
-    .px_intensity_o (px_intensity_o),
-    .px_last_o      (px_last_o),
-    .px_tag_o       (px_tag_o)
+    `SPECULAR_SPAN_MAP(_i, _o, span_, _i, _o),
+    `SPECULAR_PX_PORT_MAP
   );
 
 `ifdef FORMAL
@@ -133,46 +105,14 @@ module specular_stream_fv #(
   // ---------------------------------------------------------------------------------
   `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
 
-  logic [SpanBits-1:0] span_bus, span_held_q;
-  logic                span_pend_q;
-  assign span_bus = {span_c_i, span_psi0_i, span_dpsi_i, span_n_i, span_len_i, span_tag_i};
-
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      span_pend_q <= 1'b0;
-      span_held_q <= '0;
-    end else begin
-      span_pend_q <= span_valid_i && !span_ready_o;
-      span_held_q <= span_bus;
-    end
-  end
-  always_comb begin
-    if (rst_ni && span_pend_q) begin
-      assume (span_valid_i);
-      assume (span_bus == span_held_q);
-    end
-  end
+  `SPECULAR_FV_AXIS_RULES(u_span_rules, 1'b1, SpanBits, span_valid_i, span_ready_o,
+                          `SPECULAR_SPAN_DATA(span_, _i));
 
   // ---------------------------------------------------------------------------------
   // P1: valid held and pixel stable while stalled
   // ---------------------------------------------------------------------------------
-  logic               stall_q;
-  logic [PixBits-1:0] px_held_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      stall_q   <= 1'b0;
-      px_held_q <= '0;
-    end else begin
-      stall_q   <= px_valid_o && !px_ready_i;
-      px_held_q <= {px_intensity_o, px_last_o, px_tag_o};
-    end
-  end
-  always_comb begin
-    if (rst_ni && stall_q) begin
-      assert (px_valid_o);
-      assert ({px_intensity_o, px_last_o, px_tag_o} == px_held_q);
-    end
-  end
+  `SPECULAR_FV_AXIS_RULES(u_px_rules, 1'b0, PixBits, px_valid_o, px_ready_i,
+                          {px_intensity_o, px_last_o, px_tag_o});
 
   // ---------------------------------------------------------------------------------
   // P2: pixels owed; P5: nothing out after reset before an accept; P6: an invalid output
@@ -257,22 +197,13 @@ module specular_stream_fv #(
   // P4: no bubble with spans always offered and ready always high
   // ---------------------------------------------------------------------------------
   logic [StreakBits-1:0] streak_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      streak_q <= '0;
-    end else if (span_valid_i && px_ready_i) begin
-      if (streak_q != StreakBits'(StreakMax)) begin
-        streak_q <= streak_q + 1'b1;
-      end
-    end else begin
-      streak_q <= '0;
-    end
-  end
-  always_comb begin
-    if (rst_ni && streak_q == StreakBits'(StreakMax)) begin
-      assert (px_valid_o);
-    end
-  end
+  specular_streak_props #(.Max(StreakMax), .CBits(StreakBits)) u_rate (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .cond_i  (span_valid_i && px_ready_i),
+    .ok_i    (px_valid_o),
+    .count_o (streak_q)
+  );
 
 `ifndef FV_PROPERTIES_ONLY
   // ---------------------------------------------------------------------------------

@@ -1,7 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 //
-// What the formal harnesses (specular_stream_fv.sv, specular_axil_fv.sv) share, written
-// once.
+// What the formal harnesses share, written once.
 //
 // `SPECULAR_FV_PARAMS: the reduced core parameters, the core's list of
 // rtl/core/specular_params.svh with small widths (the proofs unroll every register), two
@@ -46,5 +45,17 @@
       assume (!(rst_n));                        \
     end                                         \
   end
+
+// `SPECULAR_FV_AXIS_RULES(name, src, bits, valid, ready, data): the valid/ready rules of
+// one port (rtl/prim/formal/specular_axis_props.sv), on the harness's clk_i and rst_ni:
+// assumed at a port the harness drives (src 1'b1), asserted at one the design drives.
+`define SPECULAR_FV_AXIS_RULES(name, src, bits, valid, ready, data) \
+  specular_axis_props #(.Width(bits), .Source(src)) name ( \
+    .clk_i   (clk_i), \
+    .rst_ni  (rst_ni), \
+    .valid_i (valid), \
+    .ready_i (ready), \
+    .data_i  (data)   \
+  )
 
 `endif  // SPECULAR_FV_SVH

@@ -3,12 +3,12 @@
 //
 // specular_setup_fv: formal property harness of specular_setup's handshakes (geometry span
 // in, span descriptor out; docs/interfaces.md#geometry-span-interface,
-// docs/setup_hw.md#the-rtl). Run by scripts/formal_setup.sh (ctests rtl_formal_setup and
-// rtl_formal_setup_mutant): Yosys read_verilog -formal, Yosys sat -tempinduct (base case
-// from reset plus induction: an unbounded proof). Everything below the instance is under
+// docs/setup_hw.md#the-rtl). Run by scripts/formal.sh setup (ctests rtl_formal_setup_*):
+// the unbounded proof (base case from reset and induction), the bounded check and a mutant
+// (docs/formal.md#specular_setup-the-span-handshakes). Everything below the instance is under
 // `ifdef FORMAL; this file is not in the filelist rtl/specular.f.
 //
-// ABSTRACTION (in scripts/formal_setup.sh, documented in docs/formal.md): the script
+// ABSTRACTION (in scripts/formal.sh setup, documented in docs/formal.md): the script
 // cuts the arithmetic datapath where it reaches the descriptor (the wires c_96, psi0_96,
 // dpsi_96, a_pos_96, opp_h_96, n_96, len_96 and the status flags become free values every
 // clock) and removes the logic left without a reader. What remains is the control: the
@@ -40,41 +40,31 @@
 // Strengthening invariants (needed for induction, proven like the properties) relate ghost
 // registers shifted with the pipeline (g_seq: per stage, the number of the stage's span, or
 // for an empty stage the number of the next span to come below the ones above it) to the
-// core's stage valids, tags and output buffer, read through probe wires that
-// scripts/formal_setup.sh connects after flatten:
-//   p_vld0  = u_dut.in_valid_q                     p_tag0 = u_dut.tag_q
-//   p_vline = u_dut.u_dly_valid.gen_regs.line_q    (stages 1 .. Depth)
-//   p_oline = u_dut.u_dly_out.gen_regs.line_q      ({len, n, tag, 3 flags} per stage)
-//   p_count, p_head, p_tail, p_adv = u_dut.u_out_buf.{count_q, head_q, tail_q, adv_q}
+// core's stage valids, tags and output buffer, read through the probe wires p_* of
+// the probe table of its target in scripts/formal.sh (connect after flatten; Yosys reads
+// no hierarchical references).
 // With FV_PROPERTIES_ONLY defined (the mutant runs) the invariants and probes are left out.
+
+`include "formal/specular_fv.svh"
+`include "specular_geo_ports.svh"
+`include "specular_span_ports.svh"
 
 module specular_setup_fv #(
   parameter int VecBits = 18,
   parameter int TagBits = 2,
   // Registers after the input register (the core's tau of the descriptor, TC = 96); set by
-  // scripts/formal_setup.sh from the length of the valid delay line.
-  parameter int Depth   = 96
+  // scripts/formal.sh setup from the length of the valid delay line.
+  parameter int Depth   = 96,
+  // specular_setup's fixed register formats (the widths of its ports)
+  localparam int CBits     = 16,
+  localparam int AngleBits = 32,
+  localparam int NBits     = 10,
+  localparam int LenBits   = 11
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
-  input  logic                 geo_valid_i,
-  output logic                 geo_ready_o,
-  input  logic [3*VecBits-1:0] geo_n1_i,
-  input  logic [3*VecBits-1:0] geo_n2_i,
-  input  logic [3*VecBits-1:0] geo_h1_i,
-  input  logic [3*VecBits-1:0] geo_he_i,
-  input  logic [9:0]           geo_n_i,
-  input  logic [10:0]          geo_len_i,
-  input  logic [15:0]          geo_scale_i,
-  input  logic [TagBits-1:0]   geo_tag_i,
-  output logic                 span_valid_o,
-  input  logic                 span_ready_i,
-  output logic [15:0]          span_c_o,
-  output logic [31:0]          span_psi0_o,
-  output logic [31:0]          span_dpsi_o,
-  output logic [9:0]           span_n_o,
-  output logic [10:0]          span_len_o,
-  output logic [TagBits-1:0]   span_tag_o,
+  `SPECULAR_GEO_PORTS,
+  `SPECULAR_SPAN_PORTS(output, input, _o, _i),
   output logic [2:0]           span_status_o,
   // The solver's choice of the tracked span (P4): high at the accept of the span to track.
   input  logic                 f_pick_i
@@ -86,24 +76,8 @@ module specular_setup_fv #(
   ) u_dut (
     .clk_i         (clk_i),
     .rst_ni        (rst_ni),
-    .geo_valid_i   (geo_valid_i),
-    .geo_ready_o   (geo_ready_o),
-    .geo_n1_i      (geo_n1_i),
-    .geo_n2_i      (geo_n2_i),
-    .geo_h1_i      (geo_h1_i),
-    .geo_he_i      (geo_he_i),
-    .geo_n_i       (geo_n_i),
-    .geo_len_i     (geo_len_i),
-    .geo_scale_i   (geo_scale_i),
-    .geo_tag_i     (geo_tag_i),
-    .span_valid_o  (span_valid_o),
-    .span_ready_i  (span_ready_i),
-    .span_c_o      (span_c_o),
-    .span_psi0_o   (span_psi0_o),
-    .span_dpsi_o   (span_dpsi_o),
-    .span_n_o      (span_n_o),
-    .span_len_o    (span_len_o),
-    .span_tag_o    (span_tag_o),
+    `SPECULAR_GEO_PORT_MAP,
+    `SPECULAR_SPAN_MAP(_o, _i, span_, _o, _i),
     .span_status_o (span_status_o)
   );
 
@@ -115,9 +89,9 @@ module specular_setup_fv #(
   localparam int SeqBits    = $clog2(Depth + 5);
   localparam int StreakMax  = Latency + 1;
   localparam int StreakBits = $clog2(Latency + 2);
-  localparam int GeoBits    = 12 * VecBits + 10 + 11 + 16 + TagBits;
-  localparam int SpanBits   = 16 + 32 + 32 + 10 + 11 + TagBits + 3;
-  localparam int OutW       = 11 + 10 + TagBits + 3;  // u_dly_out: {len, n, tag, 3 flags}
+  localparam int GeoBits    = `SPECULAR_GEO_DATA_BITS;
+  localparam int SpanBits   = CBits + 2 * AngleBits + NBits + LenBits + TagBits + 3;
+  localparam int OutW       = LenBits + NBits + TagBits + 3;  // u_dly_out: {len, n, tag, 3 flags}
 
   logic accept, xfer;
   assign accept = geo_valid_i && geo_ready_o;
@@ -126,57 +100,17 @@ module specular_setup_fv #(
   // ---------------------------------------------------------------------------------
   // Assumptions: start in reset; AXI4-Stream producer on the geometry side
   // ---------------------------------------------------------------------------------
-  logic f_started_q = 1'b0;
-  always_ff @(posedge clk_i) begin
-    f_started_q <= 1'b1;
-  end
-  always_comb begin
-    if (!f_started_q) begin
-      assume (!rst_ni);
-    end
-  end
+  `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
 
-  logic [GeoBits-1:0] geo_bus, geo_held_q;
-  logic               geo_pend_q;
-  assign geo_bus = {geo_n1_i, geo_n2_i, geo_h1_i, geo_he_i, geo_n_i, geo_len_i, geo_scale_i,
-                    geo_tag_i};
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      geo_pend_q <= 1'b0;
-      geo_held_q <= '0;
-    end else begin
-      geo_pend_q <= geo_valid_i && !geo_ready_o;
-      geo_held_q <= geo_bus;
-    end
-  end
-  always_comb begin
-    if (rst_ni && geo_pend_q) begin
-      assume (geo_valid_i);
-      assume (geo_bus == geo_held_q);
-    end
-  end
+  `SPECULAR_FV_AXIS_RULES(u_geo_rules, 1'b1, GeoBits, geo_valid_i, geo_ready_o,
+                          `SPECULAR_GEO_DATA(geo_, _i));
 
   // ---------------------------------------------------------------------------------
   // P1: valid held and descriptor stable while stalled; P5: no output in reset
   // ---------------------------------------------------------------------------------
-  logic                stall_q;
-  logic [SpanBits-1:0] span_bus, span_held_q;
-  assign span_bus = {span_c_o, span_psi0_o, span_dpsi_o, span_n_o, span_len_o, span_tag_o,
-                     span_status_o};
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      stall_q     <= 1'b0;
-      span_held_q <= '0;
-    end else begin
-      stall_q     <= span_valid_o && !span_ready_i;
-      span_held_q <= span_bus;
-    end
-  end
+  `SPECULAR_FV_AXIS_RULES(u_span_rules, 1'b0, SpanBits, span_valid_o, span_ready_i,
+                          {`SPECULAR_SPAN_DATA(span_, _o), span_status_o});
   always_comb begin
-    if (rst_ni && stall_q) begin
-      assert (span_valid_o);
-      assert (span_bus == span_held_q);
-    end
     if (!rst_ni) begin
       assert (!span_valid_o);
     end
@@ -225,49 +159,30 @@ module specular_setup_fv #(
   // P2: valid does not wait for ready
   // ---------------------------------------------------------------------------------
   logic [StreakBits-1:0] lo_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      lo_q <= '0;
-    end else if (!span_ready_i && n_acc_q != n_out_q) begin
-      if (lo_q != StreakBits'(Latency)) begin
-        lo_q <= lo_q + 1'b1;
-      end
-    end else begin
-      lo_q <= '0;
-    end
-  end
-  always_comb begin
-    if (rst_ni && lo_q == StreakBits'(Latency)) begin
-      assert (span_valid_o);
-    end
-  end
+  specular_streak_props #(.Max(Latency), .CBits(StreakBits)) u_no_wait (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .cond_i  (!span_ready_i && n_acc_q != n_out_q),
+    .ok_i    (span_valid_o),
+    .count_o (lo_q)
+  );
 
   // ---------------------------------------------------------------------------------
   // P6: one span per clock
   // ---------------------------------------------------------------------------------
   logic [StreakBits-1:0] streak_q;
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      streak_q <= '0;
-    end else if (geo_valid_i && span_ready_i) begin
-      if (streak_q != StreakBits'(StreakMax)) begin
-        streak_q <= streak_q + 1'b1;
-      end
-    end else begin
-      streak_q <= '0;
-    end
-  end
-  always_comb begin
-    if (rst_ni && streak_q == StreakBits'(StreakMax)) begin
-      assert (span_valid_o);
-      assert (geo_ready_o);
-    end
-  end
+  specular_streak_props #(.Max(StreakMax), .CBits(StreakBits)) u_rate (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .cond_i  (geo_valid_i && span_ready_i),
+    .ok_i    (span_valid_o && geo_ready_o),
+    .count_o (streak_q)
+  );
 
 `ifndef FV_PROPERTIES_ONLY
   // ---------------------------------------------------------------------------------
   // Strengthening invariants on the core's state (probes connected by
-  // scripts/formal_setup.sh). Left out (FV_PROPERTIES_ONLY) by the mutant runs.
+  // scripts/formal.sh setup). Left out (FV_PROPERTIES_ONLY) by the mutant runs.
   // ---------------------------------------------------------------------------------
   logic                    p_vld0;    // the input register holds a span (stage 0)
   logic [TagBits-1:0]      p_tag0;    // ... its tag

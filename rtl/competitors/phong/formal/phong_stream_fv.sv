@@ -3,8 +3,8 @@
 //
 // phong_stream_fv: formal property harness of phong_stream's handshakes (geometry span in,
 // pixels out; docs/interfaces.md#geometry-span-interface, docs/phong_hw.md). Run by
-// scripts/formal_phong.sh: Yosys read_verilog -formal, Yosys sat -tempinduct (base case from
-// reset plus induction: an unbounded proof), or a bounded model check from reset (ABC bmc3).
+// scripts/formal.sh phong: the unbounded proof (base case from reset and induction), or a
+// bounded model check from reset (docs/formal.md#phong_stream-the-span-and-pixel-handshakes).
 // Everything below the instance is under `ifdef FORMAL; this file is not in the filelist
 // rtl/specular.f.
 //
@@ -16,7 +16,7 @@
 // span pipe's valid line and its len and tag registers) is the same shift structure at any
 // depth. LenBits 3 (spans of 1..8 pixels), TagBits 2.
 //
-// ABSTRACTION (scripts/formal_phong.sh, docs/formal.md#phong_stream-the-span-and-pixel-handshakes):
+// ABSTRACTION (scripts/formal.sh phong, docs/formal.md#phong_stream-the-span-and-pixel-handshakes):
 // the script cuts the pixel value where it leaves the power unit (cutpoint u_dut.intensity:
 // a free value every clock) and removes the logic left without a reader (the span setup's
 // multipliers, the accumulators, phong_dot, phong_norm, phong_pow, the n/scale line). No
@@ -43,22 +43,19 @@
 //               geo_ready_o high in one of them: only the pixels of the span in stage 0
 //               hold the span side back
 // geo_ready_o depending on registers only (never on geo_valid_i or px_ready_i) is checked
-// on the netlist by scripts/formal_phong.sh (no combinational path into it).
+// on the netlist by scripts/formal.sh phong (no combinational path into it).
 //
 // Strengthening invariants (needed for induction, proven like the properties; left out with
 // FV_PROPERTIES_ONLY, the bounded and mutant runs) use ghost registers shifted with the
 // pipelines, in the style of specular_stream_fv.sv: per span-pipe stage, the span number
 // (g_sseq, shifted when the span pipe moves: geo_ready_o); per pixel stage, the span number
 // and pixel index (g_seq, g_idx, shifted with the output buffer's advance). Each relates
-// neighbouring stages. Probes (connected by the script after flatten):
-//   p_sp_vld = u_dut.u_setup.vld_q    p_len1, p_tag1, p_len2, p_tag2 = u_setup.{len,tag}_{1,2}
-//   p_side   = u_setup.u_side.gen_regs.line_q (the span pipe's multiplier stages)
-//   p_lenh, p_tagh = u_dut.{len_h, tag_h} (the span pipe's head)
-//   p_vld, p_last = u_dut.u_control.{vld_q, last_q}   p_cnt, p_zero = u_counter.{cnt_q, zero_q}
-//   p_tag0 = u_dut.tag0   p_tagline = u_tag_line.gen_regs.line_q
-//   p_count, p_head, p_tail, p_adv = u_out_buf.{count_q, head_q, tail_q, adv_q}
+// neighbouring stages. The probe wires p_* carry the core's state: the probe table of its target in scripts/formal.sh (connect after flatten; Yosys reads
+// no hierarchical references).
 
 `include "formal/specular_fv.svh"
+`include "specular_geo_ports.svh"
+`include "specular_span_ports.svh"
 
 module phong_stream_fv #(
   parameter int VecBits       = 2,
@@ -78,28 +75,15 @@ module phong_stream_fv #(
   parameter int ExpFracBits   = 2,
   parameter int ExpBits       = 2,
   // The span pipe's stages (phong_pkg::setup_stages) and the pixel pipeline's (PipeDepth):
-  // scripts/formal_phong.sh sets them from the widths of u_setup.vld_q and
+  // scripts/formal.sh phong sets them from the widths of u_setup.vld_q and
   // u_control.vld_q; a wrong value fails on the probe widths.
   parameter int SpDepth       = 5,
   parameter int Depth         = 40
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
-  input  logic                 geo_valid_i,
-  output logic                 geo_ready_o,
-  input  logic [3*VecBits-1:0] geo_n1_i,
-  input  logic [3*VecBits-1:0] geo_n2_i,
-  input  logic [3*VecBits-1:0] geo_h1_i,
-  input  logic [3*VecBits-1:0] geo_he_i,
-  input  logic [NBits-1:0]     geo_n_i,
-  input  logic [LenBits-1:0]   geo_len_i,
-  input  logic [CBits-1:0]     geo_scale_i,
-  input  logic [TagBits-1:0]   geo_tag_i,
-  output logic                 px_valid_o,
-  input  logic                 px_ready_i,
-  output logic [CBits-1:0]     px_intensity_o,
-  output logic                 px_last_o,
-  output logic [TagBits-1:0]   px_tag_o,
+  `SPECULAR_GEO_PORTS,
+  `SPECULAR_PX_PORTS,
   // P3: the number of the tracked span (held constant by an assumption).
   input  logic [$clog2(Depth + SpDepth + 3)-1:0] f_k_i
 );
@@ -127,21 +111,8 @@ module phong_stream_fv #(
   ) u_dut (
     .clk_i          (clk_i),
     .rst_ni         (rst_ni),
-    .geo_valid_i    (geo_valid_i),
-    .geo_ready_o    (geo_ready_o),
-    .geo_n1_i       (geo_n1_i),
-    .geo_n2_i       (geo_n2_i),
-    .geo_h1_i       (geo_h1_i),
-    .geo_he_i       (geo_he_i),
-    .geo_n_i        (geo_n_i),
-    .geo_len_i      (geo_len_i),
-    .geo_scale_i    (geo_scale_i),
-    .geo_tag_i      (geo_tag_i),
-    .px_valid_o     (px_valid_o),
-    .px_ready_i     (px_ready_i),
-    .px_intensity_o (px_intensity_o),
-    .px_last_o      (px_last_o),
-    .px_tag_o       (px_tag_o)
+    `SPECULAR_GEO_PORT_MAP,
+    `SPECULAR_PX_PORT_MAP
   );
 
 `ifdef FORMAL
@@ -150,7 +121,7 @@ module phong_stream_fv #(
   localparam int SeqBits   = $clog2(Depth + SpDepth + 3);
   localparam int IdxBits   = LenBits + 1;
   localparam int RBits     = LenBits + 2;
-  localparam int GeoBits   = 12 * VecBits + NBits + LenBits + CBits + TagBits;
+  localparam int GeoBits   = `SPECULAR_GEO_DATA_BITS;
   localparam int PixBits   = CBits + 1 + TagBits;
 
   logic accept, xfer;
@@ -162,25 +133,8 @@ module phong_stream_fv #(
   // ---------------------------------------------------------------------------------
   `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
 
-  logic [GeoBits-1:0] geo_bus, geo_held_q;
-  logic               geo_pend_q;
-  assign geo_bus = {geo_n1_i, geo_n2_i, geo_h1_i, geo_he_i, geo_n_i, geo_len_i, geo_scale_i,
-                    geo_tag_i};
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      geo_pend_q <= 1'b0;
-      geo_held_q <= '0;
-    end else begin
-      geo_pend_q <= geo_valid_i && !geo_ready_o;
-      geo_held_q <= geo_bus;
-    end
-  end
-  always_comb begin
-    if (rst_ni && geo_pend_q) begin
-      assume (geo_valid_i);
-      assume (geo_bus == geo_held_q);
-    end
-  end
+  `SPECULAR_FV_AXIS_RULES(u_geo_rules, 1'b1, GeoBits, geo_valid_i, geo_ready_o,
+                          `SPECULAR_GEO_DATA(geo_, _i));
 
   logic [SeqBits-1:0] f_k_q;
   always_ff @(posedge clk_i) begin
@@ -195,23 +149,11 @@ module phong_stream_fv #(
   // ---------------------------------------------------------------------------------
   // P1: valid held and pixel stable while stalled; P4: no pixel in reset; P5: idle reads 0
   // ---------------------------------------------------------------------------------
-  logic               stall_q;
-  logic [PixBits-1:0] px_bus, px_held_q;
+  logic [PixBits-1:0] px_bus;
   assign px_bus = {px_intensity_o, px_last_o, px_tag_o};
-  always_ff @(posedge clk_i or negedge rst_ni) begin
-    if (!rst_ni) begin
-      stall_q   <= 1'b0;
-      px_held_q <= '0;
-    end else begin
-      stall_q   <= px_valid_o && !px_ready_i;
-      px_held_q <= px_bus;
-    end
-  end
+  `SPECULAR_FV_AXIS_RULES(u_px_rules, 1'b0, PixBits, px_valid_o, px_ready_i,
+                          px_bus);
   always_comb begin
-    if (rst_ni && stall_q) begin
-      assert (px_valid_o);
-      assert (px_bus == px_held_q);
-    end
     if (!rst_ni) begin
       assert (!px_valid_o);
     end
@@ -285,7 +227,7 @@ module phong_stream_fv #(
 `ifndef FV_PROPERTIES_ONLY
   // ---------------------------------------------------------------------------------
   // Strengthening invariants on the core's state (probes connected by
-  // scripts/formal_phong.sh). Left out (FV_PROPERTIES_ONLY) by the bounded and mutant runs.
+  // scripts/formal.sh phong). Left out (FV_PROPERTIES_ONLY) by the bounded and mutant runs.
   // ---------------------------------------------------------------------------------
   localparam int MulDepth = SpDepth - 3;   // u_setup.u_side: the multiplier stages
   localparam int AccBits  = VecBits + LenBits;
