@@ -18,11 +18,12 @@
 //
 // TileBits picks the resources (docs/pipeline.md#multiplier-styles): 0 is the LUT tree above,
 // for a part without DSPs (the iCE40-HX8K); 16 (the UP5K's SB_MAC16) or 18 (the ECP5's
-// MULT18X18D) cut a and b into TileBits-wide tiles, register each tile product (one DSP with
-// its output register), add the products in a registered binary tree and delay the sum to the
-// same pipe_mul_stages(BBits) clocks, so both styles are bit-exact and interchangeable. a3_i
-// is unused there (synthesis drops the caller's 3a register). The tiles must be few enough
-// that 1 + clog2(tiles) <= pipe_mul_stages(BBits); the block refuses otherwise.
+// MULT18X18D) cut a and b into TileBits-wide tiles, register the tiles and each tile product
+// (one DSP with its input and output registers), add the products in a registered binary tree
+// and delay the sum to the same pipe_mul_stages(BBits) clocks, so both styles are bit-exact
+// and interchangeable. a3_i is unused there (synthesis drops the caller's 3a register). The
+// tiles must be few enough that 2 + clog2(tiles) <= pipe_mul_stages(BBits); the block refuses
+// otherwise.
 
 `include "specular_assert.svh"
 
@@ -46,23 +47,26 @@ module specular_pipe_mul #(
   localparam int TilesB = Tree ? 1 : (BBits + TileBits - 1) / TileBits;
   // Rows into the adder tree: the radix-4 digit rows, or the tile products.
   localparam int NRows  = Tree ? (BBits + 1) / 2 : TilesA * TilesB;
-  // Level 1 registers the rows, the levels after it halve them until one is left; the DSP
-  // style then delays the sum to Levels.
-  localparam int AddLevels = 1 + ((NRows > 1) ? $clog2(NRows) : 0);
+  // Level 1 registers the rows, the levels after it halve them until one is left. The DSP
+  // style registers the tile operands first (the DSP's input registers: a ROM or a carry
+  // chain in front of a multiplier would otherwise share its stage) and then delays the sum
+  // to Levels.
+  localparam int TreeLevels = 1 + ((NRows > 1) ? $clog2(NRows) : 0);
+  localparam int AddLevels  = TreeLevels + (Tree ? 0 : 1);
 
   // (BBits = 1 needs no multiplier; from 2 on every digit row fits the product's width.)
   if (ABits < 1 || BBits < 2) begin : gen_width_check
     `SPEC_PARAM_ERROR("specular_pipe_mul: ABits must be >= 1 and BBits >= 2")
   end
-  if (Tree && Levels != AddLevels) begin : gen_levels_check
+  if (Tree && Levels != TreeLevels) begin : gen_levels_check
     `SPEC_PARAM_ERROR("specular_pipe_mul: specular_pkg::pipe_mul_stages disagrees with the tree built here")
   end
   if (TileBits < 0 || TileBits == 1 || AddLevels > Levels) begin : gen_tile_check
-    `SPEC_PARAM_ERROR("specular_pipe_mul: TileBits must be 0 or >= 2, with 1 + clog2(tiles) <= pipe_mul_stages(BBits)")
+    `SPEC_PARAM_ERROR("specular_pipe_mul: TileBits must be 0 or >= 2, with 2 + clog2(tiles) <= pipe_mul_stages(BBits)")
   end
 
   // rows[l][j]: row j after level l; level 0 is combinational.
-  logic [PBits-1:0] rows [AddLevels+1][NRows];
+  logic [PBits-1:0] rows [TreeLevels+1][NRows];
 
   if (!Tree) begin : gen_tiles
     logic unused_a3;
@@ -73,11 +77,15 @@ module specular_pipe_mul #(
     assign b_tiles = (TilesB * TileBits)'(b_i);
     for (genvar i = 0; i < TilesA; i++) begin : gen_a
       for (genvar j = 0; j < TilesB; j++) begin : gen_b
-        logic [TileBits-1:0]   ta, tb;
+        logic [TileBits-1:0]   ta_q, tb_q;
         logic [2*TileBits-1:0] tp;
-        assign ta = a_pad[i*TileBits +: TileBits];
-        assign tb = b_tiles[j*TileBits +: TileBits];
-        assign tp = (2 * TileBits)'(ta) * (2 * TileBits)'(tb);
+        always_ff @(posedge clk_i) begin
+          if (en_i) begin
+            ta_q <= a_pad[i*TileBits +: TileBits];
+            tb_q <= b_tiles[j*TileBits +: TileBits];
+          end
+        end
+        assign tp = (2 * TileBits)'(ta_q) * (2 * TileBits)'(tb_q);
         // The padding tiles' bits are 0, so every product fits the PBits of a * b.
         assign rows[0][i*TilesB+j] = PBits'({{PBits{1'b0}}, tp} << ((i + j) * TileBits));
       end
@@ -101,7 +109,7 @@ module specular_pipe_mul #(
     end
   end
 
-  for (genvar l = 1; l <= AddLevels; l++) begin : gen_level
+  for (genvar l = 1; l <= TreeLevels; l++) begin : gen_level
     // Level 1 registers the rows as they are; later levels add pairs.
     localparam bit Adds  = l != 1;
     localparam int Shift = l - 1;   // additions done up to this level
@@ -133,7 +141,7 @@ module specular_pipe_mul #(
 
   // The DSP style's tree is shorter than the radix-4 one: the sum waits out the difference.
   specular_delay #(.Width (PBits), .Depth (Levels - AddLevels), .Reset (1'b0)) u_align (
-    .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (rows[AddLevels][0]), .q_o (p_o));
+    .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (rows[TreeLevels][0]), .q_o (p_o));
 
   // Assertions (rtl/prim/specular_assert.svh): the caller's 3a matches a (it registers both,
   // from the same a, on the same enable). No reset here: checked from the first enabled edge

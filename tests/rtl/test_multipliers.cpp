@@ -23,7 +23,7 @@
 #include "Vpipe_mul_5x3.h"
 #include "Vpipe_mul_6x6.h"
 #include "Vpipe_mul_7x5.h"
-#include "Vpipe_mul_7x5_t4.h"
+#include "Vpipe_mul_6x9_t5.h"
 #include "Vpipeline_default.h"
 #include "Vpipeline_default_specular_pipeline.h"
 #include "Vpipeline_patent.h"
@@ -197,7 +197,7 @@ TEST_CASE("pipe_mul styles: LUT tree and DSP tiles give the same products at the
   SECTION("16x19 tree") { style_case<Vpipe_mul_16x19>(16, 19, 26); }
   SECTION("16x19 tiles 16") { style_case<Vpipe_mul_16x19_t16>(16, 19, 27); }
   SECTION("16x19 tiles 18") { style_case<Vpipe_mul_16x19_t18>(16, 19, 28); }
-  SECTION("7x5 tiles 4, every pair") { every_pair_case<Vpipe_mul_7x5_t4>(7, 5); }
+  SECTION("6x9 tiles 5 (2 x 2, padded), every pair") { every_pair_case<Vpipe_mul_6x9_t5>(6, 9); }
 }
 
 // ------------------------------------------------------------------------------------
