@@ -188,7 +188,7 @@ def section_fpga(f, rel):
     prov = f.get("provenance") or {}
     if not prov.get("machine"):
         raise SourceError(f"{rel} has no \"provenance\" with machine (docs/measured/README.md)")
-    for e in f["runs"] + f.get("synthesis_runs", []):
+    for e in f["runs"] + f.get("ecp5_runs", []) + f.get("synthesis_runs", []):
         if not e.get("date") or not e.get("rtl"):
             raise SourceError(f"{rel}: the entry {e['core']} {e['part']} has no \"date\" or \"rtl\" "
                               f"(docs/measured/README.md)")
@@ -204,6 +204,21 @@ def section_fpga(f, rel):
             for e in f["runs"]]
     out += table(["core", "device", "RTL", "date", "LCs", "SB_LUT4", "FFs", "BRAMs", "DSPs", "Fmax (MHz)",
                   "target (MHz)"], rows)
+    ecp5 = f.get("ecp5_runs", [])
+    if ecp5:
+        out += ["", "### ECP5", "",
+                "Yosys 0.23 `synth_ecp5`, nextpnr-ecp5 (package CABGA381, speed grade 6, seed 1), the multipliers "
+                "as MULT18X18D tiles (`MulTileBits = 18`, [pipeline.md](pipeline.md#multiplier-styles)) unless the "
+                "column says otherwise. TRELLIS_COMB: LUT4 positions used after packing (LUT4s and carry halves); "
+                "LUT4, CCU2C and TRELLIS_FF: Yosys' counts, harness included; smallest LFE5U: the smallest part "
+                "whose LUT4 positions (LUT4 + 2 CCU2C), flip-flops, MULT18X18D and DP16KD hold those counts.", ""]
+        rows = [[f"`{e['core']}`", e["part"], e.get("multipliers", "MULT18X18D tiles"), f"`{e['rtl']}`", e["date"],
+                 f"{e['trellis_comb']} / {e['trellis_comb_available']}", num(e["lut4"]), num(e["ccu2c"]),
+                 num(e["ffs"]), num(e["mult18x18d"]), num(e["dp16kd"]), e["smallest_lfe5u"],
+                 f"{e['fmax_mhz']:.2f}", f"{e['target_mhz']:g}" + ("" if e["fmax_mhz"] >= e["target_mhz"] else " (missed)")]
+                for e in ecp5]
+        out += table(["core", "part", "multipliers", "RTL", "date", "TRELLIS_COMB", "LUT4", "CCU2C", "TRELLIS_FF",
+                      "MULT18X18D", "DP16KD", "smallest LFE5U", "Fmax (MHz)", "target (MHz)"], rows)
     syn = f.get("synthesis_runs", [])
 
     def name(e):
@@ -211,7 +226,7 @@ def section_fpga(f, rel):
                 + (f" `SetupII = {e['setup_ii']}`" if e.get("setup_ii", 1) != 1 else ""))
 
     out += ["", "### Synthesis only: ECP5", "",
-            "Yosys `synth_ecp5` counts (no ECP5 place and route): LUT4 positions are LUT4 + 2 CCU2C; "
+            "Yosys `synth_ecp5` counts of runs that were not placed: LUT4 positions are LUT4 + 2 CCU2C; "
             "the LFE5U-45 has 44k LUT4 positions and 72 MULT18X18D. \"Yosys (s)\": the wall time of the run, "
             "on the machine above.", ""]
     rows = [[name(e), f"`{e['rtl']}`", e["date"], num(e["lut4"]), num(e["ccu2c"]), num(e["ffs"]),

@@ -74,13 +74,12 @@ module specular_setup #(
   parameter     LogValueFile  = "roms/setup/log_value.hex",
   parameter     Exp2File      = "roms/setup/exp2.hex",
   parameter     RecipLenFile  = "roms/setup/recip_len.hex",
-  // The register formats of specular_stream's defaults (device::Format in
-  // model/device/device_model.hpp), which the golden model requires: the widths of the
-  // geometry ports (rtl/prim/specular_geo_ports.svh) and of the descriptor.
-  localparam int CBits        = 16,
-  localparam int AngleBits    = 32,
-  localparam int NBits        = 10,
-  localparam int LenBits      = 11
+  // The register formats (specular_setup_pkg): the widths of the geometry ports
+  // (rtl/prim/specular_geo_ports.svh) and of the descriptor.
+  localparam int CBits        = specular_setup_pkg::SpanCBits,
+  localparam int AngleBits    = specular_setup_pkg::SpanAngleBits,
+  localparam int NBits        = specular_setup_pkg::SpanNBits,
+  localparam int LenBits      = specular_setup_pkg::SpanLenBits
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,

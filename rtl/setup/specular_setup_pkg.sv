@@ -15,6 +15,14 @@
 /* verilator lint_off UNUSEDPARAM */
 package specular_setup_pkg;
 
+  // The register formats of the descriptor the setup writes: specular_stream's defaults
+  // (device::Format in model/device/device_model.hpp), which the golden model requires. The
+  // setup and its formal harness take their port widths from here.
+  localparam int SpanCBits     = 16;
+  localparam int SpanAngleBits = 32;
+  localparam int SpanNBits     = 10;
+  localparam int SpanLenBits   = 11;
+
   // ---- Widths (setup_fixed.hpp) ----
   localparam int UnitFrac      = 44;  // unit vectors, dot products, A: Q44
   localparam int VecW          = UnitFrac + 4;  // a Q44 vector component (|value| < 8)

@@ -56,10 +56,10 @@ module specular_setup_fv #(
   // scripts/formal.sh setup from the length of the valid delay line.
   parameter int Depth   = 96,
   // specular_setup's fixed register formats (the widths of its ports)
-  localparam int CBits     = 16,
-  localparam int AngleBits = 32,
-  localparam int NBits     = 10,
-  localparam int LenBits   = 11
+  localparam int CBits     = specular_setup_pkg::SpanCBits,
+  localparam int AngleBits = specular_setup_pkg::SpanAngleBits,
+  localparam int NBits     = specular_setup_pkg::SpanNBits,
+  localparam int LenBits   = specular_setup_pkg::SpanLenBits
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
