@@ -243,6 +243,11 @@ run_key() {
   } 2>/dev/null | sha256sum | cut -d' ' -f1
 }
 
+# The commit of the RTL the runs use (taken before they start), for docs/fpga_figures.json ("-modified": rtl/ differs from it).
+rtl_commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
+if [ "$rtl_commit" != unknown ] && [ -n "$(git -C "$root" status --porcelain -- rtl roms 2>/dev/null)" ]; then
+  rtl_commit+="-modified"
+fi
 failed=0
 run_dirs=()
 for top in "${tops[@]}"; do
@@ -565,11 +570,6 @@ done
 
 [ "$elab_only" = 1 ] && exit "$failed"
 
-# The commit of the RTL the runs used, for docs/fpga_figures.json ("-modified": rtl/ differs from it).
-rtl_commit=$(git -C "$root" rev-parse --short HEAD 2>/dev/null || echo unknown)
-if [ "$rtl_commit" != unknown ] && [ -n "$(git -C "$root" status --porcelain -- rtl roms 2>/dev/null)" ]; then
-  rtl_commit+="-modified"
-fi
 rc=0
 python3 - "$out" "$strict" "$rtl_commit" "${run_dirs[@]}" <<'PY' || rc=$?
 import json, os, re, sys
