@@ -28,6 +28,7 @@
 #include "Vpipeline_default_specular_pipeline.h"
 #include "Vpipeline_patent.h"
 #include "Vpipeline_patent_specular_pipeline.h"
+#include "phong_mul_widths.inc"
 #include "pipe_stream.hpp"
 #include "rtl_harness.hpp"
 
@@ -81,16 +82,17 @@ int run_pipe_mul(Dut& dut, int latency, int a_bits, int b_bits, const std::vecto
   std::mt19937_64 junk(7);
   const uint64_t a_mask = (uint64_t{1} << a_bits) - 1, b_mask = (uint64_t{1} << b_bits) - 1;
   RandomStalls st;
-  // a3_i = 3 a, as every caller computes it a clock ahead.
-  auto apply = [](Dut& m, const MulItem& it) {
-    m.a_i = it.a;
-    m.a3_i = 3 * it.a;
+  // a3_i = 3 a, as every caller computes it a clock ahead (phong_mul computes its own).
+  auto set_a = [](Dut& m, uint64_t a) {
+    m.a_i = a;
+    if constexpr (requires { m.a3_i; }) m.a3_i = 3 * a;
+  };
+  auto apply = [&](Dut& m, const MulItem& it) {
+    set_a(m, it.a);
     m.b_i = it.b;
   };
   auto garbage = [&](Dut& m) {
-    const uint64_t a = junk() & a_mask;
-    m.a_i = a;
-    m.a3_i = 3 * a;
+    set_a(m, junk() & a_mask);
     m.b_i = junk() & b_mask;
   };
   auto check = [](Dut& m, const MulItem& it) {
@@ -198,6 +200,28 @@ TEST_CASE("pipe_mul styles: LUT tree and DSP tiles give the same products at the
   SECTION("16x19 tiles 16") { style_case<Vpipe_mul_16x19_t16>(16, 19, 27); }
   SECTION("16x19 tiles 18") { style_case<Vpipe_mul_16x19_t18>(16, 19, 28); }
   SECTION("6x9 tiles 5 (2 x 2, padded), every pair") { every_pair_case<Vpipe_mul_6x9_t5>(6, 9); }
+}
+
+// phong_mul (rtl/competitors/phong) in both DSP styles at every width phong_stream's default
+// configuration multiplies (tests/rtl/CMakeLists.txt lists them); its latency is one operand
+// register more than specular_pipe_mul's (phong_pkg::mul_stages). The LUT tree at these widths
+// is checked in context by the Phong sim stage, bit-exact on every scene.
+template <class Dut>
+void phong_style_case(int a_bits, int b_bits, uint64_t seed) {
+  Dut dut;
+  dut.clk_i = 0;
+  dut.eval();
+  const int latency = 1 + tree_stages(b_bits);
+  CHECK(run_pipe_mul(dut, latency, a_bits, b_bits, mul_items(a_bits, b_bits, 3000, seed), false) == 0);
+  CHECK(run_pipe_mul(dut, latency, a_bits, b_bits, mul_items(a_bits, b_bits, 1000, seed + 1), true) == 0);
+}
+
+#define PHONG_MUL_SECTION(a, b, t) \
+  SECTION(#a "x" #b " tiles " #t) { phong_style_case<Vphong_mul_##a##x##b##_t##t>(a, b, a * 1000 + b * 10 + t); }
+
+TEST_CASE("phong_mul styles: DSP tiles give exact products at phong_mul's latency",
+          "[rtl][pipe_mul][style][phong]") {
+  SPECULAR_PHONG_MUL_WIDTHS(PHONG_MUL_SECTION)
 }
 
 // ------------------------------------------------------------------------------------

@@ -15,7 +15,9 @@
 
 module phong_dot #(
   parameter int AccBits = 29,
-  parameter int OpBits  = 20
+  parameter int OpBits  = 20,
+  // 0: LUT-tree multipliers; 16 / 18: DSP tiles (docs/pipeline.md#multiplier-styles)
+  parameter int MulTileBits = 0
 ) (
   input  logic                      clk_i,
   input  logic                      en_i,
@@ -59,11 +61,11 @@ module phong_dot #(
   // ---- products ----
   logic [PBits-1:0] pd [3], pa [3], pb [3];
   for (genvar c = 0; c < 3; c++) begin : gen_mul
-    phong_mul #(.ABits (OpBits), .BBits (OpBits)) u_mul_ab (
+    phong_mul #(.ABits (OpBits), .BBits (OpBits), .TileBits (MulTileBits)) u_mul_ab (
       .clk_i (clk_i), .en_i (en_i), .a_i (ma_1[c]), .b_i (mb_1[c]), .p_o (pd[c]));
-    phong_mul #(.ABits (OpBits), .BBits (OpBits)) u_mul_aa (
+    phong_mul #(.ABits (OpBits), .BBits (OpBits), .TileBits (MulTileBits)) u_mul_aa (
       .clk_i (clk_i), .en_i (en_i), .a_i (ma_1[c]), .b_i (ma_1[c]), .p_o (pa[c]));
-    phong_mul #(.ABits (OpBits), .BBits (OpBits)) u_mul_bb (
+    phong_mul #(.ABits (OpBits), .BBits (OpBits), .TileBits (MulTileBits)) u_mul_bb (
       .clk_i (clk_i), .en_i (en_i), .a_i (mb_1[c]), .b_i (mb_1[c]), .p_o (pb[c]));
   end
   logic [2:0] s_m;

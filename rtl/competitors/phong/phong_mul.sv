@@ -4,12 +4,15 @@
 // Pipelined unsigned multiplier p = a * b of phong_stream: one register holding a, 3a (the
 // one carry chain of the stage) and b, then specular_pipe_mul's radix-4 tree. Latency
 // phong_pkg::mul_stages(BBits); en_i freezes every stage. No reset (datapath only).
+// TileBits picks specular_pipe_mul's resources, LUT tree or DSP tiles of the same latency
+// (docs/pipeline.md#multiplier-styles); the tiles take no 3a, so synthesis drops its adder.
 
 `include "specular_assert.svh"
 
 module phong_mul #(
-  parameter int ABits = 16,
-  parameter int BBits = 16
+  parameter int ABits    = 16,
+  parameter int BBits    = 16,
+  parameter int TileBits = 0    // 0: LUT tree; else the DSP tile width (16 UP5K, 18 ECP5)
 ) (
   input  logic                   clk_i,
   input  logic                   en_i,
@@ -35,8 +38,9 @@ module phong_mul #(
   end
 
   specular_pipe_mul #(
-    .ABits (ABits),
-    .BBits (BBits)
+    .ABits    (ABits),
+    .BBits    (BBits),
+    .TileBits (TileBits)
   ) u_tree (
     .clk_i (clk_i),
     .en_i  (en_i),

@@ -22,7 +22,9 @@ module phong_norm #(
   parameter int RsqrtAddrBits = 6,
   parameter int Newton        = 2,
   parameter int CosFrac       = 23,
-  parameter     RsqrtRomFile  = ""
+  parameter     RsqrtRomFile  = "",
+  // 0: LUT-tree multipliers; 16 / 18: DSP tiles (docs/pipeline.md#multiplier-styles)
+  parameter int MulTileBits   = 0
 ) (
   input  logic                       clk_i,
   input  logic                       en_i,
@@ -94,7 +96,7 @@ module phong_norm #(
 
   // ---- ma * mb, dn0 beside ----
   logic [2*NormBits-1:0] m_p;
-  phong_mul #(.ABits (NormBits), .BBits (NormBits)) u_mul_m (
+  phong_mul #(.ABits (NormBits), .BBits (NormBits), .TileBits (MulTileBits)) u_mul_m (
     .clk_i (clk_i), .en_i (en_i), .a_i (ma_2), .b_i (mb_2), .p_o (m_p));
 
   logic [DBits+CosFrac-1:0] sd;
@@ -163,11 +165,11 @@ module phong_norm #(
     logic [2*NormBits+1:0] y_p;
     logic [NormBits-1:0]   mm_d, y_d;
     logic [NormBits+1:0]   v_q;
-    phong_mul #(.ABits (NormBits), .BBits (NormBits)) u_mul_sq (
+    phong_mul #(.ABits (NormBits), .BBits (NormBits), .TileBits (MulTileBits)) u_mul_sq (
       .clk_i (clk_i), .en_i (en_i), .a_i (y_s[s]), .b_i (y_s[s]), .p_o (sq_p));
     specular_delay #(.Width (NormBits), .Depth (MulN), .Reset (1'b0)) u_mm_d (
       .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (mm_s[s]), .q_o (mm_d));
-    phong_mul #(.ABits (NormBits), .BBits (NormBits)) u_mul_u (
+    phong_mul #(.ABits (NormBits), .BBits (NormBits), .TileBits (MulTileBits)) u_mul_u (
       .clk_i (clk_i), .en_i (en_i), .a_i (mm_d), .b_i (sq_p[NormBits +: NormBits]), .p_o (u_p));
     always_ff @(posedge clk_i) begin
       if (en_i) begin
@@ -176,7 +178,7 @@ module phong_norm #(
     end
     specular_delay #(.Width (NormBits), .Depth (2 * MulN + 1), .Reset (1'b0)) u_y_d (
       .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (y_s[s]), .q_o (y_d));
-    phong_mul #(.ABits (NormBits), .BBits (NormBits + 2)) u_mul_y (
+    phong_mul #(.ABits (NormBits), .BBits (NormBits + 2), .TileBits (MulTileBits)) u_mul_y (
       .clk_i (clk_i), .en_i (en_i), .a_i (y_d), .b_i (v_q), .p_o (y_p));
     assign y_s[s+1] = y_p[NormBits+1 +: NormBits];
     specular_delay #(.Width (NormBits + DnBits + 1), .Depth (StepLen), .Reset (1'b0)) u_side (
@@ -189,7 +191,7 @@ module phong_norm #(
   // ---- c = dn * y ----
   logic [DnBits+NormBits-1:0] c_p;
   logic                       dpos_c;
-  phong_mul #(.ABits (DnBits), .BBits (NormBits)) u_mul_c (
+  phong_mul #(.ABits (DnBits), .BBits (NormBits), .TileBits (MulTileBits)) u_mul_c (
     .clk_i (clk_i), .en_i (en_i), .a_i (dn_s[Newton]), .b_i (y_s[Newton]), .p_o (c_p));
   specular_delay #(.Width (1), .Depth (MulC), .Reset (1'b0)) u_dpos_c (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (dpos_s[Newton]), .q_o (dpos_c));

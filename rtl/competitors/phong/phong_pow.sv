@@ -30,7 +30,9 @@ module phong_pow #(
   parameter int NBits       = 10,
   parameter int CBits       = 16,
   parameter     LogRomFile  = "",
-  parameter     ExpRomFile  = ""
+  parameter     ExpRomFile  = "",
+  // 0: LUT-tree multipliers; 16 / 18: DSP tiles (docs/pipeline.md#multiplier-styles)
+  parameter int MulTileBits = 0
 ) (
   input  logic              clk_i,
   input  logic              en_i,
@@ -122,7 +124,7 @@ module phong_pow #(
 
   // ---- dv * t, then v + round(dv t), w ----
   logic [LogDBits+LogFracBits-1:0] lp;
-  phong_mul #(.ABits (LogDBits), .BBits (LogFracBits)) u_mul_log (
+  phong_mul #(.ABits (LogDBits), .BBits (LogFracBits), .TileBits (MulTileBits)) u_mul_log (
     .clk_i (clk_i), .en_i (en_i), .a_i (lw_3[LogDBits-1:0]), .b_i (t_3), .p_o (lp));
   logic [LogBits-1:0] v_m;
   logic [EBits-1:0]   e_m;
@@ -158,7 +160,7 @@ module phong_pow #(
   specular_delay #(.Width (NBits + CBits + 1), .Depth (ToW), .Reset (1'b0)) u_n_side (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i ({n_i, scale_i, zero_i}), .q_o ({n_w, scale_w, zero_w}));
   logic [ZBits-1:0] z;
-  phong_mul #(.ABits (NBits), .BBits (WBits)) u_mul_z (
+  phong_mul #(.ABits (NBits), .BBits (WBits), .TileBits (MulTileBits)) u_mul_z (
     .clk_i (clk_i), .en_i (en_i), .a_i (n_w), .b_i (w_6), .p_o (z));
   logic [CBits-1:0] scale_z;
   logic             zero_z;
@@ -198,7 +200,7 @@ module phong_pow #(
   end
 
   logic [ExpDBits+ExpFracBits-1:0] xp;
-  phong_mul #(.ABits (ExpDBits), .BBits (ExpFracBits)) u_mul_exp (
+  phong_mul #(.ABits (ExpDBits), .BBits (ExpFracBits), .TileBits (MulTileBits)) u_mul_exp (
     .clk_i (clk_i), .en_i (en_i), .a_i (xw_7[ExpDBits-1:0]), .b_i (t_7), .p_o (xp));
   logic [ExpBits:0]   u_m;
   logic [ShBits-1:0]  zi_m;
@@ -232,7 +234,7 @@ module phong_pow #(
 
   // ---- scale * p, rounding ----
   logic [CBits+ExpBits:0] sp;
-  phong_mul #(.ABits (CBits), .BBits (ExpBits + 1)) u_mul_scale (
+  phong_mul #(.ABits (CBits), .BBits (ExpBits + 1), .TileBits (MulTileBits)) u_mul_scale (
     .clk_i (clk_i), .en_i (en_i), .a_i (scale_10), .b_i (p_10), .p_o (sp));
   logic zero_s;
   specular_delay #(.Width (1), .Depth (MulS), .Reset (1'b0)) u_zero_s (

@@ -27,7 +27,9 @@ module phong_span_setup #(
   parameter int MaxN    = 1000,
   parameter int CBits   = 16,
   parameter int TagBits = 16,
-  parameter bit ConstH  = 1'b0
+  parameter bit ConstH  = 1'b0,
+  // 0: LUT-tree multipliers; 16 / 18: DSP tiles (docs/pipeline.md#multiplier-styles)
+  parameter int MulTileBits = 0
 ) (
   input  logic                          clk_i,
   input  logic                          rst_ni,
@@ -164,14 +166,14 @@ module phong_span_setup #(
   // ---- the multipliers L * |N1|, L * |H1| (MulDepth stages); the steps and span values beside ----
   logic [LenBits+VecBits-1:0] pn_m [3], ph_m [3];
   for (genvar c = 0; c < 3; c++) begin : gen_mul
-    phong_mul #(.ABits (LenBits), .BBits (VecBits)) u_mul_n (
+    phong_mul #(.ABits (LenBits), .BBits (VecBits), .TileBits (MulTileBits)) u_mul_n (
       .clk_i (clk_i), .en_i (en_i), .a_i (l_2), .b_i (magn_2[c]), .p_o (pn_m[c]));
     if (ConstH) begin : gen_const_h
       logic unused_magh;
       assign unused_magh = ^magh_2[c];
       assign ph_m[c] = '0;
     end else begin : gen_var_h
-      phong_mul #(.ABits (LenBits), .BBits (VecBits)) u_mul_h (
+      phong_mul #(.ABits (LenBits), .BBits (VecBits), .TileBits (MulTileBits)) u_mul_h (
         .clk_i (clk_i), .en_i (en_i), .a_i (l_2), .b_i (magh_2[c]), .p_o (ph_m[c]));
     end
   end

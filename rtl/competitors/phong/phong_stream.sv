@@ -49,7 +49,11 @@ module phong_stream #(
   parameter int ExpBits       = 16,
   parameter     RsqrtRomFile  = "roms/phong/n1000/rsqrt.hex",
   parameter     LogRomFile    = "roms/phong/n1000/log2.hex",
-  parameter     ExpRomFile    = "roms/phong/n1000/exp2.hex"
+  parameter     ExpRomFile    = "roms/phong/n1000/exp2.hex",
+  // The multipliers' resources (phong_mul's TileBits): 0 LUT trees (iCE40-HX8K), 16
+  // SB_MAC16 tiles (UP5K), 18 MULT18X18D tiles (ECP5); bit-exact and of one latency
+  // (docs/pipeline.md#multiplier-styles), so no stage count depends on it.
+  parameter int MulTileBits   = 0
 ) (
   input  logic                   clk_i,
   input  logic                   rst_ni,
@@ -90,7 +94,8 @@ module phong_stream #(
     .NBits   (NBits),
     .CBits   (CBits),
     .TagBits (TagBits),
-    .ConstH  (ConstH)
+    .ConstH  (ConstH),
+    .MulTileBits (MulTileBits)
   ) u_setup (
     .clk_i   (clk_i),
     .rst_ni  (rst_ni),
@@ -186,7 +191,7 @@ module phong_stream #(
   // ---------------------------------------------------------------------------------
   logic signed [2*OpBits+1:0] d;
   logic [2*OpBits-1:0]        na, nb;
-  phong_dot #(.AccBits (AccBits), .OpBits (OpBits)) u_dot (
+  phong_dot #(.AccBits (AccBits), .OpBits (OpBits), .MulTileBits (MulTileBits)) u_dot (
     .clk_i (clk_i), .en_i (adv), .a_i (a_q), .b_i (b_q), .d_o (d), .na_o (na), .nb_o (nb));
 
   logic [CosFrac:0] cosv;
@@ -197,7 +202,8 @@ module phong_stream #(
     .RsqrtAddrBits (RsqrtAddrBits),
     .Newton        (Newton),
     .CosFrac       (CosFrac),
-    .RsqrtRomFile  (RsqrtRomFile)
+    .RsqrtRomFile  (RsqrtRomFile),
+    .MulTileBits   (MulTileBits)
   ) u_norm (
     .clk_i  (clk_i),
     .en_i   (adv),
@@ -230,7 +236,8 @@ module phong_stream #(
     .NBits       (NBits),
     .CBits       (CBits),
     .LogRomFile  (LogRomFile),
-    .ExpRomFile  (ExpRomFile)
+    .ExpRomFile  (ExpRomFile),
+    .MulTileBits (MulTileBits)
   ) u_pow (
     .clk_i       (clk_i),
     .en_i        (adv),
