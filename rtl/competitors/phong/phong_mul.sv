@@ -25,6 +25,12 @@ module phong_mul #(
     `SPEC_PARAM_ERROR("phong_mul: ABits must be >= 1 and BBits >= 2")
   end
 
+  // The latency, public so that the block test takes it from phong_pkg instead of a copy;
+  // nothing in the module reads it.
+  /* verilator lint_off UNUSEDPARAM */
+  localparam int Stages /*verilator public*/ = phong_pkg::mul_stages(BBits);
+  /* verilator lint_on UNUSEDPARAM */
+
   logic [ABits-1:0] a_q;
   logic [ABits+1:0] a3_q;
   logic [BBits-1:0] b_q;
