@@ -264,11 +264,11 @@ for top in "${tops[@]}"; do
     dir="$out/${top}${phong_cfg:+_$phong_cfg}${setup_ii:+_ii$setup_ii}_${dev}"
     # The multipliers in the resources of the part (docs/pipeline.md#multiplier-styles): LUT
     # trees on the HX8K, SB_MAC16 tiles on the UP5K, MULT18X18D tiles on the ECP5, unless
-    # --param sets the style. The setup and the competitor do not build theirs through it yet.
+    # --param sets the style. The setup does not build its products through it yet.
     style_param=
     case "$dev" in hx8k) tile=0 ;; up5k) tile=16 ;; *) tile=18 ;; esac
     case "$top" in
-      unit|stream|axil|system) style_param="MulTileBits=$tile" ;;
+      unit|stream|axil|system|phong) style_param="MulTileBits=$tile" ;;
       mul) style_param="TileBits=$tile" ;;
     esac
     if [ -n "$style_param" ] && [[ " ${params[*]+"${params[*]}"} " == *" ${style_param%=*}="* ]]; then

@@ -5,15 +5,14 @@ the device's build configurations and the per-pixel Blinn-Phong core `phong_stre
 
   measure_phong(...)  BUILD/bin/phong_search --measure CONFIG --n-step S --json OUT/phong_CONFIG.json
                       (the error of each Phong configuration, golden model, measured in this run)
-  synth_phong(...)    scripts/phong_synth.sh CONFIG ice40|ecp5 (Yosys cell counts, cached by a hash
-                      of the RTL, ROMs, configuration, script and Yosys version)
+  phong_figures(...)  the Phong configurations' cells from docs/fpga_figures.json (scripts/fpga.sh:
+                      HX8K Yosys counts, ECP5 place and route)
   points(...)         one row per point: cost (cells) and error per n range
   plot(...), write(...)  the figure OUT/hw_plane.png and the report section
 
 Used by scripts/make_report.py; tests/report/check_make_report.py recomputes the table from
 OUT/report_data.json, OUT/phong_*.json and OUT/hw_plane_cells.json.
 """
-import hashlib
 import json
 import os
 import subprocess
@@ -23,8 +22,6 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 # The Phong configurations of docs/phong_hw.md (names of roms/phong/phong_configs.cmake).
 PHONG_CONFIGS = ("n1000", "n128", "n64", "n1000_consth")
-# synth_ecp5 takes 4 minutes or more per configuration on this machine: only the extremes.
-ECP5_CONFIGS = ("n1000", "n64")
 # The n ranges of the plane: 1..64, 1..128, 1..1000 (the ranges the Phong presets serve).
 RANGES = (64, 128, 1000)
 REL_BUDGET, ABS_BUDGET = 1e-3, 1e-2  # 0.10 % + 1 LSB in the epicenter, 0.01 C over the lobe
@@ -65,62 +62,30 @@ def measure_phong(exe, out, logs, n_step, missing, timings):
     return res
 
 
-def parse_synth_line(text):
-    """The last 'phong_synth CONFIG MODE: K V K V ...' line of scripts/phong_synth.sh as a dict."""
-    line = [l for l in text.splitlines() if l.startswith("phong_synth ")][-1]
-    parts = line.split(":", 1)[1].split()
-    return {k: int(v) for k, v in zip(parts[0::2], parts[1::2])}
-
-
-def synth_one(out, logs, cfg, mode, fresh, rtl_sources):
-    """Yosys counts of phong_stream in configuration cfg (scripts/phong_synth.sh), cached: the
-    same RTL, ROMs, configuration file, script and Yosys give the same netlist."""
-    d = os.path.join(out, "synth", f"phong_{cfg}")
-    os.makedirs(d, exist_ok=True)
-    res_file = os.path.join(d, f"{mode}.json")
-    h = hashlib.sha256()
-    roms = sorted(os.path.join(ROOT, "roms", "phong", cfg.replace("_consth", ""), f)
-                  for f in os.listdir(os.path.join(ROOT, "roms", "phong", cfg.replace("_consth", ""))))
-    for path in rtl_sources + roms + [os.path.join(ROOT, "roms", "phong", "phong_configs.cmake"),
-                                      os.path.join(ROOT, "scripts", "phong_synth.sh")]:
-        with open(path, "rb") as f:
-            h.update(f.read())
-    h.update(f"{cfg} {mode}".encode())
-    h.update(subprocess.run(["yosys", "-V"], capture_output=True, text=True).stdout.encode())
-    key = h.hexdigest()
-    if not fresh and os.path.exists(res_file):
-        with open(res_file) as f:
-            old = json.load(f)
-        if old.get("key") == key:
-            old["reused"] = True
-            return old
-    log = os.path.join(logs, f"synth_phong_{cfg}_{mode}.log")
-    t0 = time.time()
+def phong_figures(path=os.path.join(ROOT, "docs", "fpga_figures.json")):
+    """The committed scripts/fpga.sh figures of phong_stream per configuration (make fpga
+    --top phong --phong-config CFG; synthesis and place and route of the Phong core take longer
+    than a report run, so the report reads them): (cfg, "ice40") -> the HX8K run's Yosys counts
+    (LUT trees; the core needs more logic cells than any iCE40 has, so there is no placement),
+    (cfg, "ecp5") -> the placed and routed ECP5 run (MULT18X18D tiles) with its Fmax and part.
+    Each with the RTL commit of its run."""
     try:
-        rc = run_logged(["bash", os.path.join(ROOT, "scripts", "phong_synth.sh"), cfg, mode, d], log, timeout=3600)
-    except subprocess.TimeoutExpired:
-        return {"error": "yosys timed out"}
-    if rc != 0:
-        return {"error": f"scripts/phong_synth.sh exit {rc} (logs/{os.path.basename(log)})"}
-    with open(log) as f:
-        counts = parse_synth_line(f.read())
-    res = {"key": key, "counts": counts, "seconds": time.time() - t0}
-    with open(res_file, "w") as f:
-        json.dump(res, f, indent=1)
-    res["reused"] = False
+        with open(path) as f:
+            d = json.load(f)
+    except (OSError, ValueError):
+        return {}
+    res = {}
+    for e in d.get("synthesis_runs", []) + d.get("runs", []):
+        if e.get("core") == "phong_stream" and e.get("part", "").startswith("HX8K"):
+            res[(e["config"], "ice40")] = {"counts": {"SB_LUT4": e["sb_lut4"], "SB_DFF*": e["ffs"],
+                                                      "SB_RAM40_4K": e["brams"]}, "rtl": e["rtl"]}
+    for e in d.get("ecp5_runs", []):
+        if e.get("core") == "phong_stream":
+            res[(e["config"], "ecp5")] = {"counts": {"LUT4": e["lut4"], "MULT18X18D": e["mult18x18d"],
+                                                     "DP16KD": e["dp16kd"], "TRELLIS_FF": e["ffs"],
+                                                     "fmax_mhz": e["fmax_mhz"], "part": e["part"]},
+                                          "rtl": e["rtl"]}
     return res
-
-
-def synth_phong(pool, out, logs, fresh, rtl_sources, missing, timings):
-    """(cfg, mode) -> counts: every PHONG_CONFIGS in synth_ice40, ECP5_CONFIGS in synth_ecp5."""
-    t0 = time.time()
-    jobs = [(c, "ice40") for c in PHONG_CONFIGS] + [(c, "ecp5") for c in ECP5_CONFIGS]
-    res = dict(zip(jobs, pool.map(lambda j: synth_one(out, logs, j[0], j[1], fresh, rtl_sources), jobs)))
-    timings["yosys (Phong configurations)"] = time.time() - t0
-    for (c, m), r in res.items():
-        if "error" in r:
-            missing.append(f"synthesis of phong_stream {c} ({m}): {r['error']}")
-    return {k: v for k, v in res.items() if "counts" in v}
 
 
 def points(data, phong, cells, phong_cells):
@@ -184,23 +149,26 @@ def fmt(v):
 
 
 def ecp5_runs(path=os.path.join(ROOT, "docs", "fpga_figures.json")):
-    """The ECP5 synthesis entries of docs/fpga_figures.json (scripts/fpga.sh --device ecp5, the same
-    harness and hierarchical flow for every core): name -> entry, for specular_system at each SetupII
-    ("specular_system" is SetupII 1, "specular_system SetupII=K" the others) and each phong_stream
-    configuration ("phong CONFIG")."""
+    """The ECP5 entries of docs/fpga_figures.json (scripts/fpga.sh --device ecp5, the same harness for
+    every core): name -> entry, for specular_system at each SetupII ("specular_system" is SetupII 1,
+    "specular_system SetupII=K" the others; synthesis counts, the system fits no ECP5) and each
+    phong_stream configuration ("phong CONFIG"; its placed and routed run where there is one)."""
     try:
         with open(path) as f:
-            runs = json.load(f).get("synthesis_runs", [])
+            d = json.load(f)
     except (OSError, ValueError):
         return {}
     out = {}
-    for e in runs:
+    for e in d.get("synthesis_runs", []):
         if e.get("part") != "ECP5":
             continue
         if e.get("core") == "specular_system":
             ii = e.get("setup_ii", 1)
             out["specular_system" + (f" SetupII={ii}" if ii != 1 else "")] = e
         elif e.get("core") == "phong_stream":
+            out[f"phong {e.get('config')}"] = e
+    for e in d.get("ecp5_runs", []):
+        if e.get("core") == "phong_stream":
             out[f"phong {e.get('config')}"] = e
     return out
 
@@ -232,8 +200,9 @@ def write_system_cost(w, runs, ii_sim=None):
         return
     w("The device with its setup in hardware (`specular_system`; `SetupII` = 1 takes one span per clock, `SetupII` = k "
       "at most one every k clocks with the setup's hardware shared over them, docs/setup_hw.md#sharing-over-setupii-clocks) "
-      "against the Phong cores, Yosys `synth_ecp5` in the same harness and flow (`scripts/fpga.sh --device ecp5`; "
-      "synthesis only, no ECP5 place and route here; from docs/fpga_figures.json, not measured in this run):\n")
+      "against the Phong cores, in the same harness and flow (`scripts/fpga.sh --device ecp5`; the system's Yosys "
+      "`synth_ecp5` counts, as it fits no ECP5; a Phong core's placed and routed counts where its run has them; "
+      "from docs/fpga_figures.json, not measured in this run):\n")
     w("| core | RTL | LUT4 | CCU2C | MULT18X18D | DP16KD | FF |")
     w("|---|---|---|---|---|---|---|")
     for k, v in systems:
@@ -325,10 +294,11 @@ def table_row(r):
     if r["cost"] is None:
         cost = ["n/a"] * 5
     else:
-        fits = "yes" if r["lc_min"] <= ICE40_MAX_LC else "no: synthesis only; does not fit any iCE40"
+        fits = "yes" if r["lc_min"] <= ICE40_MAX_LC else "no: does not fit any iCE40"
         cost = [str(r["lut4"]), str(r["ff"]), str(r["bram"]), str(r["lc_min"]), fits]
     e = r.get("ecp5")
-    ecp5 = (f"{e['LUT4']} / {e['MULT18X18D']} / {e['DP16KD']} / {e['TRELLIS_FF']} (synthesis only)" if e else
+    ecp5 = (f"{e['LUT4']} / {e['MULT18X18D']} / {e['DP16KD']} / {e['TRELLIS_FF']}, {e['fmax_mhz']:.2f} MHz "
+            f"({e['part']})" if e else
             ("not run" if r["kind"] == "phong" else "-"))
     return ([r["name"], r["core"]] + cost + [ecp5] + [fmt(r["rel"][g]) for g in RANGES]
             + [fmt(r["abs"][g]) for g in RANGES])
@@ -343,9 +313,12 @@ def write(w, rows, phong, sim, n_step, synth_ran):
     w("Every hardware configuration is a point: the device's build configurations of section 4 (`specular_unit`, and "
       "`specular_stream` of the default configuration, the core with the same pixel interface as the competitor) and "
       "the per-pixel Blinn-Phong core `phong_stream` (docs/phong_hw.md) in the configurations found by its search. "
-      "Cost: Yosys `synth_ice40` cells (LUT multipliers, no DSP, in both); 'logic cells (at least)' is max(SB_LUT4, FF), "
-      f"since every LUT4 and every flip-flop takes a logic cell of its own (an iCE40 has at most {ICE40_MAX_LC}); the "
-      "ECP5 column is Yosys `synth_ecp5` of the Phong core (synthesis only, no placement). Error: the worst over "
+      "Cost, in one flow (`scripts/fpga.sh`, the out-of-context harness with registered IO, its cells included): the "
+      "HX8K's Yosys `synth_ice40` cells (LUT-tree multipliers in both, the HX8K has no DSP): the device's configurations "
+      "from this run, the Phong core's from docs/fpga_figures.json (`make fpga`, commit in its entries; not re-run here); "
+      f"'logic cells (at least)' is max(SB_LUT4, FF), since every LUT4 and every flip-flop takes a logic cell of its own "
+      f"(an iCE40 has at most {ICE40_MAX_LC}); the ECP5 column is the Phong core placed and routed with MULT18X18D "
+      "tiles (LUT4 / MULT18X18D / DP16KD / FF, Fmax, part; docs/fpga_figures.json). Error: the worst over "
       "n = 1..R of the relative epicenter error with the 1-LSB allowance, (|err| - 1 LSB) / ref, and of the absolute "
       "lobe error / C: the device from section 4's sweep (its absolute error without the allowance), the Phong core "
       "from its golden model in this run (`phong_search --measure CONFIG --n-step S`, the sweep of "

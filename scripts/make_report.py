@@ -10,9 +10,9 @@ Every figure in the text is taken from the outputs of this run:
                               break-even span length, the host cores it takes to feed the core
   BUILD/bin/report_data       errors (docs/metrics.md), albedo, device error of RTL
                               configurations (golden model), the hard cases of docs/scanline_setup.md
-  yosys                       ice40 cell counts per RTL build configuration (committed ROMs)
+  scripts/fpga.sh --top unit   HX8K cell counts per RTL build configuration (committed ROMs)
   BUILD/bin/phong_search      the per-pixel Blinn-Phong core's error per configuration (section 4b,
-                              scripts/hw_plane.py; its cells by scripts/phong_synth.sh)
+                              scripts/hw_plane.py; its cells from docs/fpga_figures.json)
   BUILD/bin/sim_regression    Verilator regression throughput (reduced random count)
   scripts/fpga.sh             out-of-context place and route (nextpnr-ice40, HX8K and UP5K)
 Missing programs are reported in the text, not silently skipped.
@@ -23,7 +23,6 @@ import argparse
 import concurrent.futures
 import datetime
 import glob
-import hashlib
 import json
 import math
 import os
@@ -191,69 +190,46 @@ class Report:
         return json.load(open(path))
 
     def synth_one(self, cfg):
-        """Yosys synth_ice40 of cfg['top'] (default specular_unit) for one build configuration of
-        report_data's hardware section: its committed ROM files and its parameters by chparam."""
+        """Cells of cfg['top'] (default specular_unit) for one build configuration of report_data's
+        hardware section: scripts/fpga.sh on the HX8K (the one flow of every FPGA figure,
+        rtl/fpga/README.md), its committed ROM files and its parameters by --param; LUT trees
+        (MulTileBits=0), as on the HX8K. fpga.sh reuses a run whose sources, ROMs, parameters
+        and tools are unchanged (--fresh-synth forces it)."""
         top = cfg.get("top", "specular_unit")
-        d = os.path.join(self.out, "synth", cfg["name"])
-        os.makedirs(d, exist_ok=True)
-        log = os.path.join(self.logs, f"synth_{cfg['name']}.log")
-        coef = [os.path.join(ROOT, cfg["coef_rom"])]
-        cos = [os.path.join(ROOT, cfg["cos_rom"])]
-        for path in coef + cos:
-            if not os.path.exists(path):
-                return {"error": f"ROM file {os.path.relpath(path, ROOT)} missing (make roms)"}
+        for rom in (cfg["coef_rom"], cfg["cos_rom"]):
+            if not os.path.exists(os.path.join(ROOT, rom)):
+                return {"error": f"ROM file {rom} missing (make roms)"}
         nb = len(cfg["banks"])
         # BankMaxN is {bank_max_n[nb-1], ..., bank_max_n[0]}, 10 bits each.
         packed = sum(v << (10 * j) for j, v in enumerate(cfg["bank_max_n"]))
-        stat = os.path.join(d, "stat_ice40.txt")
-        sources = " ".join([f"-I{d}" for d in rtl_filelist()[1]] + rtl_sources())
-        script = os.path.join(d, "synth.ys")
         params = {"CoefBits": cfg["coef_bits"], "CoefFrac": cfg["coef_frac"], "PsiMulFrac": cfg["psi_mul_frac"],
                   "CosInterp": 1 if cfg["cos_interp"] else 0, "CosAddrBits": cfg["cos_addr_bits"],
                   "CosDataBits": cfg["cos_data_bits"], "CosDeltaBits": cfg["cos_delta_bits"],
-                  "CosFracBits": cfg["cos_frac_bits"], "NumBanks": nb}
-        sets = " ".join(f"-set {k} {v}" for k, v in params.items())
-        with open(script, "w") as f:
-            f.write(f"read_verilog -sv {sources}\n"
-                    f"chparam {sets} -set BankMaxN {10 * nb}'h{packed:x} "
-                    f"-set CoefRomFile \"{coef[0]}\" -set CosRomFile \"{cos[0]}\" {top}\n"
-                    f"hierarchy -check -top {top}\n"
-                    f"synth_ice40 -top {top}\n"
-                    f"tee -q -o {stat} stat\n")
-        # Synthesis is deterministic: with identical RTL, ROM contents, script and Yosys the
-        # previous run's netlist statistics are this run's, so they are reused (and marked).
-        h = hashlib.sha256()
-        for path in rtl_sources() + [coef[0], cos[0]]:
-            h.update(open(path, "rb").read())
-        h.update(open(script, "rb").read())
-        h.update(subprocess.run(["yosys", "-V"], capture_output=True, text=True).stdout.encode())
-        key = h.hexdigest()
-        key_file = os.path.join(d, "synth.key")
+                  "CosFracBits": cfg["cos_frac_bits"], "NumBanks": nb, "BankMaxN": f"{10 * nb}'h{packed:x}",
+                  "CoefRomFile": cfg["coef_rom"], "CosRomFile": cfg["cos_rom"]}
+        out = os.path.join(self.out, "synth", cfg["name"])
+        cmd = ["bash", os.path.join(ROOT, "scripts", "fpga.sh"), "--top", {"specular_unit": "unit"}.get(top, "stream"),
+               "--device", "hx8k", "--out", out]
+        for k, v in params.items():
+            cmd += ["--param", f"{k}={v}"]
+        if self.args.fresh_synth:
+            cmd.append("--fresh")
+        log = os.path.join(self.logs, f"synth_{cfg['name']}.log")
         t0 = time.time()
-        reused = (not self.args.fresh_synth and os.path.exists(stat) and os.path.exists(key_file)
-                  and open(key_file).read().strip() == key)
-        if not reused:
-            for f in (stat, key_file):
-                if os.path.exists(f):
-                    os.remove(f)
-            try:
-                rc, _ = run(["yosys", "-q", "-l", log, "-s", script], log + ".stdout", timeout=600)
-            except subprocess.TimeoutExpired:
-                return {"error": "yosys timed out"}
-            if rc != 0:
-                return {"error": f"yosys exit {rc} (logs/{os.path.basename(log)})"}
-            with open(key_file, "w") as f:
-                f.write(key + "\n")
-        cells = {}
-        for line in open(stat):
-            parts = line.split()
-            if len(parts) == 2 and parts[0].startswith("SB_") and parts[1].isdigit():
-                cells[parts[0]] = cells.get(parts[0], 0) + int(parts[1])
-        return {"lut4": cells.get("SB_LUT4", 0),
-                "ff": sum(v for k, v in cells.items() if k.startswith("SB_DFF")),
-                "bram": cells.get("SB_RAM40_4K", 0),
-                "carry": cells.get("SB_CARRY", 0),
-                "reused": reused,
+        try:
+            rc, _ = run(cmd, log, timeout=3600)
+        except subprocess.TimeoutExpired:
+            return {"error": "scripts/fpga.sh timed out"}
+        if rc != 0:
+            return {"error": f"scripts/fpga.sh exit {rc} (logs/{os.path.basename(log)})"}
+        try:
+            r = json.load(open(os.path.join(out, "summary.json")))["runs"][0]
+        except (OSError, ValueError, KeyError, IndexError):
+            return {"error": f"scripts/fpga.sh wrote no summary (logs/{os.path.basename(log)})"}
+        y = r["yosys"]
+        return {"lut4": y["lut4"], "ff": y["ff"], "bram": y["bram"], "carry": y["carry"],
+                "fmax_mhz": r.get("fmax_mhz"),
+                "reused": "result reused" in open(log).read(),
                 "seconds": time.time() - t0}
 
     def synth(self, configs):
@@ -262,8 +238,8 @@ class Report:
         if not shutil.which("yosys"):
             self.missing.append("yosys is not on PATH: no cell counts")
             return {}
-        if not glob.glob(os.path.join(ROOT, "rtl", "specular_unit.sv")):
-            self.missing.append("rtl/core/specular_unit.sv missing: no Yosys cell counts")
+        if not shutil.which("nextpnr-ice40"):
+            self.missing.append("nextpnr-ice40 is not on PATH: no cell counts")
             return {}
         t0 = time.time()
         with concurrent.futures.ThreadPoolExecutor(max_workers=self.args.jobs) as pool:
@@ -299,18 +275,13 @@ class Report:
 
     def hardware_plane(self, data, cells):
         """Section 4b (scripts/hw_plane.py): the Phong configurations' errors (phong_search --measure,
-        this run) and cells (scripts/phong_synth.sh; not in --smoke), the plane's rows and figure."""
+        this run) and cells (docs/fpga_figures.json: make fpga's runs), the plane's rows and figure."""
         self.phong = hw_plane.measure_phong(self.exe("phong_search"), self.out, self.logs,
                                             max(self.args.n_step, 111) if self.args.smoke else self.args.n_step,
                                             self.missing, self.timings)
-        self.phong_cells = {}
-        if not self.args.smoke:
-            if shutil.which("yosys"):
-                with concurrent.futures.ThreadPoolExecutor(max_workers=self.args.jobs) as pool:
-                    self.phong_cells = hw_plane.synth_phong(pool, self.out, self.logs, self.args.fresh_synth,
-                                                            rtl_sources(), self.missing, self.timings)
-            else:
-                self.missing.append("yosys is not on PATH: no Phong cell counts")
+        self.phong_cells = hw_plane.phong_figures()
+        if not self.phong_cells:
+            self.missing.append("docs/fpga_figures.json has no phong_stream runs: no Phong cells in the hardware plane")
         self.plane_rows = hw_plane.points(data, self.phong, cells, self.phong_cells)
         # The raw counts the table was made from (tests/report/check_make_report.py reads them).
         with open(os.path.join(self.out, "hw_plane_cells.json"), "w") as f:
@@ -556,7 +527,7 @@ class Report:
         w("# Speed against error: report\n")
         w(f"Generated {datetime.datetime.now().strftime('%Y-%m-%d %H:%M')} by `scripts/make_report.py` from the "
           f"build in `{os.path.relpath(self.build, ROOT)}`; every number below comes from this run "
-          "(raw outputs beside this file: `bench.json`, `report_data.json`, `sim.json`, `roms/*/stat_ice40.txt`, `logs/`).")
+          "(raw outputs beside this file: `bench.json`, `report_data.json`, `sim.json`, `synth/*/summary.json`, `logs/`).")
         ctx = getattr(self, "bench_context", {})
         if ctx:
             w(f"Host: {ctx.get('num_cpus', '?')} CPUs at {ctx.get('mhz_per_cpu', '?')} MHz, {platform.machine()}, "
@@ -740,10 +711,11 @@ class Report:
           "over the epicenter, n = 1 over all of [0, pi/2] wherever the reference is at least 4 LSB. Decoder tables are "
           "derived from the bank set (`model/device/decoder_table.hpp`: bank j+1 takes over at the first n where its float error "
           "is not larger; this reproduces the patent's 1 | 2 | 3..6 | 7..1000 for {1,2,4,16}). Cells: Yosys "
-          "`synth_ice40` of `specular_unit` with `chparam` for the configuration and its committed ROM files; multipliers "
-          "are LUT logic (no DSP). (r): Yosys was not re-run because the RTL sources, both ROM files, the script and the "
-          "Yosys version hash to the same key as the run that produced `synth/<config>/stat_ice40.txt` (synthesis is "
-          "deterministic; `--fresh-synth` forces it).\n")
+          "`synth_ice40` counts of `scripts/fpga.sh --top unit --device hx8k` (the out-of-context harness with registered "
+          "IO, its cells included; rtl/fpga/README.md) with `--param` for the configuration and its committed ROM files; "
+          "multipliers are LUT trees (no DSP on the HX8K). (r): fpga.sh did not re-run because the RTL sources, both ROM "
+          "files, the parameters and the tools are those of its previous run in `synth/<config>/` (`--fresh-synth` "
+          "forces it).\n")
         hdr = ("| config | ROM 12 addr/data bits | policy | banks (decoder max n) | ROM bits (coef + cos) | worst rel. epicenter | "
                "goal metric (+1 LSB, n = 1 to pi/2) | "
                + " | ".join(f"n={a}..{b}" for a, b in BANDS) + " | worst abs. lobe | LUT4 | FF | SB_RAM40_4K | SB_CARRY |")
@@ -1037,7 +1009,7 @@ def parse_args(argv):
     ap.add_argument("--build", default="build", help="CMake build directory (binaries in BUILD/bin)")
     ap.add_argument("--out", default=None, help="output directory (default BUILD/report)")
     ap.add_argument("--random", type=int, default=100000, help="random scanlines per policy for sim_regression (0..1000000)")
-    ap.add_argument("--jobs", type=int, default=2, help="parallel Yosys runs (1..16)")
+    ap.add_argument("--jobs", type=int, default=2, help="parallel scripts/fpga.sh runs of the build configurations (1..16)")
     ap.add_argument("--n-step", type=int, default=1, help="sample n = 1, 1+S, ..., 1000 for the error sweeps (1..999)")
     ap.add_argument("--fresh-synth", action="store_true",
                     help="re-run Yosys even when RTL, ROMs and script are unchanged since the last run")

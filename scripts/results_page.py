@@ -13,7 +13,6 @@ a date per entry and the commit of the RTL in "rtl"):
     docs/measured/scene_bench.json  scene_bench --json over scenes/*.json
     docs/fpga_figures.json          make fpga (place and route) and its synthesis-only runs
     docs/measured/build_time.json   the build's compiler time per rule, make test on a fresh clone
-    docs/measured/phong_synth.json  the Phong competitor's synth_ice40 counts against the device's
 
 The design documents (docs/*.md) state what is built and why; the figures a run measured are here
 only, and the pages link to this page's sections (docs/README.md, "Measured results").
@@ -31,7 +30,6 @@ SOURCES = {
     "bench": "docs/measured/scene_bench.json",
     "fpga": "docs/fpga_figures.json",
     "build": "docs/measured/build_time.json",
-    "phong_synth": "docs/measured/phong_synth.json",
 }
 
 
@@ -248,23 +246,6 @@ def section_fpga(f, rel):
     return out
 
 
-def section_phong_synth(d, rel):
-    p = provenance(d, rel)
-    dev = d["runs"][0]
-    if dev["core"] != "specular_stream":
-        raise SourceError(f"{rel}: the first run must be the device's specular_stream, the reference of the ratios")
-    out = ["### The Phong competitor against the device: synthesis", "", run_line(p, rel),
-           "Yosys `synth_ice40` cells before placement, no packing, no Fmax; the ratios are to the device's "
-           "`specular_stream` in the same flow ([phong_hw.md](phong_hw.md#cost)). An iCE40 logic cell holds one "
-           "flip-flop, and the largest iCE40 has 7,680.", ""]
-    rows = [[f"`{e['core']}` {e['config']}", num(e["sb_lut4"]), num(e["sb_carry"]), num(e["ffs"]),
-             num(e["sb_ram40_4k"]), f"{e['sb_lut4'] / dev['sb_lut4']:.1f}", f"{e['ffs'] / dev['ffs']:.1f}",
-             num(e["ffs"] <= 7680)] for e in d["runs"]]
-    out += table(["core", "SB_LUT4", "SB_CARRY", "flip-flops", "SB_RAM40_4K", "LUT4 / device", "FF / device",
-                  "flip-flops fit an HX8K"], rows)
-    return out
-
-
 def section_build(b, rel):
     p = provenance(b, rel)
     link = os.path.relpath(rel, "docs")
@@ -310,7 +291,6 @@ def generate(root):
     out += section_setup_ii(data["setup_ii"], SOURCES["setup_ii"]) + [""]
     out += section_bench(data["bench"], SOURCES["bench"]) + [""]
     out += section_fpga(data["fpga"], SOURCES["fpga"]) + [""]
-    out += section_phong_synth(data["phong_synth"], SOURCES["phong_synth"]) + [""]
     out += section_build(data["build"], SOURCES["build"])
     return "\n".join(out) + "\n"
 

@@ -227,10 +227,10 @@ def check_plane(out, md, data):
         else:
             lc = max(lut4, ff)
             cost = [str(lut4), str(ff), str(bram), str(lc),
-                    "yes" if lc <= 7680 else "no: synthesis only; does not fit any iCE40"]
+                    "yes" if lc <= 7680 else "no: does not fit any iCE40"]
         e = "-" if ecp5 is None else ("not run" if ecp5 == "not run" else
                                        f"{ecp5['LUT4']} / {ecp5['MULT18X18D']} / {ecp5['DP16KD']} / "
-                                       f"{ecp5['TRELLIS_FF']} (synthesis only)")
+                                       f"{ecp5['TRELLIS_FF']}, {ecp5['fmax_mhz']:.2f} MHz ({ecp5['part']})")
         want = [name, core] + cost + [e] + [g(v) for v in rel] + [g(v) for v in ab]
         if r != want:
             errors.append(f"hardware plane row {r} != {want} (from the JSON)")
