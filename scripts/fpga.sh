@@ -12,7 +12,7 @@
 #                   [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N]
 #                   [--freq-hx8k MHZ] [--freq-up5k MHZ] [--freq-ecp5 MHZ] [--flatten|--no-flatten]
 #                   [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only]
-#                   [--setup-ii K]
+#                   [--setup-ii K] [--record]
 #
 #   --top         the core in the harness fpga_ooc (its parameter Top): unit
 #                 (specular_unit), stream (specular_stream), axil (specular_axil: the
@@ -58,6 +58,9 @@
 #   --fresh       re-run even when sources, parameters, ROM files and tools are unchanged
 #                 (otherwise an unchanged run's result is reused)
 #   --elaborate-only  only elaborate the harnesses in Yosys (hierarchy -check), no synthesis
+#   --record      after the runs, record them in docs/fpga_figures.json (scripts/fpga_record.py:
+#                 each replaces the entry of the same core, configuration, part and multiplier
+#                 style); refused when rtl/ differs from the commit it was run on
 #   --setup-ii    with --top setup or system: the setup's initiation interval SetupII (1, 2,
 #                 4 or 8: at most one span every K clocks, the hardware shared over them,
 #                 docs/setup_hw.md#sharing-over-setupii-clocks), as --param SetupII=K; the
@@ -80,7 +83,7 @@ me=scripts/fpga.sh
 
 die_usage() {
   echo "$me: $*" >&2
-  echo "usage: $me [--top unit|stream|axil|phong|setup|system|mul|all] [--device hx8k|up5k|ecp5|ecp5-25|ecp5-45|ecp5-85|all] [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--freq-ecp5 MHZ] [--flatten|--no-flatten] [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only] [--setup-ii K]" >&2
+  echo "usage: $me [--top unit|stream|axil|phong|setup|system|mul|all] [--device hx8k|up5k|ecp5|ecp5-25|ecp5-45|ecp5-85|all] [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--freq-ecp5 MHZ] [--flatten|--no-flatten] [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only] [--setup-ii K] [--record]" >&2
   exit 2
 }
 
@@ -98,6 +101,7 @@ strict=0
 fresh=0
 elab_only=0
 setup_ii=
+record=0
 params=()
 for p in ${FPGA_PARAMS:-}; do params+=("$p"); done
 
@@ -120,8 +124,9 @@ while [ $# -gt 0 ]; do
     --fresh)     fresh=1; shift ;;
     --elaborate-only) elab_only=1; shift ;;
     --setup-ii)  need_value "$@"; setup_ii=$2; shift 2 ;;
+    --record)    record=1; shift ;;
     -h|--help)   sed -n '4,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
-    *)           die_usage "unknown argument '$1' (allowed: --top, --device, --out, --param, --phong-config, --seed, --freq-hx8k, --freq-up5k, --freq-ecp5, --flatten, --no-flatten, --yosys-timeout, --strict, --fresh, --elaborate-only, --setup-ii, --help)" ;;
+    *)           die_usage "unknown argument '$1' (allowed: --top, --device, --out, --param, --phong-config, --seed, --freq-hx8k, --freq-up5k, --freq-ecp5, --flatten, --no-flatten, --yosys-timeout, --strict, --fresh, --elaborate-only, --setup-ii, --record, --help)" ;;
   esac
 done
 
@@ -572,20 +577,56 @@ done
 
 rc=0
 python3 - "$out" "$strict" "$rtl_commit" "${run_dirs[@]}" <<'PY' || rc=$?
-import json, os, re, sys
+import datetime, json, os, re, sys
 out, strict, rtl, dirs = sys.argv[1], sys.argv[2] == "1", sys.argv[3], sys.argv[4:]
 runs = [json.load(open(os.path.join(d, "result.json"))) for d in dirs]
+dates = [datetime.datetime.fromtimestamp(os.path.getmtime(os.path.join(d, "result.json")),
+                                         datetime.timezone.utc).date().isoformat() for d in dirs]
 json.dump({"runs": runs}, open(os.path.join(out, "summary.json"), "w"), indent=1)
-# The runs in the shapes of docs/fpga_figures.json: placed ECP5 runs as "runs" entries, the
-# runs whose Yosys counts exceed the part as "synthesis_runs" entries, to paste there.
+
+def multipliers(r):
+    """The multiplier style of the run (docs/pipeline.md#multiplier-styles), from its parameters."""
+    tile = next((p.split("=", 1)[1] for p in r["params"] if p.split("=", 1)[0] in ("MulTileBits", "TileBits")), None)
+    if tile is None:
+        return "the core's own"
+    if tile == "0":
+        return "LUT trees"
+    return ("SB_MAC16" if r["device"] == "up5k" else "MULT18X18D") + f" tiles ({tile}-bit)"
+
+# The smallest iCE40 that holds a placed run: the UP5K (5,280 LCs, 30 block RAMs, 8 SB_MAC16),
+# else the HX8K (7,680 LCs, 32 block RAMs, no DSP).
+ICE40_PARTS = (("UP5K", 5280, 30, 8), ("HX8K", 7680, 32, 0))
+
+# The runs in the shapes of docs/fpga_figures.json: placed iCE40 runs as "runs" entries, placed
+# ECP5 runs as "ecp5_runs" entries, the runs whose Yosys counts exceed the part as
+# "synthesis_runs" entries, to paste there. Each with the date of its run and the RTL commit.
 entries = []
-for r in runs:
+for r, date in zip(runs, dates):
+    if not r["device"].startswith("ecp5") and r["status"] == "placed and routed":
+        y, npr = r["yosys"], r.get("nextpnr", {})
+        lcs = npr["ICESTORM_LC"]["used"]
+        bram = npr.get("ICESTORM_RAM", {}).get("used", y["bram"])
+        dsp = npr.get("ICESTORM_DSP", {}).get("used", y["dsp"])
+        e = {"core": r["core"]}
+        if r.get("phong_config"):
+            e["config"] = r["phong_config"]
+        e.update({"part": {"hx8k": "HX8K ct256", "up5k": "UP5K sg48"}[r["device"]], "rtl": rtl, "date": date,
+                  "tools": "Yosys " + re.sub(r"^Yosys (\S+).*", r"\1", r.get("yosys_version", "?")) + ", nextpnr-ice40 "
+                           + r.get("nextpnr_version", "?"),
+                  "synthesis": r["synthesis"].replace(" -top", "").strip(), "multipliers": multipliers(r),
+                  "fmax_mhz": r.get("fmax_mhz"), "target_mhz": r["target_mhz"],
+                  "lcs": lcs, "lcs_available": npr["ICESTORM_LC"]["available"],
+                  "sb_lut4": y["lut4"], "sb_carry": y["carry"], "ffs": y["ff"], "brams": bram, "dsps": dsp,
+                  "smallest_ice40": next((p for p, lc, b, d in ICE40_PARTS if lcs <= lc and bram <= b and dsp <= d),
+                                         None)})
+        entries.append(e)
+        continue
     if r["device"].startswith("ecp5") and r["status"] == "placed and routed":
         y, npr = r["yosys"], r.get("nextpnr", {})
         e = {"core": r["core"]}
         if r.get("phong_config"):
             e["config"] = r["phong_config"]
-        e.update({"part": r["part"], "rtl": rtl,
+        e.update({"part": r["part"], "rtl": rtl, "date": date, "multipliers": multipliers(r),
                   "tools": "Yosys " + re.sub(r"^Yosys (\S+).*", r"\1", r.get("yosys_version", "?")) + ", nextpnr-ecp5 "
                            + r.get("nextpnr_version", "?"),
                   "synthesis": r["synthesis"].replace(" -top", "").strip(),
@@ -609,6 +650,7 @@ for r in runs:
         e["setup_ii"] = int(ii)
     e["part"] = {"hx8k": "HX8K ct256", "up5k": "UP5K sg48", "ecp5": "ECP5"}[r["device"]]
     e["rtl"] = rtl
+    e["date"] = date
     e["tools"] = "Yosys " + re.sub(r"^Yosys (\S+).*", r"\1", r.get("yosys_version", "?"))
     e["synthesis"] = r["synthesis"].replace(" -top", "").strip()
     e["synthesis_only"] = True
@@ -698,4 +740,7 @@ if strict:
 sys.exit(1 if bad else 0)
 PY
 [ "$failed" = 0 ] || exit 1
+if [ "$record" = 1 ] && [ "$rc" = 0 ]; then
+  python3 scripts/fpga_record.py "$out/figures_entries.json" || exit 1
+fi
 exit "$rc"

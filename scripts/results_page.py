@@ -191,37 +191,44 @@ def section_fpga(f, rel):
             raise SourceError(f"{rel}: the entry {e['core']} {e['part']} has no \"date\" or \"rtl\" "
                               f"(docs/measured/README.md)")
     link = os.path.relpath(rel, "docs")
-    out = ["## Place and route", "",
-           f"`make fpga` (`scripts/fpga.sh`: out of context with registered IO, seed 1, Yosys 0.23, nextpnr-ice40 0.4), "
-           f"one run per core and part on the RTL of the commit in the column \"RTL\"; machine: {prov['machine']}; "
-           f"source [`{rel}`]({link}). LCs: logic cells used; SB_LUT4 and FFs: Yosys' counts, harness included "
-           f"([rtl/fpga/README.md](../rtl/fpga/README.md)).", ""]
-    rows = [[f"`{e['core']}`", e["part"], f"`{e['rtl']}`", e["date"], f"{e['lcs']} / {e['lcs_available']}",
-             num(e["sb_lut4"]), num(e["ffs"]), num(e["brams"]), num(e["dsps"]), f"{e['fmax_mhz']:.2f}",
-             f"{e['target_mhz']}" + ("" if e["fmax_mhz"] >= e["target_mhz"] else " (missed)")]
-            for e in f["runs"]]
-    out += table(["core", "device", "RTL", "date", "LCs", "SB_LUT4", "FFs", "BRAMs", "DSPs", "Fmax (MHz)",
-                  "target (MHz)"], rows)
-    ecp5 = f.get("ecp5_runs", [])
-    if ecp5:
-        out += ["", "### ECP5", "",
-                "Yosys 0.23 `synth_ecp5`, nextpnr-ecp5 (package CABGA381, speed grade 6, seed 1), the multipliers "
-                "as MULT18X18D tiles (`MulTileBits = 18`, [pipeline.md](pipeline.md#multiplier-styles)) unless the "
-                "column says otherwise. TRELLIS_COMB: LUT4 positions used after packing (LUT4s and carry halves); "
-                "LUT4, CCU2C and TRELLIS_FF: Yosys' counts, harness included; smallest LFE5U: the smallest part "
-                "whose LUT4 positions (LUT4 + 2 CCU2C), flip-flops, MULT18X18D and DP16KD hold those counts.", ""]
-        rows = [[f"`{e['core']}`", e["part"], e.get("multipliers", "MULT18X18D tiles"), f"`{e['rtl']}`", e["date"],
-                 f"{e['trellis_comb']} / {e['trellis_comb_available']}", num(e["lut4"]), num(e["ccu2c"]),
-                 num(e["ffs"]), num(e["mult18x18d"]), num(e["dp16kd"]), e["smallest_lfe5u"],
-                 f"{e['fmax_mhz']:.2f}", f"{e['target_mhz']:g}" + ("" if e["fmax_mhz"] >= e["target_mhz"] else " (missed)")]
-                for e in ecp5]
-        out += table(["core", "part", "multipliers", "RTL", "date", "TRELLIS_COMB", "LUT4", "CCU2C", "TRELLIS_FF",
-                      "MULT18X18D", "DP16KD", "smallest LFE5U", "Fmax (MHz)", "target (MHz)"], rows)
-    syn = f.get("synthesis_runs", [])
 
     def name(e):
         return (f"`{e['core']}`" + (f" {e['config']}" if e.get("config") else "")
                 + (f" `SetupII = {e['setup_ii']}`" if e.get("setup_ii", 1) != 1 else ""))
+
+    def tools(entries):
+        return "; ".join(sorted({e["tools"] for e in entries}))
+
+    def fmax(e):
+        return f"{e['fmax_mhz']:.2f}", f"{e['target_mhz']:g}" + ("" if e["fmax_mhz"] >= e["target_mhz"] else " (missed)")
+
+    out = ["## Place and route", "",
+           f"`make fpga` (`scripts/fpga.sh`: out of context with registered IO, seed 1; {tools(f['runs'])}), "
+           f"one run per core, part and multiplier style on the RTL of the commit in the column \"RTL\"; machine: "
+           f"{prov['machine']}; source [`{rel}`]({link}). LCs: logic cells used; SB_LUT4, SB_CARRY and FFs: Yosys' "
+           f"counts, harness included ([rtl/fpga/README.md](../rtl/fpga/README.md)); smallest iCE40: the smaller of "
+           f"UP5K and HX8K whose logic cells, block RAMs and SB_MAC16 hold the placed counts.", ""]
+    rows = [[name(e), e["part"], e["multipliers"], f"`{e['rtl']}`", e["date"], f"{e['lcs']} / {e['lcs_available']}",
+             num(e["sb_lut4"]), num(e["sb_carry"]), num(e["ffs"]), num(e["brams"]), num(e["dsps"]),
+             e["smallest_ice40"] or "none", *fmax(e)]
+            for e in f["runs"]]
+    out += table(["core", "device", "multipliers", "RTL", "date", "LCs", "SB_LUT4", "SB_CARRY", "FFs", "BRAMs",
+                  "DSPs", "smallest iCE40", "Fmax (MHz)", "target (MHz)"], rows)
+    ecp5 = f.get("ecp5_runs", [])
+    if ecp5:
+        out += ["", "### ECP5", "",
+                f"Yosys `synth_ecp5`, nextpnr-ecp5 (package CABGA381, speed grade 6, seed 1; {tools(ecp5)}), the "
+                "multipliers in the style of the column ([pipeline.md](pipeline.md#multiplier-styles)). TRELLIS_COMB: "
+                "LUT4 positions used after packing (LUT4s and carry halves); LUT4, CCU2C and TRELLIS_FF: Yosys' "
+                "counts, harness included; smallest LFE5U: the smallest part whose LUT4 positions (LUT4 + 2 CCU2C), "
+                "flip-flops, MULT18X18D and DP16KD hold those counts.", ""]
+        rows = [[name(e), e["part"], e["multipliers"], f"`{e['rtl']}`", e["date"],
+                 f"{e['trellis_comb']} / {e['trellis_comb_available']}", num(e["lut4"]), num(e["ccu2c"]),
+                 num(e["ffs"]), num(e["mult18x18d"]), num(e["dp16kd"]), e["smallest_lfe5u"], *fmax(e)]
+                for e in ecp5]
+        out += table(["core", "part", "multipliers", "RTL", "date", "TRELLIS_COMB", "LUT4", "CCU2C", "TRELLIS_FF",
+                      "MULT18X18D", "DP16KD", "smallest LFE5U", "Fmax (MHz)", "target (MHz)"], rows)
+    syn = f.get("synthesis_runs", [])
 
     out += ["", "### Synthesis only: ECP5", "",
             "Yosys `synth_ecp5` counts of runs that were not placed: LUT4 positions are LUT4 + 2 CCU2C; "
