@@ -202,10 +202,9 @@ TEST_CASE("pipe_mul styles: LUT tree and DSP tiles give the same products at the
   SECTION("6x9 tiles 5 (2 x 2, padded), every pair") { every_pair_case<Vpipe_mul_6x9_t5>(6, 9); }
 }
 
-// phong_mul (rtl/competitors/phong) in both DSP styles at every width phong_stream's default
-// configuration multiplies (tests/rtl/CMakeLists.txt lists them); its latency is one operand
-// register more than specular_pipe_mul's (phong_pkg::mul_stages). The LUT tree at these widths
-// is checked in context by the Phong sim stage, bit-exact on every scene.
+// phong_mul (rtl/competitors/phong) in both DSP styles at two widths of phong_stream's default
+// configuration (tests/rtl/CMakeLists.txt lists them and says why two suffice); its latency is
+// its own public Stages, phong_pkg::mul_stages, one operand register more than the tree's.
 template <class Dut, class Module>
 void phong_style_case(int a_bits, int b_bits, uint64_t seed) {
   Dut dut;
