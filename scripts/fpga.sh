@@ -42,7 +42,8 @@
 #                 FPGA_PARAMS="NAME=VALUE NAME=VALUE" in the environment adds more.
 #   --phong-config  with --top phong: the parameters of a configuration of
 #                 roms/phong/phong_configs.cmake (n1000, n128, n64, ...); the run's folder
-#                 is phong_NAME_DEVICE/
+#                 is phong_NAME_DEVICE/. all: every configuration, each run into
+#                 OUT/phong_NAME/ with its own summary
 #   --seed        nextpnr placement seed (default 1, or FPGA_SEED)
 #   --freq-hx8k, --freq-up5k, --freq-ecp5   nextpnr timing targets in MHz (default 100, 50
 #                 and 100)
@@ -87,6 +88,7 @@ die_usage() {
   exit 2
 }
 
+orig_args=("$@")
 top_arg=all
 dev_arg=
 phong_cfg=
@@ -152,9 +154,24 @@ done
 if [ -n "$phong_cfg" ]; then
   [ "$top_arg" = phong ] || die_usage "--phong-config needs --top phong (got --top $top_arg)"
   cfg_file="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)/roms/phong/phong_configs.cmake"
+  # all: this script once per configuration, each into OUT/phong_NAME/ (its own summary).
+  if [ "$phong_cfg" = all ]; then
+    all_rc=0
+    for c in $(sed -n 's/^set(PHONG_CONFIGS \(.*\))$/\1/p' "$cfg_file"); do
+      args=()
+      skip=0
+      for a in "${orig_args[@]}"; do
+        if [ "$skip" = 1 ]; then skip=0; continue; fi
+        case "$a" in --phong-config|--out) skip=1; continue ;; esac
+        args+=("$a")
+      done
+      bash "$0" "${args[@]}" --phong-config "$c" --out "$out/phong_$c" || all_rc=1
+    done
+    exit "$all_rc"
+  fi
   cfg_line=$(grep "^set(PHONG_CONFIG_${phong_cfg}_RTL_ARGS " "$cfg_file" 2>/dev/null || true)
   [[ "$phong_cfg" =~ ^[A-Za-z0-9_]+$ ]] && [ -n "$cfg_line" ] ||
-    die_usage "--phong-config must be one of $(sed -n 's/^set(PHONG_CONFIGS \(.*\))$/\1/p' "$cfg_file" | tr ' ' ',') (got '$phong_cfg')"
+    die_usage "--phong-config must be all or one of $(sed -n 's/^set(PHONG_CONFIGS \(.*\))$/\1/p' "$cfg_file" | tr ' ' ',') (got '$phong_cfg')"
   while read -r g; do
     g=${g#-G}
     g=${g//\\\"/}
