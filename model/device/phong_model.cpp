@@ -2,8 +2,10 @@
 // Golden model of phong_stream (model/device/phong_model.hpp, docs/phong_hw.md).
 #include "phong_model.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cmath>
+#include <numbers>
 #include <sstream>
 #include <stdexcept>
 
@@ -68,6 +70,36 @@ void PhongFormat::validate() const {
   check(exp_frac_bits >= 1 && exp_addr_bits + exp_frac_bits <= log_bits, "exp_frac_bits", exp_frac_bits,
         "1..log_bits - exp_addr_bits");
   check(exp_bits >= exp_addr_bits + 2 && exp_bits <= 30, "exp_bits", exp_bits, "exp_addr_bits+2..30");
+  if (form != PhongForm::cross) return;
+  check(u_bits >= 4 && u_bits <= 30, "u_bits", u_bits, "4..30");
+  check(rcp_addr_bits >= 2 && rcp_addr_bits <= norm_bits && rcp_addr_bits <= 14, "rcp_addr_bits", rcp_addr_bits,
+        "2..min(14, norm_bits)");
+  check(rcp_frac_bits >= 1 && rcp_addr_bits + rcp_frac_bits <= norm_bits, "rcp_frac_bits", rcp_frac_bits,
+        "1..norm_bits - rcp_addr_bits");
+  check(rcp_bits >= rcp_addr_bits + 2 && rcp_bits <= 30, "rcp_bits", rcp_bits, "rcp_addr_bits+2..30");
+  check(s_frac >= 8 && s_frac <= 40, "s_frac", s_frac, "8..40");
+  check(g_addr_bits >= 1 && g_addr_bits <= 14, "g_addr_bits", g_addr_bits, "1..14");
+  check(g_frac_bits >= 1 && g_addr_bits + g_frac_bits + 1 <= s_frac, "g_frac_bits", g_frac_bits,
+        "1..s_frac - g_addr_bits - 1");
+  check(g_bits >= g_addr_bits + 2 && g_bits <= 30, "g_bits", g_bits, "g_addr_bits+2..30");
+  check(dm_frac >= 4 && dm_frac <= 30 && 2 * dm_frac + rcp_bits >= cos_frac + 2, "dm_frac", dm_frac,
+        "4..30 with 2 dm_frac + rcp_bits >= cos_frac + 2");
+}
+
+PhongFormat PhongFormat::cross() {
+  PhongFormat f;
+  f.form = PhongForm::cross;
+  f.op_bits = 18;
+  f.norm_bits = 16;
+  f.cos_frac = 16;
+  f.u_bits = 20;
+  f.rcp_addr_bits = 7, f.rcp_frac_bits = 8, f.rcp_bits = 17;
+  f.s_frac = 24;
+  f.g_addr_bits = 5, f.g_frac_bits = 8, f.g_bits = 17;
+  f.dm_frac = 14;
+  f.log_addr_bits = 6, f.log_frac_bits = 10, f.log_bits = 23;
+  f.exp_addr_bits = 5, f.exp_frac_bits = 8, f.exp_bits = 17;
+  return f;
 }
 
 PhongFormat PhongFormat::preset(int n_max) {
@@ -102,6 +134,13 @@ PhongFormat PhongFormat::preset(int n_max) {
 
 std::string PhongFormat::describe() const {
   std::ostringstream m;
+  if (form == PhongForm::cross) {
+    m << "cross " << (const_h ? "constH " : "") << "op" << op_bits << " norm" << norm_bits << " u" << u_bits << " rcp"
+      << rcp_addr_bits << "/" << rcp_frac_bits << "/" << rcp_bits << " s" << s_frac << " g" << g_addr_bits << "/"
+      << g_frac_bits << "/" << g_bits << " dm" << dm_frac << " log" << log_addr_bits << "/" << log_frac_bits << "/"
+      << log_bits << "@" << cos_frac << " exp" << exp_addr_bits << "/" << exp_frac_bits << "/" << exp_bits;
+    return m.str();
+  }
   m << (const_h ? "constH " : "") << "op" << op_bits << " norm" << norm_bits << " rsqrt" << rsqrt_addr_bits << "x"
     << newton << "nr cos" << cos_frac << " log" << log_addr_bits << "/" << log_frac_bits << "/" << log_bits << " exp"
     << exp_addr_bits << "/" << exp_frac_bits << "/" << exp_bits;
@@ -170,11 +209,47 @@ std::vector<uint64_t> phong_exp_rom(const PhongFormat& f) {
   return rom;
 }
 
+std::vector<uint64_t> phong_rcp_rom(const PhongFormat& f) {
+  f.validate();
+  const double step = std::ldexp(1.0, 2 - f.rcp_addr_bits);  // segment width on [1, 4)
+  auto v = [&](int j) { return static_cast<uint64_t>(std::llround(std::ldexp(1.0 / (1.0 + j * step), f.rcp_bits))); };
+  std::vector<uint64_t> rom(static_cast<size_t>(f.rcp_depth()));
+  const int db = f.rcp_delta_bits();
+  for (int j = 0; j < f.rcp_depth(); ++j) {
+    const uint64_t vj = v(j), dv = vj - v(j + 1);
+    if (vj > (uint64_t{1} << f.rcp_bits) || dv >= (uint64_t{1} << db))
+      throw std::logic_error("phong_rcp_rom: a word does not fit its field");
+    rom[static_cast<size_t>(j)] = (vj << db) | dv;
+  }
+  return rom;
+}
+
+std::vector<uint64_t> phong_g_rom(const PhongFormat& f) {
+  f.validate();
+  auto g = [](double x) { return x == 0.0 ? 0.5 / std::numbers::ln2 : -std::log2(1.0 - x) / (2.0 * x); };
+  auto v = [&](int j) {
+    return static_cast<uint64_t>(std::llround(std::ldexp(g(std::ldexp(j, -(f.g_addr_bits + 1))), f.g_bits)));
+  };
+  std::vector<uint64_t> rom(static_cast<size_t>(f.g_depth()));
+  const int db = f.g_delta_bits();
+  for (int j = 0; j < f.g_depth(); ++j) {
+    const uint64_t vj = v(j), dv = v(j + 1) - vj;
+    if (vj >= (uint64_t{1} << f.g_bits) || dv >= (uint64_t{1} << db))
+      throw std::logic_error("phong_g_rom: a word does not fit its field");
+    rom[static_cast<size_t>(j)] = (vj << db) | dv;
+  }
+  return rom;
+}
+
 PhongModel::PhongModel(PhongFormat f) : f_(f) {
   f_.validate();
   rsqrt_ = phong_rsqrt_rom(f_);
   log_ = phong_log_rom(f_);
   exp_ = phong_exp_rom(f_);
+  if (f_.form == PhongForm::cross) {
+    rcp_ = phong_rcp_rom(f_);
+    g_ = phong_g_rom(f_);
+  }
 }
 
 GeoSpan PhongModel::latch(const GeoSpan& s) const {
@@ -202,6 +277,23 @@ PhongTrace PhongModel::trace(const GeoSpan& in, int i) const {
   const int k = s.len == 0 ? 0 : f.len_bits - lw;
   const int64_t big_l = s.len == 0 ? (int64_t{1} << (f.len_bits - 1)) : (static_cast<int64_t>(s.len) << k);
   const int drop = f.acc_bits() - f.op_bits;
+  // The cross form takes the operands from the span's own range: the bits that both end
+  // vectors leave unused at the top (their headroom in the interface format) are not dropped.
+  auto headroom = [&](const GeoVec& v1, const GeoVec& v2) {
+    int w = 0;
+    for (int c = 0; c < 3; ++c)
+      w = std::max({w, static_cast<int>(std::bit_width(static_cast<uint32_t>(std::abs(v1[c])))),
+                    static_cast<int>(std::bit_width(static_cast<uint32_t>(std::abs(v2[c]))))});
+    return f.form == PhongForm::cross ? std::max(0, f.vec_bits - 1 - w) : 0;
+  };
+  // The dot form truncates (floor); the cross form rounds half up (it cannot overflow: the
+  // accumulators stay below 2^(op_bits-1) by more than half a step, docs/phong_hw.md).
+  auto operand = [&](int64_t acc, int dr) {
+    if (f.form == PhongForm::cross && dr > 0) return (acc + (int64_t{1} << (dr - 1))) >> dr;
+    return static_cast<int64_t>(shift(acc, -dr));
+  };
+  const int drop_a = drop - headroom(s.n1, s.n2);
+  const int drop_b = drop - headroom(s.h1, f.const_h ? s.h1 : s.he);
   for (int c = 0; c < 3; ++c) {
     const int64_t an = big_l * s.n1[c] + (s.len == 0 ? 0 : static_cast<int64_t>(i) * ((int64_t{s.n2[c]} - s.n1[c]) << k));
     int64_t bn;
@@ -209,8 +301,8 @@ PhongTrace PhongModel::trace(const GeoSpan& in, int i) const {
       bn = int64_t{s.h1[c]} << (f.len_bits - 1);
     else
       bn = big_l * s.h1[c] + (s.len == 0 ? 0 : static_cast<int64_t>(i) * ((int64_t{s.he[c]} - s.h1[c]) << k));
-    t.a[c] = an >> drop;
-    t.b[c] = bn >> drop;
+    t.a[c] = operand(an, drop_a);
+    t.b[c] = operand(bn, drop_b);
   }
   i128 d = 0, na = 0, nb = 0;
   for (int c = 0; c < 3; ++c) {
@@ -226,7 +318,7 @@ PhongTrace PhongModel::trace(const GeoSpan& in, int i) const {
   const bool zero_end = zero(s.n1) || zero(s.n2) || zero(s.h1) || (!f.const_h && zero(s.he));
   if (!n_ok || zero_end || d <= 0) return t;
 
-  // Normalization: the mantissas of na and nb, their product, 1/sqrt by ROM and Newton.
+  // The mantissas of na and nb and their product (both forms).
   const int m_frac = f.norm_bits - 2;
   t.ea = (bit_width_u(static_cast<u128>(na)) - 1) & ~1;
   t.eb = (bit_width_u(static_cast<u128>(nb)) - 1) & ~1;
@@ -235,37 +327,90 @@ PhongTrace PhongModel::trace(const GeoSpan& in, int i) const {
   const u128 m = u128{t.ma} * t.mb;
   t.em = m >= (u128{4} << (2 * m_frac)) ? 1 : 0;
   t.mm = static_cast<uint64_t>(m >> (m_frac + 2 * t.em));
-  const uint64_t idx = (t.mm >> (f.norm_bits - f.rsqrt_addr_bits)) - (uint64_t{1} << (f.rsqrt_addr_bits - 2));
-  t.y0 = rsqrt_.at(idx);
-  uint64_t y = t.y0;
-  for (int it = 0; it < f.newton; ++it) {
-    const u128 sq = (u128{y} * y) >> f.norm_bits;
-    const u128 u = (u128{t.mm} * sq) >> m_frac;
-    const u128 three = u128{3} << f.norm_bits;
-    if (u >= three) throw std::logic_error("PhongModel: Newton step out of range");
-    y = static_cast<uint64_t>((u128{y} * (three - u)) >> (f.norm_bits + 1));
-  }
-  t.y = y;
-  const int big_k = t.ea / 2 + t.eb / 2 + t.em;
-  t.dn = static_cast<uint64_t>(shift(d, f.cos_frac - big_k));
-  const uint64_t one = uint64_t{1} << f.cos_frac;
-  t.c = static_cast<uint64_t>(std::min<u128>((u128{t.dn} * y) >> f.norm_bits, one));
-  if (t.c == 0) return t;
 
-  // -log2 c from the interpolated log2 ROM.
-  if (t.c == one) {
-    t.w = 0;
-  } else {
-    const int p = std::bit_width(t.c) - 1;
-    t.e = f.cos_frac - p;
-    const uint64_t frac = (t.c << t.e) - one;
+  // log2(1 + frac 2^-cos_frac) 2^log_bits from the interpolated log2 ROM.
+  auto log_lookup = [&](uint64_t frac) {
     const uint64_t j = frac >> (f.cos_frac - f.log_addr_bits);
     const uint64_t tw = (frac >> (f.cos_frac - f.log_addr_bits - f.log_frac_bits)) & ((uint64_t{1} << f.log_frac_bits) - 1);
     const uint64_t word = log_[j];
     const int db = f.log_delta_bits();
     const uint64_t v = word >> db, dv = word & ((uint64_t{1} << db) - 1);
-    const uint64_t lg = v + ((dv * tw + (uint64_t{1} << (f.log_frac_bits - 1))) >> f.log_frac_bits);
-    t.w = (static_cast<uint64_t>(t.e) << f.log_bits) - lg;
+    return v + ((dv * tw + (uint64_t{1} << (f.log_frac_bits - 1))) >> f.log_frac_bits);
+  };
+
+  if (f.form == PhongForm::cross) {
+    // The cancellation-free form: sin^2 or cos^2 times 1/(|a|^2 |b|^2), no square root.
+    const i128 u[3] = {i128{t.a[1]} * t.b[2] - i128{t.a[2]} * t.b[1], i128{t.a[2]} * t.b[0] - i128{t.a[0]} * t.b[2],
+                       i128{t.a[0]} * t.b[1] - i128{t.a[1]} * t.b[0]};
+    const int big_u = t.ea / 2 + t.eb / 2 + t.em;
+    const uint64_t ridx = t.mm >> (f.norm_bits - f.rcp_addr_bits);
+    const uint64_t rj = ridx - (uint64_t{1} << (f.rcp_addr_bits - 2));
+    const uint64_t rt = (t.mm >> (f.norm_bits - f.rcp_addr_bits - f.rcp_frac_bits)) & ((uint64_t{1} << f.rcp_frac_bits) - 1);
+    const int rdb = f.rcp_delta_bits();
+    const uint64_t rv = rcp_.at(rj) >> rdb, rdv = rcp_.at(rj) & ((uint64_t{1} << rdb) - 1);
+    t.r = rv - ((rdv * rt + (uint64_t{1} << (f.rcp_frac_bits - 1))) >> f.rcp_frac_bits);
+    const int q = f.u_bits - 2;
+    u128 su = 0;
+    for (int c = 0; c < 3; ++c) {
+      t.u[c] = static_cast<int64_t>(shift(u[c], q - big_u));
+      su += static_cast<u128>(i128{t.u[c]} * t.u[c]);
+    }
+    const i128 dq = shift(d, q - big_u);
+    t.su = static_cast<uint64_t>(su);
+    t.sd = static_cast<uint64_t>(dq * dq);
+    t.sine = t.su <= t.sd;
+    if (t.sine) {
+      const uint64_t half = uint64_t{1} << (f.s_frac - 1);
+      t.s = static_cast<uint64_t>(std::min<u128>(shift(static_cast<i128>(su * t.r), f.s_frac - 2 * q - f.rcp_bits),
+                                                 half));
+      if (t.s == half) t.s = half - 1;  // the g ROM covers [0, 1/2)
+      const int gb = f.s_frac - 1 - f.g_addr_bits;
+      const uint64_t gj = t.s >> gb;
+      const uint64_t gt = (t.s >> (gb - f.g_frac_bits)) & ((uint64_t{1} << f.g_frac_bits) - 1);
+      const int gdb = f.g_delta_bits();
+      const uint64_t gv = g_.at(gj) >> gdb, gdv = g_.at(gj) & ((uint64_t{1} << gdb) - 1);
+      t.gv = gv + ((gdv * gt + (uint64_t{1} << (f.g_frac_bits - 1))) >> f.g_frac_bits);
+      t.w = static_cast<uint64_t>((u128{t.s} * t.gv) >> (f.s_frac + f.g_bits - f.log_bits));
+    } else {
+      const int ed = bit_width_u(static_cast<u128>(d)) - 1;
+      const uint64_t dm = static_cast<uint64_t>(shift(d, f.dm_frac - ed));
+      const u128 big_p = u128{dm} * dm * t.r;  // 2 dm_frac + rcp_bits fraction bits
+      const int pf = 2 * f.dm_frac + f.rcp_bits;
+      const int ep = bit_width_u(big_p) - 1 - pf;  // floor(log2 P)
+      t.e = ep;
+      // The mantissa's top cos_frac fraction bits (P / 2^ep in [1, 2)).
+      const uint64_t frac = static_cast<uint64_t>(shift(static_cast<i128>(big_p), f.cos_frac - pf - ep)) -
+                            (uint64_t{1} << f.cos_frac);
+      const int64_t lg = static_cast<int64_t>(log_lookup(frac));
+      const int64_t w2 = ((int64_t{2} * (big_u - ed) - ep) << f.log_bits) - lg;
+      t.w = w2 > 0 ? static_cast<uint64_t>(w2 >> 1) : 0;
+    }
+  } else {
+    // Normalization: 1/sqrt of the mantissas' product by ROM and Newton.
+    const uint64_t idx = (t.mm >> (f.norm_bits - f.rsqrt_addr_bits)) - (uint64_t{1} << (f.rsqrt_addr_bits - 2));
+    t.y0 = rsqrt_.at(idx);
+    uint64_t y = t.y0;
+    for (int it = 0; it < f.newton; ++it) {
+      const u128 sq = (u128{y} * y) >> f.norm_bits;
+      const u128 uu = (u128{t.mm} * sq) >> m_frac;
+      const u128 three = u128{3} << f.norm_bits;
+      if (uu >= three) throw std::logic_error("PhongModel: Newton step out of range");
+      y = static_cast<uint64_t>((u128{y} * (three - uu)) >> (f.norm_bits + 1));
+    }
+    t.y = y;
+    const int big_k = t.ea / 2 + t.eb / 2 + t.em;
+    t.dn = static_cast<uint64_t>(shift(d, f.cos_frac - big_k));
+    const uint64_t one = uint64_t{1} << f.cos_frac;
+    t.c = static_cast<uint64_t>(std::min<u128>((u128{t.dn} * y) >> f.norm_bits, one));
+    if (t.c == 0) return t;
+    // -log2 c from the interpolated log2 ROM.
+    if (t.c == one) {
+      t.w = 0;
+    } else {
+      const int p = std::bit_width(t.c) - 1;
+      t.e = f.cos_frac - p;
+      t.w = (static_cast<uint64_t>(t.e) << f.log_bits) - log_lookup((t.c << t.e) - one);
+    }
   }
   // z = n w, 2^-z from the interpolated exp2 ROM.
   t.z = static_cast<uint64_t>(s.n) * t.w;

@@ -44,6 +44,34 @@
 //          p = (u - ((du * t + 2^(exp_frac_bits-1)) >> exp_frac_bits)) >> zi     = 2^-z, exp_bits fraction bits
 //   out    = (scale * p + 2^(exp_bits-1)) >> exp_bits        the format of C (c_bits, c_frac)
 //   n = 0 or n > 1000: every pixel 0.
+//
+// The cancellation-free form (form = PhongForm::cross, docs/phong_hw.md#the-cancellation-free-form):
+// the same a, b, d, na, nb, ea, eb, em, mm and the same z = n w and exp2 stage; w = -log2 c
+// comes from sin^2 = |a x b|^2 / (|a|^2 |b|^2) near the peak and from cos^2 = d^2 / (|a|^2 |b|^2)
+// elsewhere, with no square root and no subtraction of nearly equal numbers:
+//   a, b   as above but from the span's own range and rounded: hn = vec_bits - 1 - the widest
+//          |component| of N1 and N2 (bits), hb the same of H1 and He (H1 alone when const_h);
+//          a = (A_i + 2^(drop-hn-1)) >> (drop - hn), drop = acc_bits - op_bits; b likewise with hb
+//   u      = a x b                                        exact (six op_bits^2 products)
+//   U      = ea/2 + eb/2 + em                             na nb = (mm / 2^(norm_bits-2)) 4^U
+//   r      = 1/mm from the interpolated reciprocal ROM     rcp_bits fraction bits, (1/4, 1]
+//            word j = {v, dv}: v = round(2^rcp_bits / x_j), x_j = 1 + j 2^-(rcp_addr_bits-2) on [1, 4),
+//            dv = v(j) - v(j+1); t = the rcp_frac_bits bits of mm below the address;
+//            r = v - ((dv * t + 2^(rcp_frac_bits-1)) >> rcp_frac_bits)
+//   q      = u_bits - 2; u'_c = u_c >> (U - q), d' = d >> (U - q)   (floor; |u'|, |d'| < 2^(q+1))
+//   su     = |u'|^2, sd = d'^2                            exact; su <= sd (s <= 1/2): the sine branch
+//   sine:  s = min((su * r) >> (2q + rcp_bits - s_frac), 2^(s_frac-1))   sin^2, s_frac fraction bits
+//          word j of the g ROM = {v, dv}: v = round(g(x_j) 2^g_bits), g(x) = -log2(1 - x) / (2x)
+//          (g(0) = 1 / (2 ln 2)), x_j = j 2^-(g_addr_bits+1) on [0, 1/2), dv = v(j+1) - v(j);
+//          j, t = the g_addr_bits and g_frac_bits bits of s below its 2^-1 bit;
+//          gv = v + ((dv * t + 2^(g_frac_bits-1)) >> g_frac_bits);
+//          w  = (s * gv) >> (s_frac + g_bits - log_bits)                 = -log2(1 - s) / 2
+//   cosine: ed = bit_width(d) - 1; dm = d >> (ed - dm_frac) (floor; [1, 2), dm_frac fraction bits)
+//          P = dm^2 * r (2 dm_frac + rcp_bits fraction bits, [1/4, 4)); ep = floor(log2 P) in -2..1;
+//          mant = P / 2^ep in [1, 2), its top cos_frac fraction bits -> the log2 ROM as above
+//          (j, t, v, dv, lg = log2 mant with log_bits fraction bits);
+//          w = max(0, ((2 (U - ed) - ep) << log_bits) - lg) >> 1        = -log2(cos^2) / 2
+//   the rsqrt ROM, newton and norm-to-cos steps are not used.
 #pragma once
 
 #include "device_model.hpp"
@@ -57,7 +85,12 @@ namespace specular::device {
 
 // The default is the narrowest configuration found for n in 1..1000 at the device's budget
 // (docs/phong_hw.md#configuration-search); the named presets are the others found there.
+// How the cosine reaches the power (the header comment): the textbook normalized dot product, or
+// the cancellation-free sine / cosine squares.
+enum class PhongForm { dot, cross };
+
 struct PhongFormat {
+  PhongForm form = PhongForm::dot;
   int vec_bits = 18, vec_frac = 16;  // the geometry span interface (GeoFormat)
   int n_bits = 10, len_bits = 11;    // geo_n_i, geo_len_i
   int c_bits = 16, c_frac = 15;      // geo_scale_i and px_intensity_o: the format of C
@@ -74,10 +107,23 @@ struct PhongFormat {
   int exp_addr_bits = 5;             // exp2 ROM: 2^exp_addr_bits words {u, du}
   int exp_frac_bits = 7;             // bits of zf that weight the step
   int exp_bits = 16;                 // fraction bits of p = 2^-z
+  // The cross form only (PhongForm::cross; cos_frac is then the mantissa bits read by the log2 ROM).
+  int u_bits = 18;                   // signed width of the scaled cross product u' and of d'
+  int rcp_addr_bits = 6;             // reciprocal ROM: 3 * 2^(rcp_addr_bits-2) words {v, dv}
+  int rcp_frac_bits = 8;             // bits of mm that weight the step
+  int rcp_bits = 17;                 // fraction bits of r = 1/mm
+  int s_frac = 22;                   // fraction bits of s = sin^2
+  int g_addr_bits = 5;               // g ROM: 2^g_addr_bits words {v, dv} over s in [0, 1/2)
+  int g_frac_bits = 8;               // bits of s that weight the step
+  int g_bits = 17;                   // fraction bits of g(s)
+  int dm_frac = 14;                  // fraction bits of the mantissa of d (cosine branch)
 
   // The narrowest configuration found for n in 1..n_max, n_max = 64, 128 or 1000 (the
   // default-constructed format is preset(1000)); throws std::invalid_argument otherwise.
   static PhongFormat preset(int n_max);
+  // The cross form's configuration for n in 1..1000 at the device's budget: operands of one
+  // 18 x 18 DSP tile (docs/phong_hw.md#the-cancellation-free-form).
+  static PhongFormat cross();
 
   int acc_bits() const { return vec_bits + len_bits; }
   int max_len() const { return (1 << len_bits) - 1; }
@@ -88,6 +134,10 @@ struct PhongFormat {
   int exp_delta_bits() const { return exp_bits - exp_addr_bits; }
   int log_word_bits() const { return log_bits + log_delta_bits(); }
   int exp_word_bits() const { return exp_bits + 1 + exp_delta_bits(); }
+  int rcp_depth() const { return 3 << (rcp_addr_bits - 2); }
+  int g_depth() const { return 1 << g_addr_bits; }
+  int rcp_delta_bits() const { return rcp_bits - rcp_addr_bits + 2; }
+  int g_delta_bits() const { return g_bits - g_addr_bits; }
   // Bits of the largest w = -log2 c (c >= 2^-cos_frac): cos_frac + 1 integer values.
   int w_bits() const;
   // Throws std::invalid_argument naming the field and its allowed range.
@@ -106,6 +156,9 @@ Format c_format(const PhongFormat& f);
 std::vector<uint64_t> phong_rsqrt_rom(const PhongFormat& f);
 std::vector<uint64_t> phong_log_rom(const PhongFormat& f);
 std::vector<uint64_t> phong_exp_rom(const PhongFormat& f);
+// The cross form's ROMs ({v, dv} words, the step in the low bits).
+std::vector<uint64_t> phong_rcp_rom(const PhongFormat& f);
+std::vector<uint64_t> phong_g_rom(const PhongFormat& f);
 
 // Every intermediate of one pixel (fields after the one that zeroed the pixel keep 0).
 struct PhongTrace {
@@ -120,6 +173,10 @@ struct PhongTrace {
   uint64_t w = 0, z = 0;
   uint64_t p = 0;
   uint32_t intensity = 0;
+  // The cross form.
+  int64_t u[3]{};
+  uint64_t r = 0, su = 0, sd = 0, s = 0, gv = 0;
+  bool sine = false;
 };
 
 class PhongModel {
@@ -136,7 +193,7 @@ class PhongModel {
 
  private:
   PhongFormat f_;
-  std::vector<uint64_t> rsqrt_, log_, exp_;
+  std::vector<uint64_t> rsqrt_, log_, exp_, rcp_, g_;
 };
 
 }  // namespace specular::device
