@@ -36,6 +36,22 @@ void check(bool ok, const char* field, int value, const std::string& range) {
   }
 }
 
+// A ROM of {v, dv} words (the step in the low delta_bits): v(j) for j = 0..depth-1 at most
+// 2^value_bits (below it unless top_inclusive), dv the step to v(j+1), |v(j+1) - v(j)|.
+template <class V>
+std::vector<uint64_t> step_rom(const char* name, int depth, int value_bits, bool top_inclusive, int delta_bits, V v) {
+  std::vector<uint64_t> rom(static_cast<size_t>(depth));
+  const uint64_t top = uint64_t{1} << value_bits;
+  for (int j = 0; j < depth; ++j) {
+    const uint64_t vj = v(j), vn = v(j + 1);
+    const uint64_t dv = vj > vn ? vj - vn : vn - vj;
+    if (vj > top || (vj == top && !top_inclusive) || dv >= (uint64_t{1} << delta_bits))
+      throw std::logic_error(std::string(name) + ": a word does not fit its field");
+    rom[static_cast<size_t>(j)] = (vj << delta_bits) | dv;
+  }
+  return rom;
+}
+
 int64_t sign_extend(uint64_t v, int bits) {
   const uint64_t mask = (uint64_t{1} << bits) - 1;
   v &= mask;
@@ -177,51 +193,25 @@ std::vector<uint64_t> phong_rsqrt_rom(const PhongFormat& f) {
 
 std::vector<uint64_t> phong_log_rom(const PhongFormat& f) {
   f.validate();
-  const int depth = f.log_depth();
   auto v = [&](int j) {
     return static_cast<uint64_t>(std::llround(std::ldexp(std::log2(1.0 + std::ldexp(j, -f.log_addr_bits)), f.log_bits)));
   };
-  std::vector<uint64_t> rom(static_cast<size_t>(depth));
-  const int db = f.log_delta_bits();
-  for (int j = 0; j < depth; ++j) {
-    const uint64_t vj = v(j), dv = v(j + 1) - vj;
-    if (vj >= (uint64_t{1} << f.log_bits) || dv >= (uint64_t{1} << db))
-      throw std::logic_error("phong_log_rom: a word does not fit its field");
-    rom[static_cast<size_t>(j)] = (vj << db) | dv;
-  }
-  return rom;
+  return step_rom("phong_log_rom", f.log_depth(), f.log_bits, false, f.log_delta_bits(), v);
 }
 
 std::vector<uint64_t> phong_exp_rom(const PhongFormat& f) {
   f.validate();
-  const int depth = f.exp_depth();
   auto u = [&](int j) {
     return static_cast<uint64_t>(std::llround(std::ldexp(std::exp2(-std::ldexp(j, -f.exp_addr_bits)), f.exp_bits)));
   };
-  std::vector<uint64_t> rom(static_cast<size_t>(depth));
-  const int db = f.exp_delta_bits();
-  for (int j = 0; j < depth; ++j) {
-    const uint64_t uj = u(j), du = uj - u(j + 1);
-    if (uj > (uint64_t{1} << f.exp_bits) || du >= (uint64_t{1} << db))
-      throw std::logic_error("phong_exp_rom: a word does not fit its field");
-    rom[static_cast<size_t>(j)] = (uj << db) | du;
-  }
-  return rom;
+  return step_rom("phong_exp_rom", f.exp_depth(), f.exp_bits, true, f.exp_delta_bits(), u);
 }
 
 std::vector<uint64_t> phong_rcp_rom(const PhongFormat& f) {
   f.validate();
   const double step = std::ldexp(1.0, 2 - f.rcp_addr_bits);  // segment width on [1, 4)
   auto v = [&](int j) { return static_cast<uint64_t>(std::llround(std::ldexp(1.0 / (1.0 + j * step), f.rcp_bits))); };
-  std::vector<uint64_t> rom(static_cast<size_t>(f.rcp_depth()));
-  const int db = f.rcp_delta_bits();
-  for (int j = 0; j < f.rcp_depth(); ++j) {
-    const uint64_t vj = v(j), dv = vj - v(j + 1);
-    if (vj > (uint64_t{1} << f.rcp_bits) || dv >= (uint64_t{1} << db))
-      throw std::logic_error("phong_rcp_rom: a word does not fit its field");
-    rom[static_cast<size_t>(j)] = (vj << db) | dv;
-  }
-  return rom;
+  return step_rom("phong_rcp_rom", f.rcp_depth(), f.rcp_bits, true, f.rcp_delta_bits(), v);
 }
 
 std::vector<uint64_t> phong_g_rom(const PhongFormat& f) {
@@ -230,15 +220,7 @@ std::vector<uint64_t> phong_g_rom(const PhongFormat& f) {
   auto v = [&](int j) {
     return static_cast<uint64_t>(std::llround(std::ldexp(g(std::ldexp(j, -(f.g_addr_bits + 1))), f.g_bits)));
   };
-  std::vector<uint64_t> rom(static_cast<size_t>(f.g_depth()));
-  const int db = f.g_delta_bits();
-  for (int j = 0; j < f.g_depth(); ++j) {
-    const uint64_t vj = v(j), dv = v(j + 1) - vj;
-    if (vj >= (uint64_t{1} << f.g_bits) || dv >= (uint64_t{1} << db))
-      throw std::logic_error("phong_g_rom: a word does not fit its field");
-    rom[static_cast<size_t>(j)] = (vj << db) | dv;
-  }
-  return rom;
+  return step_rom("phong_g_rom", f.g_depth(), f.g_bits, false, f.g_delta_bits(), v);
 }
 
 PhongModel::PhongModel(PhongFormat f) : f_(f) {

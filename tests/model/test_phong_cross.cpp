@@ -8,6 +8,7 @@
 #include "metrics.hpp"
 #include "phong_error.hpp"
 #include "phong_model.hpp"
+#include "phong_spans.hpp"
 #include "scanline_setup.hpp"
 
 #include <catch2/catch.hpp>
@@ -18,28 +19,10 @@
 
 using namespace specular;
 using namespace specular::device;
+using specular::test::random_unit;
+using specular::test::span_of;
 
 namespace {
-
-glm::dvec3 random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  for (;;) {
-    const glm::dvec3 v(g(rng), g(rng), g(rng));
-    if (glm::length(v) > 1e-3) return glm::normalize(v);
-  }
-}
-
-GeoSpan span_of(const PhongFormat& f, glm::dvec3 n1, glm::dvec3 n2, glm::dvec3 h1, glm::dvec3 he, int n, int l) {
-  ScanlineInput in;
-  in.n1 = n1;
-  in.n2 = n2;
-  in.h1 = h1;
-  in.he = he;
-  in.n = n;
-  in.l = l;
-  in.is = 1.0;
-  return quantize_geo(in, geo_format(f), c_format(f), 0);
-}
 
 glm::dvec3 vec(const int64_t v[3]) {
   return {static_cast<double>(v[0]), static_cast<double>(v[1]), static_cast<double>(v[2])};

@@ -7,6 +7,7 @@
 #include "metrics.hpp"
 #include "phong_error.hpp"
 #include "phong_model.hpp"
+#include "phong_spans.hpp"
 #include "scanline_setup.hpp"
 
 #include <catch2/catch.hpp>
@@ -17,33 +18,13 @@
 
 using namespace specular;
 using namespace specular::device;
+using specular::test::random_unit;
+using specular::test::span_of;
 using Catch::Matchers::WithinAbs;
 
 namespace {
 
 constexpr double kHalfPi = 1.57079632679489661923;
-
-glm::dvec3 random_unit(std::mt19937_64& rng) {
-  std::normal_distribution<double> g;
-  for (;;) {
-    const glm::dvec3 v(g(rng), g(rng), g(rng));
-    if (glm::length(v) > 1e-3) return glm::normalize(v);
-  }
-}
-
-// A span of the interface from double vectors (quantized by the interface's quantizer).
-GeoSpan span_of(const PhongFormat& f, glm::dvec3 n1, glm::dvec3 n2, glm::dvec3 h1, glm::dvec3 he, int n, int l,
-                double scale = 1.0, uint32_t tag = 0) {
-  ScanlineInput in;
-  in.n1 = n1;
-  in.n2 = n2;
-  in.h1 = h1;
-  in.he = he;
-  in.n = n;
-  in.l = l;
-  in.is = scale;
-  return quantize_geo(in, geo_format(f), c_format(f), tag);
-}
 
 // A random span whose normals lie within `spread` radians of H (so the lobe is crossed).
 GeoSpan random_span(const PhongFormat& f, std::mt19937_64& rng, int n_max) {
