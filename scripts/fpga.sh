@@ -165,7 +165,10 @@ if [ -n "$phong_cfg" ]; then
         case "$a" in --phong-config|--out) skip=1; continue ;; esac
         args+=("$a")
       done
-      bash "$0" "${args[@]}" --phong-config "$c" --out "$out/phong_$c" || all_rc=1
+      c_rc=0
+      bash "$0" "${args[@]}" --phong-config "$c" --out "$out/phong_$c" || c_rc=$?
+      [ "$c_rc" = 2 ] && exit 2  # bad arguments: the same for every configuration
+      [ "$c_rc" = 0 ] || all_rc=1
     done
     exit "$all_rc"
   fi

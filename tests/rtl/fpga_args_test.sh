@@ -20,6 +20,7 @@ expect "--device must be one of hx8k, up5k, ecp5, ecp5-25, ecp5-45, ecp5-85, all
 expect "--top must be one of unit, stream, axil, phong, setup, system, mul, all \(got 'core'\)" --top core
 expect "--device must be one of hx8k, up5k, ecp5, ecp5-25, ecp5-45, ecp5-85, all, or a comma-separated list of them \(got 'hx8k,ecp6'\)" --top setup --device hx8k,ecp6
 expect "--device must be one of .* \(got 'ecp5-12'\)" --device ecp5-12
+expect "--seed must be a non-negative integer \(got 'abc'\)" --top phong --phong-config all --seed abc
 expect "--phong-config must be all or one of n1000,n128,.* \(got 'n7'\)" --top phong --phong-config n7
 expect "--phong-config needs --top phong \(got --top setup\)" --top setup --phong-config n64
 expect "--param must be NAME=VALUE" --param CosAddrBits
