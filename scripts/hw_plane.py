@@ -101,6 +101,7 @@ def points(data, phong, cells, phong_cells):
         rows.append({"name": f"device {key}", "kind": "device",
                      "core": "specular_stream" if key.endswith("-stream") else "specular_unit",
                      "lut4": c.get("lut4"), "ff": c.get("ff"), "bram": c.get("bram"),
+                     "fit": c.get("fit", True), "fit_reason": c.get("fit_reason", ""),
                      "rel": {r: worst(h["n"], h["max_rel_epicenter_lsb"], r) for r in RANGES},
                      "abs": {r: worst(h["n"], h["max_abs_lobe"], r) for r in RANGES}})
     for name in PHONG_CONFIGS:
@@ -111,6 +112,7 @@ def points(data, phong, cells, phong_cells):
         ce = phong_cells.get((name, "ecp5"), {}).get("counts")
         rows.append({"name": f"phong {name}", "kind": "phong", "core": "phong_stream",
                      "lut4": ci.get("SB_LUT4"), "ff": ci.get("SB_DFF*"), "bram": ci.get("SB_RAM40_4K"),
+                     "fit": False, "fit_reason": "",
                      "ecp5": ce,
                      "rel": {r: worst(p["n"], p["rel_lsb"], r) for r in RANGES},
                      "abs": {r: worst(p["n"], p["abs_lsb"], r) for r in RANGES}})
@@ -290,11 +292,19 @@ TABLE_HEADER = ("| point | core | SB_LUT4 | FF | SB_RAM40_4K | logic cells (at l
                 + " | ".join(f"abs. n<={r}" for r in RANGES) + " |")
 
 
+def fit_text(lc_min, fit, reason):
+    """The plane's "fits an iCE40" cell: more logic cells than any iCE40 has, or the HX8K run's own
+    verdict (scripts/fpga.sh: block RAMs and DSPs are checked there too)."""
+    if lc_min > ICE40_MAX_LC:
+        return "no: does not fit any iCE40"
+    return "yes" if fit else f"no: {reason}"
+
+
 def table_row(r):
     if r["cost"] is None:
         cost = ["n/a"] * 5
     else:
-        fits = "yes" if r["lc_min"] <= ICE40_MAX_LC else "no: does not fit any iCE40"
+        fits = fit_text(r["lc_min"], r["fit"], r["fit_reason"])
         cost = [str(r["lut4"]), str(r["ff"]), str(r["bram"]), str(r["lc_min"]), fits]
     e = r.get("ecp5")
     ecp5 = (f"{e['LUT4']} / {e['MULT18X18D']} / {e['DP16KD']} / {e['TRELLIS_FF']}, {e['fmax_mhz']:.2f} MHz "

@@ -228,7 +228,8 @@ class Report:
             return {"error": f"scripts/fpga.sh wrote no summary (logs/{os.path.basename(log)})"}
         y = r["yosys"]
         return {"lut4": y["lut4"], "ff": y["ff"], "bram": y["bram"], "carry": y["carry"],
-                "fmax_mhz": r.get("fmax_mhz"),
+                "fmax_mhz": r.get("fmax_mhz"), "fit": bool(r.get("fit")),
+                "fit_reason": "" if r.get("fit") else re.sub(r" \(.*\)$", "", r.get("reason", "")),
                 "reused": "result reused" in open(log).read(),
                 "seconds": time.time() - t0}
 

@@ -136,7 +136,7 @@ struct PhongFormat {
   int exp_word_bits() const { return exp_bits + 1 + exp_delta_bits(); }
   int rcp_depth() const { return 3 << (rcp_addr_bits - 2); }
   int g_depth() const { return 1 << g_addr_bits; }
-  int rcp_delta_bits() const { return rcp_bits - rcp_addr_bits + 2; }
+  int rcp_delta_bits() const { return rcp_bits - rcp_addr_bits + 3; }  // the first step, rounded, can reach 2^(rcp_bits-rcp_addr_bits+2)
   int g_delta_bits() const { return g_bits - g_addr_bits; }
   // Bits of the largest w = -log2 c (c >= 2^-cos_frac): cos_frac + 1 integer values.
   int w_bits() const;

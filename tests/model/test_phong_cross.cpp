@@ -170,3 +170,22 @@ TEST_CASE("phong cross: the hard cases", "[phong][cross]") {
     }
   }
 }
+
+TEST_CASE("phong cross: every valid format builds its ROMs (the search narrows any field)", "[phong][cross]") {
+  // A word that does not fit its field throws std::logic_error; validate() must reject first.
+  int built = 0;
+  for (int ra = 2; ra <= 10; ++ra)
+    for (int rb = ra + 2; rb <= 24; ++rb)
+      for (int ga = 1; ga <= 8; ++ga) {
+        PhongFormat f = PhongFormat::cross();
+        f.rcp_addr_bits = ra, f.rcp_bits = rb, f.rcp_frac_bits = 1;
+        f.g_addr_bits = ga, f.g_bits = ga + 2 + (rb % 7), f.g_frac_bits = 1;
+        if (f.rcp_addr_bits > f.norm_bits) continue;
+        INFO(f.describe());
+        REQUIRE_NOTHROW(f.validate());
+        REQUIRE_NOTHROW(phong_rcp_rom(f));
+        REQUIRE_NOTHROW(phong_g_rom(f));
+        ++built;
+      }
+  REQUIRE(built > 500);
+}

@@ -189,10 +189,12 @@ def check_plane(out, md, data):
     with open(os.path.join(out, "hw_plane_cells.json")) as f:
         cells = json.load(f)
     expect = []  # (name, kind, lut4, ff, bram, ecp5, rel per range, abs per range)
+    fits = {}  # name -> (the HX8K run's fit, its reason): the device's configurations
     hw = {h["name"]: h for h in data["hardware"]}
     for name in [h["name"] for h in data["hardware"]] + ["default-stream"]:
         h = hw[name.replace("-stream", "")]
         c = cells["device"].get(name)
+        fits[f"device {name}"] = (c.get("fit", True), c.get("fit_reason", "")) if c else (True, "")
         expect.append((f"device {name}", "specular_stream" if name.endswith("-stream") else "specular_unit",
                        c and c["lut4"], c and c["ff"], c and c["bram"], None,
                        [worst(h["n"], h["max_rel_epicenter_lsb"], r) for r in ranges],
@@ -226,8 +228,9 @@ def check_plane(out, md, data):
             cost = ["n/a"] * 5
         else:
             lc = max(lut4, ff)
+            fit, reason = fits.get(name, (False, ""))
             cost = [str(lut4), str(ff), str(bram), str(lc),
-                    "yes" if lc <= 7680 else "no: does not fit any iCE40"]
+                    "no: does not fit any iCE40" if lc > 7680 else ("yes" if fit else f"no: {reason}")]
         e = "-" if ecp5 is None else ("not run" if ecp5 == "not run" else
                                        f"{ecp5['LUT4']} / {ecp5['MULT18X18D']} / {ecp5['DP16KD']} / "
                                        f"{ecp5['TRELLIS_FF']}, {ecp5['fmax_mhz']:.2f} MHz ({ecp5['part']})")
@@ -287,8 +290,11 @@ def check(out):
     hw = data["hardware"]
     if not hw:
         errors.append("report_data.json has no hardware configurations")
+    # The section 4 table only: the simulation's tables (section 5) have a row per
+    # configuration too.
+    hw_rows = table_after(md, "| config | ROM 12 addr/data bits |") or []
     for h in hw:
-        mine = [r for r in rows if r and r[0] == h["name"]]
+        mine = [r for r in hw_rows if r and r[0] == h["name"]]
         if len(mine) != 1:
             errors.append(f"hardware {h['name']}: {len(mine)} table rows, expected 1")
             continue
