@@ -146,8 +146,8 @@ PhongError phong_error_on(const PhongModel& m, int n, const std::vector<GeoSpan>
   return e;
 }
 
-ErrorBudget ErrorBudget::named(const std::string& name) {
-  for (const ErrorBudget& b : {b1(), b2(), b3()})
+PixelBudget PixelBudget::named(const std::string& name) {
+  for (const PixelBudget& b : {b1(), b2(), b3()})
     if (name == b.name) return b;
   throw std::invalid_argument("error budget '" + name + "' is not one of b1, b2, b3");
 }

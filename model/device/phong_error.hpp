@@ -27,17 +27,18 @@ std::vector<GeoSpan> phong_sweep_spans(int n, const PhongFormat& f, uint64_t see
 
 // An error budget of docs/metrics.md#budgets: B1 (the device's default: 0.10 % of the pixel + 1
 // LSB in the epicenter, 0.01 C + 1 LSB over the lobe), B2 (an 8-bit display: every pixel within
-// 2^-9 of full scale, C), B3 (the patent's claim: 1 % + 1 LSB, 0.01 C + 1 LSB).
-struct ErrorBudget {
+// 2^-9 of full scale, C), B3 (the patent's claim: 1 % + 1 LSB, 0.01 C + 1 LSB). The budget a
+// build configuration of the device is regressed against is rom_image.hpp's ErrorBudget.
+struct PixelBudget {
   const char* name = "b1";
   double rel_lsb = 1e-3;   // bound of PhongError::rel_lsb
   double abs_lsb = 1e-2;   // bound of PhongError::abs_lsb
   double abs_raw = 1e300;  // bound of PhongError::abs_raw
-  static ErrorBudget b1() { return {}; }
-  static ErrorBudget b2() { return {"b2", 1e300, 1e300, 1.0 / 512.0}; }
-  static ErrorBudget b3() { return {"b3", 1e-2, 1e-2, 1e300}; }
+  static PixelBudget b1() { return {}; }
+  static PixelBudget b2() { return {"b2", 1e300, 1e300, 1.0 / 512.0}; }
+  static PixelBudget b3() { return {"b3", 1e-2, 1e-2, 1e300}; }
   // b1, b2 or b3; throws std::invalid_argument naming the allowed names otherwise.
-  static ErrorBudget named(const std::string& name);
+  static PixelBudget named(const std::string& name);
 };
 
 struct PhongError {
@@ -59,7 +60,7 @@ struct PhongError {
     return rel_lsb <= rel_budget && abs_lsb <= abs_budget;
   }
   // The budget, each bound scaled by margin (<= 1: held to a fraction of it).
-  bool meets(const ErrorBudget& b, double margin = 1.0) const {
+  bool meets(const PixelBudget& b, double margin = 1.0) const {
     return rel_lsb <= b.rel_lsb * margin && abs_lsb <= b.abs_lsb * margin && abs_raw <= b.abs_raw * margin;
   }
 };

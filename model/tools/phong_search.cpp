@@ -29,7 +29,7 @@
 #include <utility>
 #include <vector>
 
-using specular::device::ErrorBudget;
+using specular::device::PixelBudget;
 using specular::device::PhongError;
 using specular::device::PhongForm;
 using specular::device::PhongFormat;
@@ -75,7 +75,7 @@ const std::vector<Field>& cross_fields() {
 }
 
 // The budget and form of this run (main sets them before any search).
-ErrorBudget g_budget = ErrorBudget::b1();
+PixelBudget g_budget = PixelBudget::b1();
 bool g_cross = false;
 
 const std::vector<Field>& search_fields() {
@@ -248,7 +248,7 @@ int main(int argc, char** argv) {
                    f.*(fd.member), "start value (search) or value (eval)")
         ->capture_default_str();
   if (auto rc = specular::parse_command_line(app, argc, argv, "phong_search")) return *rc;
-  g_budget = ErrorBudget::named(budget);
+  g_budget = PixelBudget::named(budget);
   if (!measure.empty()) return measure_preset(measure, n_step, seed, json_out);
   try {
     f.validate();

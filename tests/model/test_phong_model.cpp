@@ -324,18 +324,18 @@ TEST_CASE("phong: phong_exact agrees with phong_truth for exactly unit end vecto
 }
 
 TEST_CASE("phong: the three error budgets of docs/metrics.md#budgets", "[phong][budget]") {
-  REQUIRE(std::string(ErrorBudget::named("b2").name) == "b2");
-  REQUIRE_THROWS_WITH(ErrorBudget::named("b4"), Catch::Contains("b1, b2, b3"));
+  REQUIRE(std::string(PixelBudget::named("b2").name) == "b2");
+  REQUIRE_THROWS_WITH(PixelBudget::named("b4"), Catch::Contains("b1, b2, b3"));
   PhongError e;
   e.rel_lsb = 5e-3;  // over B1's 0.10 %, within B3's 1 %
   e.abs_lsb = 1e-3;
   e.abs_raw = 1.5e-3;  // within B2's 2^-9 = 1.95e-3
-  REQUIRE_FALSE(e.meets(ErrorBudget::b1()));
-  REQUIRE(e.meets(ErrorBudget::b3()));
-  REQUIRE(e.meets(ErrorBudget::b2()));
-  REQUIRE_FALSE(e.meets(ErrorBudget::b2(), 0.5));  // held to half of it
+  REQUIRE_FALSE(e.meets(PixelBudget::b1()));
+  REQUIRE(e.meets(PixelBudget::b3()));
+  REQUIRE(e.meets(PixelBudget::b2()));
+  REQUIRE_FALSE(e.meets(PixelBudget::b2(), 0.5));  // held to half of it
   e.abs_raw = 2.5e-3;
-  REQUIRE_FALSE(e.meets(ErrorBudget::b2()));
+  REQUIRE_FALSE(e.meets(PixelBudget::b2()));
   // The sweep measures the raw absolute error too: at least the allowance-free absolute one.
   const PhongModel m(PhongFormat{});
   const PhongError s = phong_error(m, 64, 1);
