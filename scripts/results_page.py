@@ -315,8 +315,9 @@ def section_device_search(d, rel):
         for x in r["runs"]:
             banks = "{" + ",".join(str(k) for k in x["banks"]) + "}"
             if not x.get("meets"):
-                rows.append([r["budget"].upper(), num(r["n_max"]), banks, "misses at the default widths",
-                             "", "", "", "", "", ""])
+                rows.append([r["budget"].upper(), num(r["n_max"]), banks,
+                             f"misses at the default widths (worst at n = {x['worst_n']})", "", "", "",
+                             sci(x["rel_lsb"]), sci(x["abs_lsb"]), sci(x["abs_raw"])])
                 continue
             best = bool(r["best"]) and x["banks"] == r["best"]["banks"]
             rows.append([r["budget"].upper(), num(r["n_max"]), banks + (" (fewest bits)" if best else ""),

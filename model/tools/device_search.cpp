@@ -150,8 +150,12 @@ int main(int argc, char** argv) {
     std::string set;
     for (int k : banks) set += (set.empty() ? "" : ",") + std::to_string(k);
     if (!measure(f, spec, n_max, b, true).meets) {
-      std::cerr << "device_search: banks {" << set << "}: the default widths miss the budget; skipped\n";
-      runs.push_back({{"banks", banks}, {"meets", false}});
+      // Its errors at the default widths, every n: why it is out.
+      const Result m = measure(f, spec, n_max, b, false);
+      std::printf("banks {%s}: misses at the default widths: rel %.3e abs %.3e raw %.3e (worst at n = %d)\n",
+                  set.c_str(), m.rel_lsb, m.abs_lsb, m.abs_raw, m.worst_n);
+      runs.push_back({{"banks", banks}, {"meets", false}, {"rel_lsb", m.rel_lsb}, {"abs_lsb", m.abs_lsb},
+                      {"abs_raw", m.abs_raw}, {"worst_n", m.worst_n}});
       continue;
     }
     for (bool changed = true; changed;) {
