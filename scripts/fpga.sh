@@ -370,7 +370,9 @@ cells = Counter()
 for m in re.finditer(r"^\s+(SB_\w+)\s+(\d+)\s*$", text, re.M):
     cells[m[1]] += int(m[2])
 lut, ff = cells["SB_LUT4"], sum(v for k, v in cells.items() if k.startswith("SB_DFF"))
-lc_avail, ram_avail, dsp_avail = {"hx8k": (7680, 32, 0), "up5k": (5280, 30, 8)}[sys.argv[2]]
+sys.path.insert(0, "scripts")
+import fpga_parts
+_, lc_avail, ram_avail, dsp_avail = fpga_parts.ICE40[sys.argv[2]]
 lc = max(lut, ff)  # a logic cell holds one LUT4 and one flip-flop: at least this many
 why = []
 if lc > lc_avail:
@@ -403,16 +405,14 @@ if "=== design hierarchy ===" in text:
 cells = {}
 for m in re.finditer(r"^\s+([A-Z][A-Z0-9_]+)\s+(\d+)\s*$", text, re.M):
     cells[m[1]] = cells.get(m[1], 0) + int(m[2])
-# LFE5U-25F / 45F / 85F (data sheet): LUT4 positions = flip-flops, MULT18X18D, DP16KD.
-parts = {"ecp5-25": ("LFE5U-25F", "25k", 24288, 28, 56), "ecp5-45": ("LFE5U-45F", "45k", 43848, 72, 108),
-         "ecp5-85": ("LFE5U-85F", "85k", 83640, 156, 208)}
+sys.path.insert(0, "scripts")
+import fpga_parts
 need = (cells.get("LUT4", 0) + 2 * cells.get("CCU2C", 0), cells.get("TRELLIS_FF", 0),
         cells.get("MULT18X18D", 0), cells.get("DP16KD", 0))
-def holds(p):
-    return need[0] <= p[2] and need[1] <= p[2] and need[2] <= p[3] and need[3] <= p[4]
 dev = sys.argv[2]
+parts = fpga_parts.ECP5_DEVICES
 cands = [parts[dev]] if dev in parts else list(parts.values())
-part = next((p for p in cands if holds(p)), None)
+part = fpga_parts.smallest_lfe5u(*need, parts=cands)
 if part:
     open(sys.argv[3], "w").write(f"{part[0]} {part[1]}\n")
 else:
@@ -472,10 +472,8 @@ for line in stat.splitlines():
         cells[m[1]] = cells.get(m[1], 0) + int(m[2])
 log = read(os.path.join(d, "nextpnr.log"))
 nofit = read(os.path.join(d, "nofit.txt")).strip()
-# ECP5 parts (LFE5U, data sheet): LUT4 positions (= flip-flops), 18x18 multipliers, EBR
-# blocks (DP16KD); the smallest that holds Yosys' counts.
-LFE5U = [("LFE5U-12F", 12288, 28, 32), ("LFE5U-25F", 24288, 28, 56),
-         ("LFE5U-45F", 43848, 72, 108), ("LFE5U-85F", 83640, 156, 208)]
+sys.path.insert(0, "scripts")
+import fpga_parts
 ecp5 = dev.startswith("ecp5")
 if ecp5:
     y = {"lut4": cells.get("LUT4", 0), "ccu2c": cells.get("CCU2C", 0),
@@ -486,8 +484,8 @@ if ecp5:
     # a CCU2C (two bits of carry chain) takes the two LUT4 positions of a slice
     y["lut4_positions"] = y["lut4"] + 2 * y["ccu2c"]
     res["yosys"] = y
-    need = (y["lut4_positions"], y["mult18x18d"], y["dp16kd"], y["ff"])
-    part = next((p for p in LFE5U if need[0] <= p[1] and need[1] <= p[2] and need[2] <= p[3] and need[3] <= p[1]), None)
+    # The smallest that holds Yosys' counts.
+    part = fpga_parts.smallest_lfe5u(y["lut4_positions"], y["ff"], y["mult18x18d"], y["dp16kd"])
     res["smallest_lfe5u"] = part[0] if part else None
     placed_on = read(os.path.join(d, "ecp5_part.txt")).split()
     if placed_on:
@@ -498,7 +496,7 @@ else:
                     "carry": cells.get("SB_CARRY", 0),
                     "bram": cells.get("SB_RAM40_4K", 0),
                     "dsp": cells.get("SB_MAC16", 0)}
-    res["lcs_available"] = {"hx8k": 7680, "up5k": 5280}[dev]
+    res["lcs_available"] = fpga_parts.ICE40[dev][1]
 if int(synth_rc) == 124:  # timeout(1): --yosys-timeout
     res["status"] = "synthesis timed out"
     res["fit"] = None
@@ -613,9 +611,8 @@ def multipliers(r):
         return "LUT trees"
     return ("SB_MAC16" if r["device"] == "up5k" else "MULT18X18D") + f" tiles ({tile}-bit)"
 
-# The smallest iCE40 that holds a placed run: the UP5K (5,280 LCs, 30 block RAMs, 8 SB_MAC16),
-# else the HX8K (7,680 LCs, 32 block RAMs, no DSP).
-ICE40_PARTS = (("UP5K", 5280, 30, 8), ("HX8K", 7680, 32, 0))
+sys.path.insert(0, "scripts")
+import fpga_parts
 
 # The runs in the shapes of docs/fpga_figures.json: placed iCE40 runs as "runs" entries, placed
 # ECP5 runs as "ecp5_runs" entries, the runs whose Yosys counts exceed the part as
@@ -637,8 +634,7 @@ for r, date in zip(runs, dates):
                   "fmax_mhz": r.get("fmax_mhz"), "target_mhz": r["target_mhz"],
                   "lcs": lcs, "lcs_available": npr["ICESTORM_LC"]["available"],
                   "sb_lut4": y["lut4"], "sb_carry": y["carry"], "ffs": y["ff"], "brams": bram, "dsps": dsp,
-                  "smallest_ice40": next((p for p, lc, b, d in ICE40_PARTS if lcs <= lc and bram <= b and dsp <= d),
-                                         None)})
+                  "smallest_ice40": fpga_parts.smallest_ice40(lcs, bram, dsp)})
         entries.append(e)
         continue
     if r["device"].startswith("ecp5") and r["status"] == "placed and routed":

@@ -18,6 +18,8 @@ import os
 import subprocess
 import time
 
+import fpga_parts  # scripts/fpga_parts.py, beside this file
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 # The Phong configurations of docs/phong_hw.md (names of roms/phong/phong_configs.cmake).
@@ -25,7 +27,7 @@ PHONG_CONFIGS = ("n1000", "n128", "n64", "n1000_consth")
 # The n ranges of the plane: 1..64, 1..128, 1..1000 (the ranges the Phong presets serve).
 RANGES = (64, 128, 1000)
 REL_BUDGET, ABS_BUDGET = 1e-3, 1e-2  # 0.10 % + 1 LSB in the epicenter, 0.01 C over the lobe
-ICE40_MAX_LC = 7680  # the largest iCE40 (HX8K / LP8K)
+ICE40_MAX_LC = fpga_parts.ICE40_MAX_LC
 
 
 def worst(ns, vals, hi):
@@ -62,6 +64,15 @@ def measure_phong(exe, out, logs, n_step, missing, timings):
     return res
 
 
+def load_figures(path):
+    """docs/fpga_figures.json (or the file at path) as a dict; {} when it is missing or unreadable."""
+    try:
+        with open(path) as f:
+            return json.load(f)
+    except (OSError, ValueError):
+        return {}
+
+
 def phong_figures(path=os.path.join(ROOT, "docs", "fpga_figures.json")):
     """The committed scripts/fpga.sh figures of phong_stream per configuration (make fpga
     --top phong --phong-config CFG; synthesis and place and route of the Phong core take longer
@@ -69,11 +80,7 @@ def phong_figures(path=os.path.join(ROOT, "docs", "fpga_figures.json")):
     (LUT trees; the core needs more logic cells than any iCE40 has, so there is no placement),
     (cfg, "ecp5") -> the placed and routed ECP5 run (MULT18X18D tiles) with its Fmax and part.
     Each with the RTL commit of its run."""
-    try:
-        with open(path) as f:
-            d = json.load(f)
-    except (OSError, ValueError):
-        return {}
+    d = load_figures(path)
     res = {}
     for e in d.get("synthesis_runs", []) + d.get("runs", []):
         if e.get("core") == "phong_stream" and e.get("part", "").startswith("HX8K"):
@@ -155,11 +162,7 @@ def ecp5_runs(path=os.path.join(ROOT, "docs", "fpga_figures.json")):
     every core): name -> entry, for specular_system at each SetupII ("specular_system" is SetupII 1,
     "specular_system SetupII=K" the others; synthesis counts, the system fits no ECP5) and each
     phong_stream configuration ("phong CONFIG"; its placed and routed run where there is one)."""
-    try:
-        with open(path) as f:
-            d = json.load(f)
-    except (OSError, ValueError):
-        return {}
+    d = load_figures(path)
     out = {}
     for e in d.get("synthesis_runs", []):
         if e.get("part") != "ECP5":

@@ -77,6 +77,7 @@ struct Format {
   int cos_word_bits() const { return cos_interp ? cos_data_bits + 1 + cos_delta_bits : cos_data_bits; }
   // ceil(pi/2 * 2^angle_frac): |psi| codes at or above it are at or past pi/2.
   int64_t half_pi_code() const;
+  bool operator==(const Format&) const = default;
 };
 // kMaxLen is a full counter: the default len_bits hold exactly 0..kMaxLen.
 static_assert(std::has_single_bit(static_cast<unsigned>(kMaxLen) + 1U), "kMaxLen must be 2^len_bits - 1");

@@ -52,6 +52,18 @@ std::vector<uint64_t> step_rom(const char* name, int depth, int value_bits, bool
   return rom;
 }
 
+// The interpolated read of a step_rom: x holds `width` bits; the word is at its top addr_bits
+// (less `base`), the next frac_bits weight the step, which is added (a rising table) or
+// subtracted (a falling one) rounded half up.
+uint64_t step_read(const std::vector<uint64_t>& rom, int delta_bits, uint64_t x, int width, int addr_bits,
+                   int frac_bits, uint64_t base, bool rising) {
+  const uint64_t word = rom.at((x >> (width - addr_bits)) - base);
+  const uint64_t t = (x >> (width - addr_bits - frac_bits)) & ((uint64_t{1} << frac_bits) - 1);
+  const uint64_t v = word >> delta_bits, dv = word & ((uint64_t{1} << delta_bits) - 1);
+  const uint64_t step = (dv * t + (uint64_t{1} << (frac_bits - 1))) >> frac_bits;
+  return rising ? v + step : v - step;
+}
+
 int64_t sign_extend(uint64_t v, int bits) {
   const uint64_t mask = (uint64_t{1} << bits) - 1;
   v &= mask;
@@ -312,46 +324,33 @@ PhongTrace PhongModel::trace(const GeoSpan& in, int i) const {
 
   // log2(1 + frac 2^-cos_frac) 2^log_bits from the interpolated log2 ROM.
   auto log_lookup = [&](uint64_t frac) {
-    const uint64_t j = frac >> (f.cos_frac - f.log_addr_bits);
-    const uint64_t tw = (frac >> (f.cos_frac - f.log_addr_bits - f.log_frac_bits)) & ((uint64_t{1} << f.log_frac_bits) - 1);
-    const uint64_t word = log_[j];
-    const int db = f.log_delta_bits();
-    const uint64_t v = word >> db, dv = word & ((uint64_t{1} << db) - 1);
-    return v + ((dv * tw + (uint64_t{1} << (f.log_frac_bits - 1))) >> f.log_frac_bits);
+    return step_read(log_, f.log_delta_bits(), frac, f.cos_frac, f.log_addr_bits, f.log_frac_bits, 0, true);
   };
+  // na nb = (mm / 2^m_frac) 4^big_k.
+  const int big_k = t.ea / 2 + t.eb / 2 + t.em;
 
   if (f.form == PhongForm::cross) {
     // The cancellation-free form: sin^2 or cos^2 times 1/(|a|^2 |b|^2), no square root.
     const i128 u[3] = {i128{t.a[1]} * t.b[2] - i128{t.a[2]} * t.b[1], i128{t.a[2]} * t.b[0] - i128{t.a[0]} * t.b[2],
                        i128{t.a[0]} * t.b[1] - i128{t.a[1]} * t.b[0]};
-    const int big_u = t.ea / 2 + t.eb / 2 + t.em;
-    const uint64_t ridx = t.mm >> (f.norm_bits - f.rcp_addr_bits);
-    const uint64_t rj = ridx - (uint64_t{1} << (f.rcp_addr_bits - 2));
-    const uint64_t rt = (t.mm >> (f.norm_bits - f.rcp_addr_bits - f.rcp_frac_bits)) & ((uint64_t{1} << f.rcp_frac_bits) - 1);
-    const int rdb = f.rcp_delta_bits();
-    const uint64_t rv = rcp_.at(rj) >> rdb, rdv = rcp_.at(rj) & ((uint64_t{1} << rdb) - 1);
-    t.r = rv - ((rdv * rt + (uint64_t{1} << (f.rcp_frac_bits - 1))) >> f.rcp_frac_bits);
+    t.r = step_read(rcp_, f.rcp_delta_bits(), t.mm, f.norm_bits, f.rcp_addr_bits, f.rcp_frac_bits,
+                    uint64_t{1} << (f.rcp_addr_bits - 2), false);
     const int q = f.u_bits - 2;
     u128 su = 0;
     for (int c = 0; c < 3; ++c) {
-      t.u[c] = static_cast<int64_t>(shift(u[c], q - big_u));
+      t.u[c] = static_cast<int64_t>(shift(u[c], q - big_k));
       su += static_cast<u128>(i128{t.u[c]} * t.u[c]);
     }
-    const i128 dq = shift(d, q - big_u);
+    const i128 dq = shift(d, q - big_k);
     t.su = static_cast<uint64_t>(su);
     t.sd = static_cast<uint64_t>(dq * dq);
     t.sine = t.su <= t.sd;
     if (t.sine) {
-      const uint64_t half = uint64_t{1} << (f.s_frac - 1);
-      t.s = static_cast<uint64_t>(std::min<u128>(shift(static_cast<i128>(su * t.r), f.s_frac - 2 * q - f.rcp_bits),
-                                                 half));
-      if (t.s == half) t.s = half - 1;  // the g ROM covers [0, 1/2)
-      const int gb = f.s_frac - 1 - f.g_addr_bits;
-      const uint64_t gj = t.s >> gb;
-      const uint64_t gt = (t.s >> (gb - f.g_frac_bits)) & ((uint64_t{1} << f.g_frac_bits) - 1);
-      const int gdb = f.g_delta_bits();
-      const uint64_t gv = g_.at(gj) >> gdb, gdv = g_.at(gj) & ((uint64_t{1} << gdb) - 1);
-      t.gv = gv + ((gdv * gt + (uint64_t{1} << (f.g_frac_bits - 1))) >> f.g_frac_bits);
+      // Clamped below 1/2, the end of the g ROM.
+      const uint64_t below_half = (uint64_t{1} << (f.s_frac - 1)) - 1;
+      t.s = static_cast<uint64_t>(
+          std::min<u128>(shift(static_cast<i128>(su * t.r), f.s_frac - 2 * q - f.rcp_bits), below_half));
+      t.gv = step_read(g_, f.g_delta_bits(), t.s, f.s_frac - 1, f.g_addr_bits, f.g_frac_bits, 0, true);
       t.w = static_cast<uint64_t>((u128{t.s} * t.gv) >> (f.s_frac + f.g_bits - f.log_bits));
     } else {
       const int ed = bit_width_u(static_cast<u128>(d)) - 1;
@@ -364,7 +363,7 @@ PhongTrace PhongModel::trace(const GeoSpan& in, int i) const {
       const uint64_t frac = static_cast<uint64_t>(shift(static_cast<i128>(big_p), f.cos_frac - pf - ep)) -
                             (uint64_t{1} << f.cos_frac);
       const int64_t lg = static_cast<int64_t>(log_lookup(frac));
-      const int64_t w2 = ((int64_t{2} * (big_u - ed) - ep) << f.log_bits) - lg;
+      const int64_t w2 = ((int64_t{2} * (big_k - ed) - ep) << f.log_bits) - lg;
       t.w = w2 > 0 ? static_cast<uint64_t>(w2 >> 1) : 0;
     }
   } else {
@@ -380,7 +379,6 @@ PhongTrace PhongModel::trace(const GeoSpan& in, int i) const {
       y = static_cast<uint64_t>((u128{y} * (three - uu)) >> (f.norm_bits + 1));
     }
     t.y = y;
-    const int big_k = t.ea / 2 + t.eb / 2 + t.em;
     t.dn = static_cast<uint64_t>(shift(d, f.cos_frac - big_k));
     const uint64_t one = uint64_t{1} << f.cos_frac;
     t.c = static_cast<uint64_t>(std::min<u128>((u128{t.dn} * y) >> f.norm_bits, one));
@@ -399,12 +397,7 @@ PhongTrace PhongModel::trace(const GeoSpan& in, int i) const {
   const uint64_t zi = t.z >> f.log_bits;
   if (zi > static_cast<uint64_t>(f.exp_bits)) return t;
   const uint64_t zf = t.z & ((uint64_t{1} << f.log_bits) - 1);
-  const uint64_t j = zf >> (f.log_bits - f.exp_addr_bits);
-  const uint64_t tw = (zf >> (f.log_bits - f.exp_addr_bits - f.exp_frac_bits)) & ((uint64_t{1} << f.exp_frac_bits) - 1);
-  const uint64_t word = exp_[j];
-  const int db = f.exp_delta_bits();
-  const uint64_t u = word >> db, du = word & ((uint64_t{1} << db) - 1);
-  t.p = (u - ((du * tw + (uint64_t{1} << (f.exp_frac_bits - 1))) >> f.exp_frac_bits)) >> zi;
+  t.p = step_read(exp_, f.exp_delta_bits(), zf, f.log_bits, f.exp_addr_bits, f.exp_frac_bits, 0, false) >> zi;
   t.intensity = static_cast<uint32_t>((uint64_t{s.scale} * t.p + (uint64_t{1} << (f.exp_bits - 1))) >> f.exp_bits);
   return t;
 }

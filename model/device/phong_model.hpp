@@ -53,12 +53,12 @@
 //          |component| of N1 and N2 (bits), hb the same of H1 and He (H1 alone when const_h);
 //          a = (A_i + 2^(drop-hn-1)) >> (drop - hn), drop = acc_bits - op_bits; b likewise with hb
 //   u      = a x b                                        exact (six op_bits^2 products)
-//   U      = ea/2 + eb/2 + em                             na nb = (mm / 2^(norm_bits-2)) 4^U
+//   K      as above: na nb = (mm / 2^(norm_bits-2)) 4^K
 //   r      = 1/mm from the interpolated reciprocal ROM     rcp_bits fraction bits, (1/4, 1]
 //            word j = {v, dv}: v = round(2^rcp_bits / x_j), x_j = 1 + j 2^-(rcp_addr_bits-2) on [1, 4),
 //            dv = v(j) - v(j+1); t = the rcp_frac_bits bits of mm below the address;
 //            r = v - ((dv * t + 2^(rcp_frac_bits-1)) >> rcp_frac_bits)
-//   q      = u_bits - 2; u'_c = u_c >> (U - q), d' = d >> (U - q)   (floor; |u'|, |d'| < 2^(q+1))
+//   q      = u_bits - 2; u'_c = u_c >> (K - q), d' = d >> (K - q)   (floor; |u'|, |d'| < 2^(q+1))
 //   su     = |u'|^2, sd = d'^2                            exact; su <= sd (s <= 1/2): the sine branch
 //   sine:  s = min((su * r) >> (2q + rcp_bits - s_frac), 2^(s_frac-1))   sin^2, s_frac fraction bits
 //          word j of the g ROM = {v, dv}: v = round(g(x_j) 2^g_bits), g(x) = -log2(1 - x) / (2x)
@@ -70,7 +70,7 @@
 //          P = dm^2 * r (2 dm_frac + rcp_bits fraction bits, [1/4, 4)); ep = floor(log2 P) in -2..1;
 //          mant = P / 2^ep in [1, 2), its top cos_frac fraction bits -> the log2 ROM as above
 //          (j, t, v, dv, lg = log2 mant with log_bits fraction bits);
-//          w = max(0, ((2 (U - ed) - ep) << log_bits) - lg) >> 1        = -log2(cos^2) / 2
+//          w = max(0, ((2 (K - ed) - ep) << log_bits) - lg) >> 1        = -log2(cos^2) / 2
 //   the rsqrt ROM, newton and norm-to-cos steps are not used.
 #pragma once
 

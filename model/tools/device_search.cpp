@@ -12,6 +12,7 @@
 #include "decoder_table.hpp"
 #include "device_error.hpp"
 #include "device_model.hpp"
+#include "narrow_fields.hpp"
 #include "phong_error.hpp"
 #include "rom_image.hpp"
 
@@ -39,11 +40,7 @@ const std::vector<std::vector<int>> kBankSets{{1, 2, 4, 16},
                                               {1, 2, 3, 4, 6, 8, 12, 16},
                                               {1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 48, 64}};
 
-struct Field {
-  const char* name;
-  int Format::*member;
-  int lo;
-};
+using Field = specular::SearchField<Format>;
 
 // The integer bits of ROM 9's words stay those of the default build; coef_frac follows coef_bits.
 const std::vector<Field>& fields() {
@@ -141,7 +138,6 @@ int main(int argc, char** argv) {
 
   nlohmann::json runs = nlohmann::json::array();
   Format best;
-  Result best_r;
   long best_bits = -1;
   for (const std::vector<int>& banks : kBankSets) {
     Format f = start.f;
@@ -158,29 +154,14 @@ int main(int argc, char** argv) {
                       {"abs_raw", m.abs_raw}, {"worst_n", m.worst_n}});
       continue;
     }
-    for (bool changed = true; changed;) {
-      changed = false;
-      for (const Field& fd : fields()) {
-        // Bisection (the error falls with the width); the accepted configuration keeps the
-        // step width its table needed.
-        int hi = f.*(fd.member), lo = fd.lo;
-        Format keep = f;
-        while (lo < hi) {
-          const int mid = (lo + hi) / 2;
-          Format g = f;
-          g.*(fd.member) = mid;
+    // ROM 9's fraction follows its width; a table keeps the step width it needed.
+    specular::narrow_fields(
+        f, fields(),
+        [&](Format& g) {
           g.coef_frac = g.coef_bits - coef_int;
-          if (measure(g, spec, n_max, b, true).meets) {
-            hi = mid;
-            keep = g;
-          } else {
-            lo = mid + 1;
-          }
-        }
-        changed = changed || keep.*(fd.member) != f.*(fd.member) || rom_bits(keep) != rom_bits(f);
-        f = keep;
-      }
-    }
+          return measure(g, spec, n_max, b, true).meets;
+        },
+        [](const Field&, const Format&) {});
     const Result r = measure(f, spec, n_max, b, false);
     std::printf("banks {%s}: addr %d data %d delta %d frac %d coef %d/%d psi %d: %ld ROM bits; rel %.3e abs %.3e "
                 "raw %.3e (worst at n = %d) %s\n",
@@ -196,7 +177,6 @@ int main(int argc, char** argv) {
     runs.push_back(j);
     if (r.meets && (best_bits < 0 || rom_bits(f) < best_bits)) {
       best = f;
-      best_r = r;
       best_bits = rom_bits(f);
     }
   }

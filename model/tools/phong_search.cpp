@@ -15,6 +15,7 @@
 // measured at the budget on the sweeps of two other seeds, and where it misses, widened one
 // field at a time (the one that meets, cheapest first, or else the one that helps most).
 #include "cli_parse.hpp"
+#include "narrow_fields.hpp"
 #include "phong_error.hpp"
 #include "phong_model.hpp"
 
@@ -41,11 +42,7 @@ namespace {
 // meets the budget itself on the sweeps of two other seeds.
 constexpr double kMargin = 0.9;
 
-struct Field {
-  const char* name;
-  int PhongFormat::*member;
-  int lo;
-};
+using Field = specular::SearchField<PhongFormat>;
 
 const std::vector<Field>& cross_fields() {
   // The cross form (docs/phong_hw.md#the-cancellation-free-form): the fifteen operand products
@@ -268,25 +265,11 @@ int main(int argc, char** argv) {
     }
     // Passes until none narrows a field: a field bounded by another (log_frac_bits by
     // cos_frac, exp_frac_bits by log_bits) can shrink once the other has.
-    for (bool changed = true; changed;) {
-     changed = false;
-     for (const Field& fd : search_fields()) {
-      // Smallest value that still meets the budget, by bisection (error falls with width).
-      int hi = f.*(fd.member), lo = fd.lo;
-      while (lo < hi) {
-        const int mid = (lo + hi) / 2;
-        PhongFormat g = f;
-        g.*(fd.member) = mid;
-        if (valid(g) && sweep(g, ns, seed, true, kMargin).meets)
-          hi = mid;
-        else
-          lo = mid + 1;
-      }
-      changed = changed || hi != f.*(fd.member);
-      f.*(fd.member) = hi;
-      std::cerr << fd.name << " = " << hi << "   (" << f.describe() << ")\n";
-     }
-    }
+    specular::narrow_fields(
+        f, search_fields(), [&](const PhongFormat& g) { return valid(g) && sweep(g, ns, seed, true, kMargin).meets; },
+        [](const Field& fd, const PhongFormat& g) {
+          std::cerr << fd.name << " = " << g.*(fd.member) << "   (" << g.describe() << ")\n";
+        });
   }
   // The result on every n with two other seeds, at the budget itself. When the search's
   // result misses it there (the sweep of one seed did not hit the worst geometry), one field

@@ -1,0 +1,29 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The FPGA parts of the flow and their resources (data sheets), one definition for
+scripts/fpga.sh's checks and summaries and for make report's hardware plane."""
+
+# iCE40, by fpga.sh's --device name: (part, logic cells, SB_RAM40_4K, SB_MAC16).
+ICE40 = {"up5k": ("UP5K", 5280, 30, 8), "hx8k": ("HX8K", 7680, 32, 0)}
+# The largest iCE40's logic cells (HX8K / LP8K).
+ICE40_MAX_LC = max(p[1] for p in ICE40.values())
+
+# LFE5U, smallest first: (part, nextpnr size flag, LUT4 positions (= flip-flops), MULT18X18D, DP16KD).
+LFE5U = [("LFE5U-12F", "12k", 12288, 28, 32), ("LFE5U-25F", "25k", 24288, 28, 56),
+         ("LFE5U-45F", "45k", 43848, 72, 108), ("LFE5U-85F", "85k", 83640, 156, 208)]
+# fpga.sh's ECP5 devices (the parts it places on).
+ECP5_DEVICES = {"ecp5-25": LFE5U[1], "ecp5-45": LFE5U[2], "ecp5-85": LFE5U[3]}
+
+
+def smallest_ice40(lcs, brams, dsps):
+    """The smallest iCE40 whose logic cells, block RAMs and SB_MAC16 hold the counts, or None."""
+    return next((p[0] for p in sorted(ICE40.values(), key=lambda p: p[1])
+                 if lcs <= p[1] and brams <= p[2] and dsps <= p[3]), None)
+
+
+def lfe5u_holds(p, lut4_positions, ffs, mults, ebrs):
+    return lut4_positions <= p[2] and ffs <= p[2] and mults <= p[3] and ebrs <= p[4]
+
+
+def smallest_lfe5u(lut4_positions, ffs, mults, ebrs, parts=LFE5U):
+    """The smallest of `parts` that holds the counts, or None."""
+    return next((p for p in parts if lfe5u_holds(p, lut4_positions, ffs, mults, ebrs)), None)
