@@ -3,10 +3,13 @@
 // bit for bit, on the geometry span interface (docs/interfaces.md#geometry-span-interface):
 // random spans and the hard cases under random span offers, random pixel backpressure and
 // random asynchronous resets (a reset drops every span and pixel in flight), and the
-// throughput contract (one pixel per clock, l = 0 spans back to back included). Two
-// configurations: n1000 (the default parameters) and n64 with constant H.
+// throughput contract (one pixel per clock, l = 0 spans back to back included). Four
+// configurations: n1000 (the default parameters), n64 with constant H, and the
+// cancellation-free form (PhongFormat::cross) with and without constant H.
 // The expected pixels come from PhongModel::stream_span of each span the core accepted; the
 // handshake rules (valid held, data stable while stalled) are checked every cycle.
+#include "Vphong_cross_n1000.h"
+#include "Vphong_cross_n1000_consth.h"
 #include "Vphong_n1000.h"
 #include "Vphong_n64_consth.h"
 #include "geo_span.hpp"
@@ -65,6 +68,16 @@ std::vector<GeoSpan> random_spans(const PhongFormat& f, uint64_t seed, int count
     else if (h < 0.08) s.n2 = GeoVec{-s.n1[0], -s.n1[1], -s.n1[2]};
     else if (h < 0.10) s.h1 = GeoVec{static_cast<int32_t>(g.vec_min()), static_cast<int32_t>(g.vec_max()), 0};
     else if (h < 0.12) s.n1 = GeoVec{-s.h1[0], -s.h1[1], -s.h1[2]};
+    else if (h < 0.20) {
+      // Short vectors: the cross form's headroom shift (docs/phong_hw.md#the-cancellation-free-form).
+      const int sh = 1 + static_cast<int>(u(rng) * 14);
+      GeoVec& a = u(rng) < 0.5 ? s.n1 : s.h1;
+      GeoVec& b = &a == &s.n1 ? s.n2 : s.he;
+      for (int c = 0; c < 3; ++c) {
+        a[c] /= 1 << sh;
+        b[c] /= 1 << sh;
+      }
+    }
     v.push_back(s);
   }
   return v;
@@ -223,8 +236,7 @@ void run_throughput(const PhongFormat& f, int len, int count) {
   REQUIRE(last - first + 1 == total);
 }
 
-PhongFormat n64_consth() {
-  PhongFormat f = PhongFormat::preset(64);
+PhongFormat with_const_h(PhongFormat f) {
   f.const_h = true;
   return f;
 }
@@ -250,7 +262,25 @@ TEST_CASE("phong_stream n1000: one pixel per clock, l = 3 spans back to back", "
 }
 
 TEST_CASE("phong_stream n64 constant H: random spans under backpressure and resets, bit-exact", "[phong_stream]") {
-  const PhongFormat f = n64_consth();
+  const PhongFormat f = with_const_h(PhongFormat::preset(64));
   run_random<Vphong_n64_consth>(f, random_spans(f, 3, 3000), 0.7, 0.7, 0.0005, 13);
   run_throughput<Vphong_n64_consth>(f, 0, 1000);
+}
+
+TEST_CASE("phong_stream cross n1000: random spans under backpressure and resets, bit-exact", "[phong_stream]") {
+  const PhongFormat f = PhongFormat::cross();
+  run_random<Vphong_cross_n1000>(f, random_spans(f, 4, 3000), 0.7, 0.7, 0.0005, 14);
+  run_random<Vphong_cross_n1000>(f, random_spans(f, 5, 1500), 1.0, 0.3, 0.0, 15);
+}
+
+TEST_CASE("phong_stream cross n1000: one pixel per clock, l = 0 and l = 3 spans back to back", "[phong_stream]") {
+  run_throughput<Vphong_cross_n1000>(PhongFormat::cross(), 0, 3000);
+  run_throughput<Vphong_cross_n1000>(PhongFormat::cross(), 3, 500);
+}
+
+TEST_CASE("phong_stream cross n1000 constant H: random spans under backpressure and resets, bit-exact",
+          "[phong_stream]") {
+  const PhongFormat f = with_const_h(PhongFormat::cross());
+  run_random<Vphong_cross_n1000_consth>(f, random_spans(f, 6, 3000), 0.7, 0.7, 0.0005, 16);
+  run_throughput<Vphong_cross_n1000_consth>(f, 0, 1000);
 }

@@ -16,10 +16,10 @@ package phong_pkg;
     mul_stages = 1 + specular_pkg::pipe_mul_stages(b_bits);
   endfunction
 
-  // phong_span_setup: the input register, differences / magnitudes / k, the multiplier
-  // L * |N1| over the vec_bits-wide magnitude, the sign.
-  function automatic int setup_stages(input int vec_bits);
-    setup_stages = 2 + mul_stages(vec_bits) + 1;
+  // phong_span_setup: the input register, differences / magnitudes / k, the headroom shift
+  // (the cross form only), the multiplier L * |N1| over the vec_bits-wide magnitude, the sign.
+  function automatic int setup_stages(input int vec_bits, input bit headroom);
+    setup_stages = 2 + (headroom ? 1 : 0) + mul_stages(vec_bits) + 1;
   endfunction
 
   // phong_dot: magnitudes, the nine products, the negation and two additions.
@@ -39,21 +39,49 @@ package phong_pkg;
                   + mul_stages(norm_bits) + 1;
   endfunction
 
+  // phong_exp2 (both forms): n*w; the exp2 ROM read, du*t, rounding, u - step, the shift;
+  // scale*p and rounding.
+  function automatic int exp2_stages(input int w_bits, input int exp_frac_bits, input int exp_bits);
+    exp2_stages = mul_stages(w_bits) + 1 + mul_stages(exp_frac_bits) + 3 + mul_stages(exp_bits + 1) + 1;
+  endfunction
+
   // phong_pow: the exponent of c, the mantissa, the log2 ROM read, dv*t, rounding, v + step,
-  // w; n*w; the exp2 ROM read, du*t, rounding, u - step, the shift; scale*p and rounding.
+  // w; then phong_exp2.
   function automatic int pow_stages(input int log_frac_bits, input int w_bits, input int exp_frac_bits,
                                     input int exp_bits);
-    pow_stages = 3 + mul_stages(log_frac_bits) + 3 + mul_stages(w_bits) + 1 + mul_stages(exp_frac_bits) + 3
-                 + mul_stages(exp_bits + 1) + 1;
+    pow_stages = 3 + mul_stages(log_frac_bits) + 3 + exp2_stages(w_bits, exp_frac_bits, exp_bits);
+  endfunction
+
+  // phong_cross (the cancellation-free form): the bits of w = -log2 cos, LogBits fraction
+  // bits and the integer part of the largest w, (K + 1) with K <= 2 op_bits - 1.
+  function automatic int cross_w_bits(input int op_bits, input int log_bits);
+    cross_w_bits = $clog2(2 * op_bits + 1) + log_bits;
+  endfunction
+
+  // phong_cross: the reciprocal (dv*t, rounding, v - step) beside the squares of u', d' and
+  // su's two additions and the sine test; the longer of the two.
+  function automatic int cross_rcp_sq_stages(input int rcp_frac_bits, input int u_bits);
+    cross_rcp_sq_stages = mul_stages(rcp_frac_bits) + 2 > mul_stages(u_bits) + 3 ? mul_stages(rcp_frac_bits) + 2
+                                                                                 : mul_stages(u_bits) + 3;
+  endfunction
+
+  // phong_cross: exponents, mantissas, ma*mb, em, the reciprocal ROM read, the reciprocal and
+  // the squares, X*r, s and ep, the mantissa of P, the g and log2 ROM read, dv*t, rounding,
+  // v + step, s*gv, w.
+  function automatic int cross_stages(input int norm_bits, input int rcp_frac_bits, input int u_bits,
+                                      input int rcp_bits, input int g_frac_bits, input int log_frac_bits,
+                                      input int g_bits);
+    cross_stages = 2 + mul_stages(norm_bits) + 2 + cross_rcp_sq_stages(rcp_frac_bits, u_bits)
+                   + mul_stages(rcp_bits + 1) + 3
+                   + mul_stages(g_frac_bits > log_frac_bits ? g_frac_bits : log_frac_bits) + 2
+                   + mul_stages(g_bits + 1) + 1;
   endfunction
 
   // phong_stream's pixel pipeline, the accumulators to the last stage before the output
-  // buffer (its PipeDepth; the span pipe, setup_stages, runs ahead of it).
-  function automatic int pipe_depth(input int op_bits, input int norm_bits, input int newton,
-                                    input int log_frac_bits, input int w_bits, input int exp_frac_bits,
-                                    input int exp_bits);
-    pipe_depth = AccStages + dot_stages(op_bits) + norm_stages(norm_bits, newton)
-                 + pow_stages(log_frac_bits, w_bits, exp_frac_bits, exp_bits);
+  // buffer (its PipeDepth; the span pipe, setup_stages, runs ahead of it): the accumulators,
+  // phong_dot, the form's stages to w (to_w_stages) and phong_exp2.
+  function automatic int pipe_depth(input int op_bits, input int to_w_stages, input int exp2);
+    pipe_depth = AccStages + dot_stages(op_bits) + to_w_stages + exp2;
   endfunction
 
 endpackage

@@ -8,15 +8,21 @@
 //   A0 = L * N1, EA = (N2 - N1) << k;  B0 = L * H1, EB = (He - H1) << k
 //   ConstH: B0 = H1 << (LenBits - 1), EB = 0 (He is not read, no H multiplier)
 // plus the span's flag `zero` (a zero N1, N2, H1 or He, or n outside 1..1000: every pixel 0).
-// Bit-exact contract: model/device/phong_model.hpp.
+// Headroom (the cross form, docs/phong_hw.md#the-cancellation-free-form): the span's own
+// range is kept, every value above scaled by 2^hn (N) and 2^hb (H), hn = VecBits - 1 - the
+// bit width of the widest |component| of N1 and N2 (hb: H1 and He, H1 alone with ConstH), and
+// the operands are rounded, not floored: A0 and B0 get 2^(RoundBits-1) added (RoundBits =
+// AccBits - OpBits, the bits phong_dot drops; 0: none). Bit-exact contract:
+// model/device/phong_model.hpp.
 //
-// A pipeline of phong_pkg::setup_stages(VecBits) stages, all enabled by en_i (the span pipe
-// moves as a whole); valid_i is the span handshake of the stage-1 register. Stages:
+// A pipeline of phong_pkg::setup_stages(VecBits, Headroom) stages, all enabled by en_i (the
+// span pipe moves as a whole); valid_i is the span handshake of the stage-1 register. Stages:
 //   1            the span's ports registered
-//   2            N2 - N1, He - H1, |N1|, |H1| (parallel carry chains), k and L (priority
-//                encoder, shift), the zero flag
+//   2            N2 - N1, He - H1, |N1|, |H1| (|N2|, |He| with Headroom: parallel carry
+//                chains), k and L (priority encoder, shift), the zero flag
+//   (Headroom)   hn, hb (priority encoders) and the magnitudes and steps shifted by them
 //   3 ..         L * |N1| and L * |H1| (phong_mul), the steps shifted by k beside them
-//   last         the sign of N1, H1 applied (one carry chain)
+//   last         the sign of N1, H1 applied and the rounding constant added (one carry chain)
 
 `include "specular_assert.svh"
 
@@ -28,6 +34,8 @@ module phong_span_setup #(
   parameter int CBits   = 16,
   parameter int TagBits = 16,
   parameter bit ConstH  = 1'b0,
+  parameter bit Headroom  = 1'b0,
+  parameter int RoundBits = 0,
   // 0: LUT-tree multipliers; 16 / 18: DSP tiles (docs/pipeline.md#multiplier-styles)
   parameter int MulTileBits = 0
 ) (
@@ -57,11 +65,16 @@ module phong_span_setup #(
 
   localparam int AccBits  = VecBits + LenBits;
   localparam int MulDepth = phong_pkg::mul_stages(VecBits);
-  localparam int Depth    = phong_pkg::setup_stages(VecBits);
+  localparam int Depth    = phong_pkg::setup_stages(VecBits, Headroom);
   localparam int KBits    = $clog2(LenBits + 1);
+  localparam int HBits    = $clog2(VecBits);
+  localparam logic [AccBits-1:0] Round = RoundBits > 0 ? AccBits'(1) << (RoundBits - 1) : '0;
 
-  if (VecBits < 2 || LenBits < 2 || Depth != 3 + MulDepth) begin : gen_param_check
-    `SPEC_PARAM_ERROR("phong_span_setup: VecBits, LenBits >= 2; phong_pkg::setup_stages disagrees")
+  // The rounding constant may not carry an accumulator over: RoundBits < VecBits - 1 keeps
+  // A_i 2^hn + 2^(RoundBits-1) below 2^(AccBits-1) (docs/phong_hw.md#the-cancellation-free-form).
+  if (VecBits < 2 || LenBits < 2 || RoundBits < 0 || RoundBits >= VecBits - 1 ||
+      Depth != 3 + (Headroom ? 1 : 0) + MulDepth) begin : gen_param_check
+    `SPEC_PARAM_ERROR("phong_span_setup: VecBits, LenBits >= 2, 0 <= RoundBits < VecBits - 1; phong_pkg disagrees")
   end
 
   // ---- valid bits (reset: a reset drops every span in the pipe) ----
@@ -121,7 +134,7 @@ module phong_span_setup #(
   end
 
   logic signed [VecBits:0] dn_2 [3], dh_2 [3];
-  logic [VecBits-1:0]      magn_2 [3], magh_2 [3];
+  logic [VecBits-1:0]      magn_2 [3], magh_2 [3], magn2_2 [3], maghe_2 [3];
   logic [2:0]              sgnn_2, sgnh_2;
   logic [KBits-1:0]        k_2;
   logic [LenBits-1:0]      l_2;
@@ -144,6 +157,8 @@ module phong_span_setup #(
         dh_2[c]     <= (VecBits + 1)'(hec) - (VecBits + 1)'(h1c);
         magn_2[c]   <= n1c[VecBits-1] ? VecBits'(-n1c) : VecBits'(n1c);
         magh_2[c]   <= h1c[VecBits-1] ? VecBits'(-h1c) : VecBits'(h1c);
+        magn2_2[c]  <= n2c[VecBits-1] ? VecBits'(-n2c) : VecBits'(n2c);
+        maghe_2[c]  <= hec[VecBits-1] ? VecBits'(-hec) : VecBits'(hec);
         sgnn_2[c]   <= n1c[VecBits-1];
         sgnh_2[c]   <= h1c[VecBits-1];
         hconst_2[c] <= AccBits'(h1c) <<< (LenBits - 1);
@@ -163,28 +178,99 @@ module phong_span_setup #(
     end
   end
 
-  // ---- the multipliers L * |N1|, L * |H1| (MulDepth stages); the steps and span values beside ----
-  logic [LenBits+VecBits-1:0] pn_m [3], ph_m [3];
-  for (genvar c = 0; c < 3; c++) begin : gen_mul
-    phong_mul #(.ABits (LenBits), .BBits (VecBits), .TileBits (MulTileBits)) u_mul_n (
-      .clk_i (clk_i), .en_i (en_i), .a_i (l_2), .b_i (magn_2[c]), .p_o (pn_m[c]));
-    if (ConstH) begin : gen_const_h
-      logic unused_magh;
-      assign unused_magh = ^magh_2[c];
-      assign ph_m[c] = '0;
-    end else begin : gen_var_h
-      phong_mul #(.ABits (LenBits), .BBits (VecBits), .TileBits (MulTileBits)) u_mul_h (
-        .clk_i (clk_i), .en_i (en_i), .a_i (l_2), .b_i (magh_2[c]), .p_o (ph_m[c]));
-    end
-  end
-
   // Steps: (N2 - N1) << k, sign-extended to AccBits (|N2 - N1| < 2^VecBits, k <= LenBits - 1).
-  logic [3*AccBits-1:0] ea_2, eb_2, hc_2, ea_m, eb_m, hc_m;
+  logic [3*AccBits-1:0] ea_2, eb_2, hc_2;
   for (genvar c = 0; c < 3; c++) begin : gen_step
     assign ea_2[c*AccBits +: AccBits] = (len_2 == '0) ? '0 : AccBits'(dn_2[c]) <<< k_2;
     assign eb_2[c*AccBits +: AccBits] = (len_2 == '0 || ConstH) ? '0 : AccBits'(dh_2[c]) <<< k_2;
     assign hc_2[c*AccBits +: AccBits] = hconst_2[c];
   end
+
+  // ---- Headroom: the span's values scaled by 2^hn, 2^hb (exact: hn, hb are unused top bits) ----
+  logic [VecBits-1:0]   magn_3 [3], magh_3 [3];
+  logic [3*AccBits-1:0] ea_3, eb_3, hc_3;
+  logic [LenBits-1:0]   l_3;
+  logic [2:0]           sgnn_3, sgnh_3;
+  logic                 zero_3;
+  logic [NBits-1:0]     n_3;
+  logic [LenBits-1:0]   len_3;
+  logic [CBits-1:0]     scale_3;
+  logic [TagBits-1:0]   tag_3;
+  if (Headroom) begin : gen_headroom
+    // VecBits - 1 - bit_width(x), 0 when x fills VecBits - 1 bits or more.
+    function automatic logic [HBits-1:0] head(input logic [VecBits-1:0] x);
+      head = HBits'(VecBits - 1);
+      for (int b = 0; b < VecBits; b++) begin
+        if (x[b]) head = (b >= VecBits - 1) ? '0 : HBits'(VecBits - 2 - b);
+      end
+    endfunction
+    logic [VecBits-1:0] orn, orh;
+    logic [HBits-1:0]   hn, hb;
+    always_comb begin
+      orn = '0;
+      orh = '0;
+      for (int c = 0; c < 3; c++) begin
+        orn = orn | magn_2[c] | magn2_2[c];
+        orh = orh | magh_2[c] | (ConstH ? '0 : maghe_2[c]);
+      end
+      hn = head(orn);
+      hb = head(orh);
+    end
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        for (int c = 0; c < 3; c++) begin
+          magn_3[c] <= magn_2[c] << hn;
+          magh_3[c] <= magh_2[c] << hb;
+          ea_3[c*AccBits +: AccBits] <= ea_2[c*AccBits +: AccBits] << hn;
+          eb_3[c*AccBits +: AccBits] <= eb_2[c*AccBits +: AccBits] << hb;
+          hc_3[c*AccBits +: AccBits] <= hc_2[c*AccBits +: AccBits] << hb;
+        end
+        l_3     <= l_2;
+        sgnn_3  <= sgnn_2;
+        sgnh_3  <= sgnh_2;
+        zero_3  <= zero_2;
+        n_3     <= n_2;
+        len_3   <= len_2;
+        scale_3 <= scale_2;
+        tag_3   <= tag_2;
+      end
+    end
+  end else begin : gen_no_headroom
+    logic unused_mag;
+    assign unused_mag = ^{magn2_2[0], magn2_2[1], magn2_2[2], maghe_2[0], maghe_2[1], maghe_2[2]};
+    for (genvar c = 0; c < 3; c++) begin : gen_mag3
+      assign magn_3[c] = magn_2[c];
+      assign magh_3[c] = magh_2[c];
+    end
+    assign ea_3    = ea_2;
+    assign eb_3    = eb_2;
+    assign hc_3    = hc_2;
+    assign l_3     = l_2;
+    assign sgnn_3  = sgnn_2;
+    assign sgnh_3  = sgnh_2;
+    assign zero_3  = zero_2;
+    assign n_3     = n_2;
+    assign len_3   = len_2;
+    assign scale_3 = scale_2;
+    assign tag_3   = tag_2;
+  end
+
+  // ---- the multipliers L * |N1|, L * |H1| (MulDepth stages); the steps and span values beside ----
+  logic [LenBits+VecBits-1:0] pn_m [3], ph_m [3];
+  for (genvar c = 0; c < 3; c++) begin : gen_mul
+    phong_mul #(.ABits (LenBits), .BBits (VecBits), .TileBits (MulTileBits)) u_mul_n (
+      .clk_i (clk_i), .en_i (en_i), .a_i (l_3), .b_i (magn_3[c]), .p_o (pn_m[c]));
+    if (ConstH) begin : gen_const_h
+      logic unused_magh;
+      assign unused_magh = ^magh_3[c];
+      assign ph_m[c] = '0;
+    end else begin : gen_var_h
+      phong_mul #(.ABits (LenBits), .BBits (VecBits), .TileBits (MulTileBits)) u_mul_h (
+        .clk_i (clk_i), .en_i (en_i), .a_i (l_3), .b_i (magh_3[c]), .p_o (ph_m[c]));
+    end
+  end
+
+  logic [3*AccBits-1:0] ea_m, eb_m, hc_m;
   logic [2:0] sgnn_m, sgnh_m;
   logic       zero_m;
   logic [NBits-1:0]   n_m;
@@ -194,16 +280,16 @@ module phong_span_setup #(
   specular_delay #(.Width (9 * AccBits + 6 + 1 + NBits + LenBits + CBits + TagBits), .Depth (MulDepth),
                    .Reset (1'b0)) u_side (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (en_i),
-    .d_i   ({ea_2, eb_2, hc_2, sgnn_2, sgnh_2, zero_2, n_2, len_2, scale_2, tag_2}),
+    .d_i   ({ea_3, eb_3, hc_3, sgnn_3, sgnh_3, zero_3, n_3, len_3, scale_3, tag_3}),
     .q_o   ({ea_m, eb_m, hc_m, sgnn_m, sgnh_m, zero_m, n_m, len_m, scale_m, tag_m}));
 
-  // ---- last stage: signs ----
+  // ---- last stage: signs and rounding, one adder each: +-P + Round = (P ^ s) + (Round + s) ----
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       for (int c = 0; c < 3; c++) begin
-        a0_o[c*AccBits +: AccBits] <= sgnn_m[c] ? -(AccBits'(pn_m[c])) : AccBits'(pn_m[c]);
-        b0_o[c*AccBits +: AccBits] <= ConstH ? hc_m[c*AccBits +: AccBits]
-                                             : (sgnh_m[c] ? -(AccBits'(ph_m[c])) : AccBits'(ph_m[c]));
+        a0_o[c*AccBits +: AccBits] <= (AccBits'(pn_m[c]) ^ {AccBits{sgnn_m[c]}}) + (Round + AccBits'(sgnn_m[c]));
+        b0_o[c*AccBits +: AccBits] <= ConstH ? hc_m[c*AccBits +: AccBits] + Round
+                                             : (AccBits'(ph_m[c]) ^ {AccBits{sgnh_m[c]}}) + (Round + AccBits'(sgnh_m[c]));
       end
       ea_o    <= ea_m;
       eb_o    <= eb_m;

@@ -7,7 +7,9 @@
 //   I_i = scale * max(0, N_i . H_i / (|N_i| |H_i|))^n,
 //   N_i = N1 + (N2 - N1) i / l,  H_i = H1 + (He - H1) i / l,
 // bit-identical to model/device/phong_model.hpp (PhongFormat: the parameters below have its
-// fields' names and defaults).
+// fields' names and defaults; the cross form's fields those of PhongFormat::cross()).
+// Cross = 0: the textbook form, c = N.H / sqrt(|N|^2 |H|^2) (phong_norm, phong_pow); Cross = 1:
+// the cancellation-free form (phong_cross, phong_exp2; docs/phong_hw.md#the-cancellation-free-form).
 //
 // Ports: clk_i, rst_ni (asynchronous, active low: drops every span and pixel in flight);
 // the span side geo_* (AXI4-Stream rules); the pixel side px_* of specular_stream.
@@ -19,7 +21,8 @@
 //   span pipe      phong_span_setup: L = l 2^k, A0 = L N1, steps (N2 - N1) 2^k, the same for H
 //   stage 0        the lerp accumulators A_i = A0 + i EA, B_i (control unit: specular_control,
 //                  pixel counter: specular_down_counter), the span's n, scale, zero flag, tag
-//   then           phong_dot (a.b, |a|^2, |b|^2), phong_norm (c), phong_pow (scale c^n)
+//   then           phong_dot (a.b, |a|^2, |b|^2; a x b with Cross), phong_norm (c) and phong_pow
+//                  (scale c^n), or with Cross phong_cross (w = -log2 c) and phong_exp2 (scale 2^-nw)
 //   output buffer  specular_out_buf
 // Stage counts: phong_pkg (docs/phong_hw.md#pipeline). One pixel per clock sustained, l = 0
 // spans back to back included: the control takes the span pipe's head on the edge at which
@@ -50,6 +53,19 @@ module phong_stream #(
   parameter     RsqrtRomFile  = "roms/phong/n1000/rsqrt.hex",
   parameter     LogRomFile    = "roms/phong/n1000/log2.hex",
   parameter     ExpRomFile    = "roms/phong/n1000/exp2.hex",
+  // The cancellation-free form (Cross = 1); unused otherwise.
+  parameter bit Cross         = 1'b0,
+  parameter int UBits         = 20,
+  parameter int RcpAddrBits   = 7,
+  parameter int RcpFracBits   = 8,
+  parameter int RcpBits       = 17,
+  parameter int SFrac         = 24,
+  parameter int GAddrBits     = 5,
+  parameter int GFracBits     = 8,
+  parameter int GBits         = 17,
+  parameter int DmFrac        = 14,
+  parameter     RcpRomFile    = "roms/phong/cross_n1000/rcp.hex",
+  parameter     GRomFile      = "roms/phong/cross_n1000/g.hex",
   // The multipliers' resources (phong_mul's TileBits): 0 LUT trees (iCE40-HX8K), 16
   // SB_MAC16 tiles (UP5K), 18 MULT18X18D tiles (ECP5); bit-exact and of one latency
   // (docs/pipeline.md#multiplier-styles), so no stage count depends on it.
@@ -62,15 +78,19 @@ module phong_stream #(
 );
 
   localparam int AccBits   = VecBits + LenBits;
-  localparam int WBits     = $clog2(CosFrac + 2) + LogBits;
+  localparam int WBits     = Cross ? phong_pkg::cross_w_bits(OpBits, LogBits) : $clog2(CosFrac + 2) + LogBits;
   localparam int DotStages = phong_pkg::dot_stages(OpBits);
-  localparam int NrmStages = phong_pkg::norm_stages(NormBits, Newton);
-  localparam int PowStages = phong_pkg::pow_stages(LogFracBits, WBits, ExpFracBits, ExpBits);
-  localparam int PipeDepth = phong_pkg::pipe_depth(OpBits, NormBits, Newton, LogFracBits, WBits, ExpFracBits,
-                                                    ExpBits);
+  // The stages from the dot products to w (phong_norm + phong_pow's log2 part, or phong_cross)
+  // and the pipeline.
+  localparam int ToWStages = Cross ? phong_pkg::cross_stages(NormBits, RcpFracBits, UBits, RcpBits, GFracBits,
+                                                             LogFracBits, GBits)
+                                   : phong_pkg::norm_stages(NormBits, Newton)
+                                     + phong_pkg::pow_stages(LogFracBits, WBits, ExpFracBits, ExpBits)
+                                     - phong_pkg::exp2_stages(WBits, ExpFracBits, ExpBits);
+  localparam int PipeDepth = phong_pkg::pipe_depth(OpBits, ToWStages,
+                                                    phong_pkg::exp2_stages(WBits, ExpFracBits, ExpBits));
 
-  if (NBits != 10 || TagBits < 1 || OpBits > AccBits ||
-      PipeDepth != phong_pkg::AccStages + DotStages + NrmStages + PowStages) begin : gen_param_check
+  if (NBits != 10 || TagBits < 1 || OpBits > AccBits) begin : gen_param_check
     `SPEC_PARAM_ERROR("phong_stream: NBits must be 10, TagBits >= 1, OpBits <= VecBits + LenBits")
   end
 
@@ -95,6 +115,8 @@ module phong_stream #(
     .CBits   (CBits),
     .TagBits (TagBits),
     .ConstH  (ConstH),
+    .Headroom  (Cross),
+    .RoundBits (Cross ? AccBits - OpBits : 0),
     .MulTileBits (MulTileBits)
   ) u_setup (
     .clk_i   (clk_i),
@@ -191,62 +213,121 @@ module phong_stream #(
   // ---------------------------------------------------------------------------------
   logic signed [2*OpBits+1:0] d;
   logic [2*OpBits-1:0]        na, nb;
-  phong_dot #(.AccBits (AccBits), .OpBits (OpBits), .MulTileBits (MulTileBits)) u_dot (
-    .clk_i (clk_i), .en_i (adv), .a_i (a_q), .b_i (b_q), .d_o (d), .na_o (na), .nb_o (nb));
+  logic [3*(2*OpBits+1)-1:0] u;
+  phong_dot #(.AccBits (AccBits), .OpBits (OpBits), .Cross (Cross), .MulTileBits (MulTileBits)) u_dot (
+    .clk_i (clk_i), .en_i (adv), .a_i (a_q), .b_i (b_q), .d_o (d), .na_o (na), .nb_o (nb), .u_o (u));
 
-  logic [CosFrac:0] cosv;
-  logic             zero_c;
-  phong_norm #(
-    .OpBits        (OpBits),
-    .NormBits      (NormBits),
-    .RsqrtAddrBits (RsqrtAddrBits),
-    .Newton        (Newton),
-    .CosFrac       (CosFrac),
-    .RsqrtRomFile  (RsqrtRomFile),
-    .MulTileBits   (MulTileBits)
-  ) u_norm (
-    .clk_i  (clk_i),
-    .en_i   (adv),
-    .d_i    (d),
-    .na_i   (na),
-    .nb_i   (nb),
-    .c_o    (cosv),
-    .zero_o (zero_c)
-  );
-
-  // The span's n, scale and zero flag beside the pixel up to the power unit; the tag to the end.
+  // The span's n, scale and zero flag beside the pixel up to the power; the tag to the end.
   logic [NBits-1:0] n_p;
   logic [CBits-1:0] scale_p;
   logic             zero_p;
   logic [TagBits-1:0] tag_out;
-  specular_delay #(.Width (NBits + CBits + 1), .Depth (DotStages + NrmStages), .Reset (1'b0)) u_span_line (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({n0, scale0, zero0}), .q_o ({n_p, scale_p, zero_p}));
+  logic [CBits-1:0] intensity;
   specular_delay #(.Width (TagBits), .Depth (PipeDepth - 1)) u_tag_line (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (tag0), .q_o (tag_out));
 
-  logic [CBits-1:0] intensity;
-  phong_pow #(
-    .CosFrac     (CosFrac),
-    .LogAddrBits (LogAddrBits),
-    .LogFracBits (LogFracBits),
-    .LogBits     (LogBits),
-    .ExpAddrBits (ExpAddrBits),
-    .ExpFracBits (ExpFracBits),
-    .ExpBits     (ExpBits),
-    .NBits       (NBits),
-    .CBits       (CBits),
-    .LogRomFile  (LogRomFile),
-    .ExpRomFile  (ExpRomFile),
-    .MulTileBits (MulTileBits)
-  ) u_pow (
-    .clk_i       (clk_i),
-    .en_i        (adv),
-    .c_i         (cosv),
-    .zero_i      (zero_c | zero_p),
-    .n_i         (n_p),
-    .scale_i     (scale_p),
-    .intensity_o (intensity)
-  );
+  if (Cross) begin : gen_cross
+    logic [WBits-1:0] w;
+    logic             zero_w;
+    phong_cross #(
+      .OpBits      (OpBits),
+      .NormBits    (NormBits),
+      .UBits       (UBits),
+      .RcpAddrBits (RcpAddrBits),
+      .RcpFracBits (RcpFracBits),
+      .RcpBits     (RcpBits),
+      .SFrac       (SFrac),
+      .GAddrBits   (GAddrBits),
+      .GFracBits   (GFracBits),
+      .GBits       (GBits),
+      .DmFrac      (DmFrac),
+      .CosFrac     (CosFrac),
+      .LogAddrBits (LogAddrBits),
+      .LogFracBits (LogFracBits),
+      .LogBits     (LogBits),
+      .RcpRomFile  (RcpRomFile),
+      .GRomFile    (GRomFile),
+      .LogRomFile  (LogRomFile),
+      .MulTileBits (MulTileBits)
+    ) u_cross (
+      .clk_i  (clk_i),
+      .en_i   (adv),
+      .d_i    (d),
+      .na_i   (na),
+      .nb_i   (nb),
+      .u_i    (u),
+      .w_o    (w),
+      .zero_o (zero_w)
+    );
+    specular_delay #(.Width (NBits + CBits + 1), .Depth (DotStages + ToWStages), .Reset (1'b0)) u_span_line (
+      .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({n0, scale0, zero0}), .q_o ({n_p, scale_p, zero_p}));
+    phong_exp2 #(
+      .WBits       (WBits),
+      .LogBits     (LogBits),
+      .ExpAddrBits (ExpAddrBits),
+      .ExpFracBits (ExpFracBits),
+      .ExpBits     (ExpBits),
+      .NBits       (NBits),
+      .CBits       (CBits),
+      .ExpRomFile  (ExpRomFile),
+      .MulTileBits (MulTileBits)
+    ) u_exp2 (
+      .clk_i       (clk_i),
+      .en_i        (adv),
+      .w_i         (w),
+      .zero_i      (zero_w | zero_p),
+      .n_i         (n_p),
+      .scale_i     (scale_p),
+      .intensity_o (intensity)
+    );
+  end else begin : gen_dot
+    logic unused_u;
+    assign unused_u = ^u;
+    logic [CosFrac:0] cosv;
+    logic             zero_c;
+    phong_norm #(
+      .OpBits        (OpBits),
+      .NormBits      (NormBits),
+      .RsqrtAddrBits (RsqrtAddrBits),
+      .Newton        (Newton),
+      .CosFrac       (CosFrac),
+      .RsqrtRomFile  (RsqrtRomFile),
+      .MulTileBits   (MulTileBits)
+    ) u_norm (
+      .clk_i  (clk_i),
+      .en_i   (adv),
+      .d_i    (d),
+      .na_i   (na),
+      .nb_i   (nb),
+      .c_o    (cosv),
+      .zero_o (zero_c)
+    );
+    specular_delay #(.Width (NBits + CBits + 1), .Depth (DotStages + phong_pkg::norm_stages(NormBits, Newton)),
+                     .Reset (1'b0)) u_span_line (
+      .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({n0, scale0, zero0}), .q_o ({n_p, scale_p, zero_p}));
+    phong_pow #(
+      .CosFrac     (CosFrac),
+      .LogAddrBits (LogAddrBits),
+      .LogFracBits (LogFracBits),
+      .LogBits     (LogBits),
+      .ExpAddrBits (ExpAddrBits),
+      .ExpFracBits (ExpFracBits),
+      .ExpBits     (ExpBits),
+      .NBits       (NBits),
+      .CBits       (CBits),
+      .LogRomFile  (LogRomFile),
+      .ExpRomFile  (ExpRomFile),
+      .MulTileBits (MulTileBits)
+    ) u_pow (
+      .clk_i       (clk_i),
+      .en_i        (adv),
+      .c_i         (cosv),
+      .zero_i      (zero_c | zero_p),
+      .n_i         (n_p),
+      .scale_i     (scale_p),
+      .intensity_o (intensity)
+    );
+  end
 
   // ---------------------------------------------------------------------------------
   // Output buffer
