@@ -160,6 +160,58 @@ PhongFormat PhongFormat::preset(int n_max) {
   }
 }
 
+PhongFormat PhongFormat::at_budget(PhongForm form, const std::string& budget) {
+  // docs/phong_hw.md#budgets: build/bin/phong_search --form F --budget B (n <= 1000).
+  PhongFormat f = form == PhongForm::cross ? cross() : preset(1000);
+  if (budget == "b1") return f;
+  if (budget != "b2" && budget != "b3")
+    throw std::invalid_argument("PhongFormat::at_budget: budget '" + budget + "' is not b1, b2 or b3");
+  const bool b2 = budget == "b2";
+  if (form == PhongForm::dot) {
+    f.op_bits = b2 ? 18 : 19;
+    f.norm_bits = b2 ? 22 : 20;
+    f.rsqrt_addr_bits = b2 ? 6 : 5, f.newton = 2;
+    f.cos_frac = b2 ? 22 : 19;
+    f.log_addr_bits = b2 ? 8 : 5, f.log_frac_bits = 13, f.log_bits = b2 ? 20 : 17;
+    f.exp_addr_bits = b2 ? 5 : 3, f.exp_frac_bits = 6, f.exp_bits = b2 ? 11 : 16;
+    return f;
+  }
+  f.op_bits = b2 ? 17 : 18;
+  f.norm_bits = b2 ? 12 : 10;
+  f.u_bits = b2 ? 17 : 15;
+  f.rcp_addr_bits = b2 ? 6 : 5, f.rcp_frac_bits = b2 ? 6 : 5, f.rcp_bits = b2 ? 11 : 9;
+  f.s_frac = b2 ? 20 : 18;
+  f.g_addr_bits = b2 ? 3 : 2, f.g_frac_bits = 4, f.g_bits = b2 ? 10 : 8;
+  f.dm_frac = b2 ? 10 : 7;
+  f.cos_frac = b2 ? 9 : 8;
+  f.log_addr_bits = 3, f.log_frac_bits = b2 ? 6 : 5, f.log_bits = b2 ? 21 : 18;
+  f.exp_addr_bits = b2 ? 5 : 3, f.exp_frac_bits = 6, f.exp_bits = b2 ? 13 : 16;
+  return f;
+}
+
+const std::vector<PhongConfig>& phong_configs() {
+  static const std::vector<PhongConfig> v = [] {
+    auto const_h = [](PhongFormat h) {
+      h.const_h = true;
+      return h;
+    };
+    const PhongForm dot = PhongForm::dot, cross = PhongForm::cross;
+    return std::vector<PhongConfig>{
+        {"n1000", PhongFormat::preset(1000), "b1"},
+        {"n128", PhongFormat::preset(128), "b1"},
+        {"n64", PhongFormat::preset(64), "b1"},
+        {"n1000_consth", const_h(PhongFormat::preset(1000)), "b1"},
+        {"n64_consth", const_h(PhongFormat::preset(64)), "b1"},
+        {"b2_n1000", PhongFormat::at_budget(dot, "b2"), "b2"},
+        {"b3_n1000", PhongFormat::at_budget(dot, "b3"), "b3"},
+        {"cross_n1000", PhongFormat::cross(), "b1"},
+        {"cross_n1000_consth", const_h(PhongFormat::cross()), "b1"},
+        {"cross_b2_n1000", PhongFormat::at_budget(cross, "b2"), "b2"},
+        {"cross_b3_n1000", PhongFormat::at_budget(cross, "b3"), "b3"}};
+  }();
+  return v;
+}
+
 std::string PhongFormat::describe() const {
   std::ostringstream m;
   if (form == PhongForm::cross) {

@@ -124,6 +124,10 @@ struct PhongFormat {
   // The cross form's configuration for n in 1..1000 at the device's budget: operands of one
   // 18 x 18 DSP tile (docs/phong_hw.md#the-cancellation-free-form).
   static PhongFormat cross();
+  // The narrowest configuration of a form for n in 1..1000 at budget "b1", "b2" or "b3"
+  // (docs/metrics.md#budgets; phong_search --form F --budget B, docs/phong_hw.md#budgets):
+  // b1 is preset(1000) or cross(); throws std::invalid_argument otherwise.
+  static PhongFormat at_budget(PhongForm form, const std::string& budget);
 
   int acc_bits() const { return vec_bits + len_bits; }
   int max_len() const { return (1 << len_bits) - 1; }
@@ -145,6 +149,16 @@ struct PhongFormat {
   std::string describe() const;
   bool operator==(const PhongFormat&) const = default;
 };
+
+// A named configuration of phong_stream: the presets, their constant-H variants and the
+// configurations per budget, by the names of roms/phong/phong_configs.cmake (phong_romgen
+// writes it from this list; phong_search --measure reads it). budget: the one it is built for.
+struct PhongConfig {
+  std::string name;
+  PhongFormat f;
+  std::string budget;
+};
+const std::vector<PhongConfig>& phong_configs();
 
 // The geometry interface's format that a PhongFormat reads.
 GeoFormat geo_format(const PhongFormat& f);

@@ -143,16 +143,11 @@ nlohmann::json format_json(const PhongFormat& f) {
   return j;
 }
 
-// The presets by the names of roms/phong/phong_configs.cmake (phong_romgen writes them).
+// The presets by the names of roms/phong/phong_configs.cmake (phong_configs()).
 const std::vector<std::pair<std::string, PhongFormat>>& presets() {
   static const std::vector<std::pair<std::string, PhongFormat>> v = [] {
     std::vector<std::pair<std::string, PhongFormat>> r;
-    for (int n : {1000, 128, 64}) r.emplace_back("n" + std::to_string(n), PhongFormat::preset(n));
-    for (int n : {1000, 64}) {
-      PhongFormat f = PhongFormat::preset(n);
-      f.const_h = true;
-      r.emplace_back("n" + std::to_string(n) + "_consth", f);
-    }
+    for (const auto& c : specular::device::phong_configs()) r.emplace_back(c.name, c.f);
     return r;
   }();
   return v;

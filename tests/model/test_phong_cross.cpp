@@ -189,3 +189,30 @@ TEST_CASE("phong cross: every valid format builds its ROMs (the search narrows a
       }
   REQUIRE(built > 500);
 }
+
+TEST_CASE("phong configurations per budget: each meets the budget it is built for", "[phong][budget]") {
+  // phong_configs() names the budget of every configuration (docs/phong_hw.md#budgets); the
+  // measurement is the search's own (phong_error), on a seed the search did not use.
+  const int n = GENERATE(1, 2, 3, 7, 64, 500, 1000);
+  for (const PhongConfig& c : phong_configs()) {
+    if (c.name.find("n1000") == std::string::npos || c.f.const_h) continue;
+    const PixelBudget b = PixelBudget::named(c.budget);
+    const PhongError e = phong_error(PhongModel(c.f), n, 7);
+    INFO(c.name << " (" << c.f.describe() << ") n=" << n << " rel=" << e.rel_lsb << " abs=" << e.abs_lsb
+                << " raw=" << e.abs_raw);
+    REQUIRE(e.meets(b));
+  }
+}
+
+TEST_CASE("phong configurations per budget: a narrower budget's configuration misses the wider one", "[phong][budget]") {
+  // The budgets differ where they bind: B3's configurations miss B1 somewhere on n = 1..1000
+  // (so the per-budget cost comparison compares different designs).
+  for (PhongForm form : {PhongForm::dot, PhongForm::cross}) {
+    const PhongModel m(PhongFormat::at_budget(form, "b3"));
+    bool misses = false;
+    for (int n : {1, 2, 3, 7, 64, 500, 1000}) misses = misses || !phong_error(m, n, 7).meets(PixelBudget::b1());
+    INFO((form == PhongForm::cross ? "cross" : "dot"));
+    REQUIRE(misses);
+  }
+  REQUIRE_THROWS_WITH(PhongFormat::at_budget(PhongForm::dot, "b4"), Catch::Contains("b1, b2 or b3"));
+}

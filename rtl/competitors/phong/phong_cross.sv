@@ -240,7 +240,11 @@ module phong_cross #(
     end
   end
   logic unused_m;
-  assign unused_m = ^{m_p[MFrac-1:0], mm_c[NormBits-RcpAddrBits-RcpFracBits-1:0]};
+  assign unused_m = ^m_p[MFrac-1:0];
+  if (NormBits > RcpAddrBits + RcpFracBits) begin : gen_unused_mm
+    logic unused_mm;
+    assign unused_mm = ^mm_c[NormBits-RcpAddrBits-RcpFracBits-1:0];
+  end
 
   // ---- stage b: the reciprocal ROM; |u'|, |d'| ----
   logic [RBits+RcpDBits-1:0] rw_b;
