@@ -9,7 +9,7 @@
 #   scripts/formal.sh TARGET [--bounded | --mutant NAME] [OUT_DIR]
 #
 #   TARGET     stream (specular_stream), axil (specular_axil), phong (phong_stream),
-#              setup (specular_setup)
+#              phong_cross (phong_stream, Cross = 1), setup (specular_setup)
 #   (none)     the unbounded proof: the harness's properties and strengthening invariants,
 #              base case from reset (ABC bmc3, FORMAL_BASE = 4 cycles) and FORMAL_K = 1
 #              step induction (ABC scorr -o, one SAT call per property;
@@ -35,7 +35,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 me=formal.sh
 
 usage() {
-  echo "usage: $me TARGET [--bounded | --mutant NAME] [OUT_DIR]; TARGET: stream, axil, phong, setup" >&2
+  echo "usage: $me TARGET [--bounded | --mutant NAME] [OUT_DIR]; TARGET: stream, axil, phong, phong_cross, setup" >&2
   exit 2
 }
 
@@ -153,6 +153,16 @@ ready_waits_valid rtl/competitors/phong/phong_stream.sv s/assign geo_ready_o = s
   cex_ports="rst_ni geo_valid_i geo_len_i geo_tag_i px_ready_i"
 }
 
+# The cancellation-free form (phong_stream Cross = 1, docs/phong_hw.md#the-cancellation-free-form):
+# the same harness, properties, probes, cut and mutants at its own reduced widths.
+target_phong_cross() {
+  target_phong
+  harness_params="-set Cross 1"
+  probes+="
+p_len3 u_dut.u_setup.len_3
+p_tag3 u_dut.u_setup.tag_3"
+}
+
 target_setup() {
   filelist=rtl/setup/setup.f
   harness=rtl/setup/formal/specular_setup_fv.sv
@@ -188,9 +198,9 @@ target=${1:-}
 [ -n "$target" ] || usage
 shift
 filelist="" harness="" top="" measure="" bmc_depth="" bmc_depth_mutant="" bmc_engine=abc
-pre_flatten="" checks="" probes="" cuts="" cuts_proof="" map="" mutants="" cex_ports=""
+pre_flatten="" checks="" probes="" cuts="" cuts_proof="" map="" mutants="" cex_ports="" harness_params=""
 case "$target" in
-  stream | axil | phong | setup) "target_$target" ;;
+  stream | axil | phong | phong_cross | setup) "target_$target" ;;
   *) echo "$me: unknown target '$target'" >&2; usage ;;
 esac
 mode=proof
@@ -240,10 +250,12 @@ read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/prim/
 # Elaboration: the depths of the harness, read off the netlist
 # ---------------------------------------------------------------------------------------
 chparams=""
+[ -z "$harness_params" ] || chparams=" $harness_params"
 if [ -n "$measure" ]; then
   dumps=$(printf '%s\n' "$measure" | awk '{printf " w:%s", $2}')
   yosys -q -p "
     ${read_cmd}
+    ${harness_params:+chparam ${harness_params} ${top}}
     hierarchy -check -top ${top}
     proc
     flatten

@@ -2,6 +2,7 @@
 // Phong stage of the regression (sim/phong_stage.hpp).
 #include "phong_stage.hpp"
 
+#include "Vphong_cross_scene.h"
 #include "Vphong_scene.h"
 #include "metrics.hpp"
 #include "phong_error.hpp"
@@ -25,7 +26,8 @@ void note(PhongSceneStats& s, const std::string& what) {
   if (s.failures.size() < 8) s.failures.push_back(s.name + ": " + what);
 }
 
-void tick(Vphong_scene& m) {
+template <class Model>
+void tick(Model& m) {
   m.clk_i = 0;
   m.eval();
   m.clk_i = 1;
@@ -34,21 +36,21 @@ void tick(Vphong_scene& m) {
   m.eval();
 }
 
-}  // namespace
-
-std::vector<PhongSceneStats> run_phong_stage(const std::vector<LoadedScene>& scenes) {
-  const PhongFormat f;  // the RTL's default parameters are the default PhongFormat
+// One form: f is the format the model was verilated with (its configuration's -G flags).
+template <class Model>
+void run_form(const std::vector<LoadedScene>& scenes, const std::string& config, const PhongFormat& f,
+              std::vector<PhongSceneStats>& out) {
   const device::PhongModel golden(f);
   const device::GeoFormat g = device::geo_format(f);
   const device::Format cf = device::c_format(f);
   const double lsb = std::ldexp(1.0, -f.c_frac);
-  std::vector<PhongSceneStats> out;
   for (const LoadedScene& ls : scenes) {
     const auto t0 = std::chrono::steady_clock::now();
     PhongSceneStats st;
     st.name = ls.scene.name;
-    VerilatedModel<Vphong_scene> vm("phong_stream");
-    Vphong_scene& m = *vm.top();
+    st.config = config;
+    VerilatedModel<Model> vm("phong_stream");
+    Model& m = *vm.top();
     vm.power_up();
     m.geo_valid_i = 0;
     m.px_ready_i = 1;
@@ -147,18 +149,26 @@ std::vector<PhongSceneStats> run_phong_stage(const std::vector<LoadedScene>& sce
     st.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     out.push_back(std::move(st));
   }
+}
+
+}  // namespace
+
+std::vector<PhongSceneStats> run_phong_stage(const std::vector<LoadedScene>& scenes) {
+  std::vector<PhongSceneStats> out;
+  run_form<Vphong_scene>(scenes, "n1000", PhongFormat::preset(1000), out);
+  run_form<Vphong_cross_scene>(scenes, "cross_n1000", PhongFormat::cross(), out);
   return out;
 }
 
 void print_phong_table(const std::vector<PhongSceneStats>& stats) {
-  std::printf("\nPhong stage (phong_stream, default configuration %s; every span back to back; error against\n"
-              "per-pixel Phong in double, (|err| - 1 LSB)^+ relative in the epicenter and absolute / C):\n",
-              PhongFormat{}.describe().c_str());
-  std::printf("| scene | spans | pixels | clocks | clocks/pixel | mismatches | epicenter px | max rel epi | max abs / C "
-              "| vs phong_truth rel / abs | over budget rel / abs | wall s |\n|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  std::printf("\nPhong stage (phong_stream: n1000 = %s, cross_n1000 = %s; every span back to back;\n"
+              "error against per-pixel Phong in double, (|err| - 1 LSB)^+ relative in the epicenter and absolute / C):\n",
+              PhongFormat::preset(1000).describe().c_str(), PhongFormat::cross().describe().c_str());
+  std::printf("| configuration | scene | spans | pixels | clocks | clocks/pixel | mismatches | epicenter px | max rel epi | max abs / C "
+              "| vs phong_truth rel / abs | over budget rel / abs | wall s |\n|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   for (const auto& s : stats)
-    std::printf("| %s | %llu | %llu | %llu | %.4f | %llu | %llu | %.3e | %.3e | %.3e / %.3e | %llu / %llu | %.2f |\n",
-                s.name.c_str(), (unsigned long long)s.spans, (unsigned long long)s.pixels,
+    std::printf("| %s | %s | %llu | %llu | %llu | %.4f | %llu | %llu | %.3e | %.3e | %.3e / %.3e | %llu / %llu | %.2f |\n",
+                s.config.c_str(), s.name.c_str(), (unsigned long long)s.spans, (unsigned long long)s.pixels,
                 (unsigned long long)s.cycles, s.pixels ? double(s.cycles) / double(s.pixels) : 0.0,
                 (unsigned long long)s.mismatches, (unsigned long long)s.epicenter_pixels, s.rel_lsb, s.abs_lsb,
                 s.rel_lsb_truth, s.abs_lsb_truth, (unsigned long long)s.rel_violations,

@@ -74,6 +74,9 @@ module phong_stream_fv #(
   parameter int ExpAddrBits   = 1,
   parameter int ExpFracBits   = 2,
   parameter int ExpBits       = 2,
+  // Cross = 1 (scripts/formal.sh phong_cross): the cancellation-free form at the smallest widths
+  // that pass phong_cross's and phong_span_setup's checks (OpBits 5: no rounding bits).
+  parameter bit Cross         = 1'b0,
   // The span pipe's stages (phong_pkg::setup_stages) and the pixel pipeline's (PipeDepth):
   // scripts/formal.sh phong sets them from the widths of u_setup.vld_q and
   // u_control.vld_q; a wrong value fails on the probe widths.
@@ -94,8 +97,20 @@ module phong_stream_fv #(
     .NBits         (NBits),
     .CBits         (CBits),
     .TagBits       (TagBits),
-    .OpBits        (OpBits),
-    .NormBits      (NormBits),
+    .OpBits        (Cross ? 5 : OpBits),
+    .NormBits      (Cross ? 5 : NormBits),
+    .Cross         (Cross),
+    .UBits         (4),
+    .RcpAddrBits   (3),
+    .RcpFracBits   (2),
+    .RcpBits       (5),
+    .SFrac         (8),
+    .GAddrBits     (1),
+    .GFracBits     (1),
+    .GBits         (3),
+    .DmFrac        (1),
+    .RcpRomFile    (""),
+    .GRomFile      (""),
     .RsqrtAddrBits (RsqrtAddrBits),
     .Newton        (Newton),
     .CosFrac       (CosFrac),
@@ -229,13 +244,14 @@ module phong_stream_fv #(
   // Strengthening invariants on the core's state (probes connected by
   // scripts/formal.sh phong). Left out (FV_PROPERTIES_ONLY) by the bounded and mutant runs.
   // ---------------------------------------------------------------------------------
-  localparam int MulDepth = SpDepth - 3;   // u_setup.u_side: the multiplier stages
+  localparam int Hr       = Cross ? 1 : 0;  // the span setup's headroom stage (Cross)
+  localparam int MulDepth = SpDepth - 3 - Hr;  // u_setup.u_side: the multiplier stages
   localparam int AccBits  = VecBits + LenBits;
   localparam int SideW    = 9 * AccBits + 6 + 1 + NBits + LenBits + CBits + TagBits;
 
   logic [SpDepth-1:0]           p_sp_vld;   // span-pipe stage j holds a span
-  logic [LenBits-1:0]           p_len1, p_len2, p_lenh;
-  logic [TagBits-1:0]           p_tag1, p_tag2, p_tagh;
+  logic [LenBits-1:0]           p_len1, p_len2, p_len3, p_lenh;  // p_len3, p_tag3: Cross only
+  logic [TagBits-1:0]           p_tag1, p_tag2, p_tag3, p_tagh;
   logic [MulDepth*SideW-1:0]    p_side;     // {.., len, scale, tag} per multiplier stage
   logic [Depth-1:0]             p_vld;      // pixel stage j holds a pixel (0: accumulators)
   logic [Depth-1:1]             p_last;     // ... its span's last
@@ -248,8 +264,8 @@ module phong_stream_fv #(
   logic [PixBits-1:0]           p_tail;     // ... the entry behind it
   logic                         p_adv;      // ... its registered room: the pixel pipe's advance
 
-  // The span pipe's len and tag per stage: 0 and 1 the registers of its stages 1 and 2, then
-  // the multiplier stages' side line, the head.
+  // The span pipe's len and tag per stage: 0 and 1 the registers of its stages 1 and 2, (Cross:
+  // 2 the headroom stage's,) then the multiplier stages' side line, the head.
   logic [SpDepth*LenBits-1:0] sp_len;
   logic [SpDepth*TagBits-1:0] sp_tag;
   assign sp_len[0 +: LenBits]                 = p_len1;
@@ -258,9 +274,16 @@ module phong_stream_fv #(
   assign sp_tag[TagBits +: TagBits]           = p_tag2;
   assign sp_len[(SpDepth-1)*LenBits +: LenBits] = p_lenh;
   assign sp_tag[(SpDepth-1)*TagBits +: TagBits] = p_tagh;
+  if (Cross) begin : gen_hr
+    assign sp_len[2*LenBits +: LenBits] = p_len3;
+    assign sp_tag[2*TagBits +: TagBits] = p_tag3;
+  end else begin : gen_no_hr
+    logic unused_p3;
+    assign unused_p3 = ^{p_len3, p_tag3};
+  end
   for (genvar m = 1; m <= MulDepth; m++) begin : gen_side
-    assign sp_len[(m+1)*LenBits +: LenBits] = p_side[(m-1)*SideW + TagBits + CBits +: LenBits];
-    assign sp_tag[(m+1)*TagBits +: TagBits] = p_side[(m-1)*SideW +: TagBits];
+    assign sp_len[(m+1+Hr)*LenBits +: LenBits] = p_side[(m-1)*SideW + TagBits + CBits +: LenBits];
+    assign sp_tag[(m+1+Hr)*TagBits +: TagBits] = p_side[(m-1)*SideW +: TagBits];
   end
 
   logic [Depth*TagBits-1:0] p_tag;   // pixel stage j's tag
