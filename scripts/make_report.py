@@ -39,6 +39,7 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 
 import hw_plane  # noqa: E402  (scripts/hw_plane.py: the hardware plane, section 4b)
+import verdict  # noqa: E402  (scripts/verdict.py: the verdict per budget and span length, section 4c)
 import plot_break_even  # noqa: E402  (scripts/plot_break_even.py, beside this file)
 import rtl_filelist as rtl_filelist_reader  # noqa: E402  (scripts/rtl_filelist.py)
 
@@ -291,6 +292,20 @@ class Report:
         png = os.path.join(self.out, "hw_plane.png")
         if not hw_plane.plot(self.plane_rows, png, plt) and os.path.exists(png):
             os.remove(png)  # no cells in this run: no figure (not a stale one)
+
+    def write_verdict(self, w, data, sim):
+        """Section 4c (scripts/verdict.py): per budget and span length the device against the Phong
+        cores in one currency, from this run's errors and the record's ECP5 cells; one figure per
+        budget (verdict_b1.png, ...) and verdict.json."""
+        figs = hw_plane.load_figures(os.path.join(ROOT, "docs", "fpga_figures.json"))
+        errors = {c: verdict.worst_errors(j) for c, j in getattr(self, "phong", {}).items()}
+        pts = verdict.load_points(figs, errors, verdict.device_budgets(data, figs), hw_plane.PHONG_CONFIGS)
+        res = verdict.verdict(pts, verdict.report_spans(sim, hw_plane.setup_ii_sim()))
+        with open(os.path.join(self.out, "verdict.json"), "w") as f:
+            json.dump({"points": [{k: v for k, v in p.items()} for p in pts], "verdict": res}, f, indent=1)
+        verdict.write(w, res, pts)
+        for path in verdict.plot(pts, self.out, plt):
+            w(f"![{os.path.basename(path)}]({os.path.basename(path)})\n")
 
     def sim(self):
         exe = self.exe("sim_regression")
@@ -779,6 +794,7 @@ class Report:
             w("![hardware](hardware.png)\n")
         hw_plane.write(w, getattr(self, "plane_rows", []), getattr(self, "phong", {}), sim, self.args.n_step,
                        bool(getattr(self, "phong_cells", {})))
+        self.write_verdict(w, data, sim)
 
         # --- simulation
         w("## 5. Simulation throughput\n")

@@ -184,6 +184,7 @@ int measure_preset(const std::string& name, int n_step, uint64_t seed, const std
       j["n"].push_back(e.n);
       j["rel_lsb"].push_back(e.rel_lsb);
       j["abs_lsb"].push_back(e.abs_lsb);
+      j["abs_raw"].push_back(e.abs_raw);
     }
     std::ofstream out(json_out);
     out << j.dump(1) << "\n";

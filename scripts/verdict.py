@@ -1,0 +1,309 @@
+# SPDX-License-Identifier: Apache-2.0
+"""The hardware verdict of `make report` (docs/phong_hw.md#verdict): per error budget
+(docs/metrics.md#budgets) and mean span length, which unit delivers the most pixels per clock
+for its FPGA area, the device or the per-pixel Blinn-Phong core in either form, in one currency.
+
+The currency, stated once: a core's area is the share of an LFE5U-85F it occupies on its binding
+resource, max(LUT4 positions / 83,640, flip-flops / 83,640, MULT18X18D / 156, DP16KD / 208),
+from the ECP5 runs of docs/fpga_figures.json (scripts/fpga.sh --device ecp5, MULT18X18D tiles on
+both sides; Yosys' counts, LUT4 positions = LUT4 + 2 CCU2C). A share above 1 does not fit the
+part. A design's figure of merit is pixels per clock per part, (pixels per clock) / share, and
+at its own clock, pixels per second per part; the verdict compares designs by it, as ratios.
+The raw counts stay beside it in the report.
+
+Pixels per clock: every Phong core and the device's stream core take one pixel per clock on any
+span (tested: rtl_phong, make sim); the device with its setup in hardware (specular_system) takes
+at most one span every SetupII clocks, so on spans of m pixels it gives min(1, m / SetupII)
+pixels per clock (docs/setup_hw.md#sharing-over-setupii-clocks), its best SetupII chosen per m.
+
+  candidates(...)   the designs per budget: the Phong configurations whose measured errors meet
+                    it, the device's stream configurations that meet it, the system per SetupII
+  verdict(...)      per budget and span length the figures of every design and the winner
+  write(...)        the report's section; plot(...) one figure per budget: error against area
+"""
+import json
+import os
+
+import fpga_parts  # scripts/fpga_parts.py, beside this file
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BUDGETS = {  # name: (relative epicenter bound, absolute lobe bound, raw absolute bound); LSB allowance in the first two
+    "b1": (1e-3, 1e-2, None),
+    "b2": (None, None, 1.0 / 512.0),
+    "b3": (1e-2, 1e-2, None),
+}
+SPAN_LENGTHS = (1, 2, 4, 8, 16, 64)
+PART = fpga_parts.LFE5U[-1]  # LFE5U-85F: (name, size flag, LUT4 positions = FFs, MULT18X18D, DP16KD)
+
+
+def share(e):
+    """The share of the LFE5U-85F an ECP5 entry occupies on its binding resource, and that resource."""
+    parts = {"LUT4 positions": (e["lut4"] + 2 * e["ccu2c"]) / PART[2], "FF": e["ffs"] / PART[2],
+             "MULT18X18D": e["mult18x18d"] / PART[3], "DP16KD": e["dp16kd"] / PART[4]}
+    res = max(parts, key=parts.get)
+    return parts[res], res
+
+
+def budget_error(err, budget):
+    """The worst error of a configuration as a fraction of the budget's bound (<= 1: meets it), from
+    its worst rel_lsb, abs_lsb and abs_raw over n (None where a figure the budget needs is missing)."""
+    rel, ab, raw = BUDGETS[budget]
+    vals = []
+    for bound, key in ((rel, "rel_lsb"), (ab, "abs_lsb"), (raw, "abs_raw")):
+        if bound is None:
+            continue
+        if err.get(key) is None:
+            return None
+        vals.append(err[key] / bound)
+    return max(vals)
+
+
+def pixels_per_clock(setup_ii, mean_span):
+    """A design's pixels per clock on spans of mean_span pixels: 1 for a core fed at one span per
+    clock or faster (setup_ii None: the setup on a host, or a per-pixel core), else the setup's
+    span rate."""
+    return 1.0 if setup_ii is None else min(1.0, mean_span / setup_ii)
+
+
+def candidates(points, budget):
+    """The points that meet the budget: each point {name, kind (device | phong), ecp5 entry,
+    err {rel_lsb, abs_lsb, abs_raw} or None when its budget membership is given instead
+    (meets: [budgets]), setup_ii (None or k)}."""
+    out = []
+    for p in points:
+        if p.get("meets") is not None:
+            ok = budget in p["meets"]
+        else:
+            be = budget_error(p["err"], budget) if p.get("err") else None
+            ok = be is not None and be <= 1.0
+        if ok and p.get("ecp5"):
+            out.append(p)
+    return out
+
+
+def verdict(points, spans):
+    """spans: [(label, mean pixels per span, {SetupII: measured pixels per clock of the system} or
+    None)]; a measured figure replaces min(1, m / SetupII) for that SetupII. Returns {budget: [row]},
+    row = {span, mean, designs: [{name, kind, setup_ii, px_per_clock, share, per_part,
+    mpx_s_per_part or None}], host / hw / phong: the best design of the device with its setup on a
+    host, of the device with its setup in hardware and of the Phong cores (None when none meets the
+    budget), host_ratio / hw_ratio: its pixels per clock per part over the best Phong core's (None
+    when a side has no design), and the same at each design's clock (*_at_clock) where both have one}."""
+    res = {}
+    for b in BUDGETS:
+        cand = candidates(points, b)
+        rows = []
+        for label, m, measured in spans:
+            designs = []
+            for p in cand:
+                ppc = pixels_per_clock(p.get("setup_ii"), m)
+                if p.get("setup_ii") is not None and measured and measured.get(p["setup_ii"]) is not None:
+                    ppc = measured[p["setup_ii"]]
+                sh, _ = share(p["ecp5"])
+                per_part = ppc / sh
+                fmax = p["ecp5"].get("fmax_mhz")
+                designs.append({"name": p["name"], "kind": p["kind"], "setup_ii": p.get("setup_ii"),
+                                "px_per_clock": ppc, "share": sh,
+                                "per_part": per_part, "mpx_s_per_part": per_part * fmax if fmax else None})
+            # The device with its setup on a host (the stream core) and in hardware (the system).
+            groups = {"host": [d for d in designs if d["kind"] == "device" and d["setup_ii"] is None],
+                      "hw": [d for d in designs if d["kind"] == "device" and d["setup_ii"] is not None],
+                      "phong": [d for d in designs if d["kind"] == "phong"]}
+            row = {"span": label, "mean": m, "designs": designs}
+            for g, ds in groups.items():
+                row[g] = max(ds, key=lambda d: (d["per_part"], d["name"])) if ds else None
+                timed = [d for d in ds if d["mpx_s_per_part"]]
+                row[g + "_at_clock"] = max(timed, key=lambda d: d["mpx_s_per_part"]) if timed else None
+            p = row["phong"]
+            for g in ("host", "hw"):
+                d = row[g]
+                row[g + "_ratio"] = d["per_part"] / p["per_part"] if d and p else None
+                dc, pc = row[g + "_at_clock"], row["phong_at_clock"]
+                row[g + "_ratio_at_clock"] = dc["mpx_s_per_part"] / pc["mpx_s_per_part"] if dc and pc else None
+            rows.append(row)
+        res[b] = rows
+    return res
+
+
+def ecp5_entry(figs, core, config=None, setup_ii=None, dsp=True):
+    """The docs/fpga_figures.json ECP5 entry of a core: a placed and routed run (ecp5_runs) first,
+    else the synthesis counts (synthesis_runs, part ECP5); with MULT18X18D tiles when dsp."""
+    for e in figs.get("ecp5_runs", []):
+        if (e.get("core") == core and e.get("config") == config and e.get("setup_ii") == setup_ii
+                and (not dsp or e.get("mult18x18d", 0) > 0 or core != "specular_stream")):
+            return dict(e, placed=True)
+    for e in figs.get("synthesis_runs", []):
+        if (e.get("core") == core and e.get("part") == "ECP5" and e.get("config") == config
+                and (e.get("setup_ii") or 1) == (setup_ii or 1)):
+            return dict(e, placed=False, fmax_mhz=None)
+    return None
+
+
+def load_points(figs, phong_errors, device_meets, phong_configs):
+    """The verdict's points from the record (figs), this run's Phong errors (config -> worst
+    {rel_lsb, abs_lsb, abs_raw} over n <= 1000) and the device's budgets (config label ->
+    [budgets met]; None: the default build)."""
+    pts = []
+    for label, meets in device_meets.items():
+        e = ecp5_entry(figs, "specular_stream", label)
+        name = "device stream" + (f" {label}" if label else "") + " (setup on a host)"
+        pts.append({"name": name, "kind": "device", "ecp5": e, "meets": meets, "setup_ii": None})
+    for k in (1, 2, 4, 8):
+        e = ecp5_entry(figs, "specular_system", None, None if k == 1 else k)
+        if e:
+            pts.append({"name": f"device system SetupII={k} (setup in hardware)", "kind": "device", "ecp5": e,
+                        "meets": device_meets.get(None, []), "setup_ii": k})
+    for c in phong_configs:
+        if c.endswith("_consth"):
+            continue  # constant H serves only a directional light and a distant viewer
+        pts.append({"name": f"phong {c}", "kind": "phong", "ecp5": ecp5_entry(figs, "phong_stream", c),
+                    "err": phong_errors.get(c), "setup_ii": None})
+    return pts
+
+
+def worst_errors(phong_json, n_max=1000):
+    """phong_search --measure JSON -> the worst rel_lsb, abs_lsb, abs_raw over n <= n_max."""
+    out = {}
+    for key in ("rel_lsb", "abs_lsb", "abs_raw"):
+        vals = [v for n, v in zip(phong_json.get("n", []), phong_json.get(key, [])) if n <= n_max]
+        out[key] = max(vals) if vals else None
+    return out
+
+
+def device_budgets(data, figs):
+    """Config label -> the budgets a device stream configuration meets: the default build (label
+    None) by this run's measured errors (report_data's hardware section, n <= 1000), B1 and B3 only
+    (B2 bounds the raw error, which report_data does not give; docs/device.md#configurations-per-budget
+    records that no device configuration meets it); a labelled run of the record
+    (scripts/fpga.sh --label device_bK_...) by its label (the search that found it held it to bK; B1
+    implies B3)."""
+    out = {}
+    default = next((h for h in data.get("hardware", []) if h.get("name") == "default"), None)
+    if default:
+        err = {"rel_lsb": max(default["max_rel_epicenter_lsb"]), "abs_lsb": max(default["max_abs_lobe"]),
+               "abs_raw": None}
+        out[None] = [b for b in ("b1", "b3") if budget_error(dict(err, abs_raw=0.0), b) <= 1.0]
+    for e in figs.get("ecp5_runs", []):
+        c = e.get("config") or ""
+        if e.get("core") == "specular_stream" and c.startswith("device_b"):
+            b = c.split("_")[1]
+            out[c] = [b, "b3"] if b == "b1" else [b]
+    return out
+
+
+def report_spans(sim, ii_sim):
+    """The rows: SPAN_LENGTHS, then every scene of this run's Phong stage (mean pixels per span =
+    pixels / spans) with the system's measured pixels per clock per SetupII where
+    docs/measured/sim_setup_ii.json has the scene."""
+    rows = [(str(m), m, None) for m in SPAN_LENGTHS]
+    for name, v in sorted((sim or {}).get("phong", {}).items()):
+        if v.get("spans"):
+            measured = {k: float(x[name]["px_per_clock_steady"]) for k, x in (ii_sim or {}).items()
+                        if x.get(name, {}).get("px_per_clock_steady")}
+            rows.append((f"{name} ({v['pixels'] / v['spans']:.2f})", v["pixels"] / v["spans"], measured or None))
+    return rows
+
+
+def fmt_ratio(r):
+    return "n/a" if r is None else f"{r:.2f}"
+
+
+def write(w, res, points):
+    """The report's section 4c."""
+    w("## 4c. The verdict: which unit to build, per budget and span length\n")
+    w("Currency (one number, its conversion stated): the share of an LFE5U-85F that a core occupies on its binding "
+      "resource, max(LUT4 positions / 83,640, FF / 83,640, MULT18X18D / 156, DP16KD / 208), ECP5 counts of "
+      "docs/fpga_figures.json with MULT18X18D tiles on both sides (placed and routed where the run placed; the "
+      "device's setup in hardware has synthesis counts only and no clock). Figure of merit: pixels per clock per "
+      "part = pixels per clock / share; the device with its setup in hardware takes at most one span every SetupII "
+      "clocks, so min(1, mean span / SetupII) pixels per clock (best SetupII per row). Ratio = device / best Phong "
+      "core: above 1 the device gives more pixels per clock from the same part.\n")
+    w("| design | LUT4 | CCU2C | FF | MULT18X18D | DP16KD | Fmax MHz | binding resource | share of LFE5U-85F | "
+      "budgets met |")
+    w("|---|---|---|---|---|---|---|---|---|---|")
+    for p in points:
+        e = p.get("ecp5")
+        if not e:
+            w(f"| {p['name']} | not run | | | | | | | | |")
+            continue
+        sh, r = share(e)
+        met = [b for b in BUDGETS if p in candidates([p], b)]
+        fm = f"{e['fmax_mhz']:.2f}" if e.get("fmax_mhz") else "synthesis only"
+        w(f"| {p['name']} | {e['lut4']} | {e['ccu2c']} | {e['ffs']} | {e['mult18x18d']} | {e['dp16kd']} | {fm} | "
+          f"{r} | {sh:.3f} | {', '.join(met) if met else 'none'} |")
+    w("")
+    for b, rows in res.items():
+        w(f"**{b.upper()}** ({budget_text(b)}):\n")
+        w("| mean span (pixels) | device, setup on a host | device, setup in hardware | best Phong core | "
+          "host-setup device / Phong | hardware-setup device / Phong | at each core's clock: host-setup device / Phong |")
+        w("|---|---|---|---|---|---|---|")
+
+        def cell(d):
+            return f"{d['name']}: {d['per_part']:.2f}" if d else "none meets it"
+        for r in rows:
+            w(f"| {r['span']} | {cell(r['host'])} | {cell(r['hw'])} | {cell(r['phong'])} | "
+              f"{fmt_ratio(r['host_ratio'])} | {fmt_ratio(r['hw_ratio'])} | {fmt_ratio(r['host_ratio_at_clock'])} |")
+        w("")
+
+
+def budget_text(b):
+    rel, ab, raw = BUDGETS[b]
+    if raw is not None:
+        return f"every pixel within {raw:.3g} of full scale"
+    return f"{rel:.2%} of the pixel + 1 LSB in the epicenter, {ab:g} C + 1 LSB over the lobe"
+
+
+def plot(points, out_dir, plt):
+    """One figure per budget: every point's worst error as a fraction of the budget's bound against
+    its share of an LFE5U-85F (the points without an error measured here are left out)."""
+    written = []
+    for b in BUDGETS:
+        fig, ax = plt.subplots(figsize=(7.5, 5))
+        any_pt = False
+        for i, p in enumerate(points):
+            e = p.get("ecp5")
+            err = budget_error(p["err"], b) if p.get("err") else None
+            if not e or err is None:
+                continue
+            sh, _ = share(e)
+            any_pt = True
+            ax.scatter([sh], [max(err, 1e-3)], marker="o" if p["kind"] == "device" else "s",
+                       color="tab:blue" if p["kind"] == "device" else "tab:red")
+            ax.annotate(p["name"], (sh, max(err, 1e-3)), textcoords="offset points", xytext=(4, 4 + 7 * (i % 3)),
+                        fontsize=7)
+        if not any_pt:
+            plt.close(fig)
+            continue
+        ax.axhline(1.0, color="gray", linestyle="--", linewidth=1)
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("share of an LFE5U-85F on the binding resource (ECP5, MULT18X18D tiles)")
+        ax.set_ylabel(f"worst error / {b.upper()} bound, n = 1..1000")
+        ax.set_title(f"{b.upper()}: {budget_text(b)}")
+        ax.grid(True, which="both", alpha=0.3)
+        fig.tight_layout()
+        path = os.path.join(out_dir, f"verdict_{b}.png")
+        fig.savefig(path, dpi=110)
+        plt.close(fig)
+        written.append(path)
+    return written
+
+
+def main():
+    import argparse
+    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    ap.add_argument("--figures", default=os.path.join(ROOT, "docs", "fpga_figures.json"))
+    ap.add_argument("--json", help="write the verdict as JSON to FILE")
+    a = ap.parse_args()
+    with open(a.figures) as f:
+        figs = json.load(f)
+    pts = load_points(figs, {}, {None: ["b1", "b3"]}, [])
+    res = verdict(pts, [(str(m), m, None) for m in SPAN_LENGTHS])
+    if a.json:
+        with open(a.json, "w") as f:
+            json.dump(res, f, indent=1)
+    write(print, res, pts)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,90 @@
+#!/usr/bin/python3
+# SPDX-License-Identifier: Apache-2.0
+"""scripts/verdict.py (make report's section 4c, docs/phong_hw.md#verdict) on synthetic points whose
+figures are worked out by hand below, then on the committed docs/fpga_figures.json (every row it
+writes has a figure or says why not). Exit 0 when every check holds."""
+import json
+import os
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import verdict  # noqa: E402
+
+failures = []
+
+
+def check(ok, what):
+    if not ok:
+        failures.append(what)
+
+
+def close(a, b, what):
+    check(a is not None and abs(a - b) <= 1e-9 * max(1.0, abs(b)), f"{what}: {a} != {b}")
+
+
+def entry(lut4, ccu2c, ffs, mult, ebr, fmax):
+    return {"lut4": lut4, "ccu2c": ccu2c, "ffs": ffs, "mult18x18d": mult, "dp16kd": ebr, "fmax_mhz": fmax}
+
+
+# LFE5U-85F: 83,640 LUT4 positions and flip-flops, 156 MULT18X18D, 208 DP16KD.
+# stream: LUT4 positions 1,000 + 2 * 100 = 1,200 (0.014347), FF 2,091 (0.025), MULT 3.9 -> 6 (0.0385),
+# DP16KD 6 (0.0288): binding MULT18X18D, share 6 / 156, 26 px/clock per part.
+stream = entry(1000, 100, 2091, 6, 6, 120.0)
+# system at SetupII 4: FF 41,820 (0.5) binds; share 0.5, 2 px/clock per part at one pixel per clock.
+system4 = entry(20000, 1000, 41820, 39, 10, None)
+# Phong: MULT 78 (0.5) and FF 20,910 (0.25): share 0.5; 2 px/clock per part; at 100 MHz 200 Mpx/s.
+phong = entry(5000, 1000, 20910, 78, 1, 100.0)
+pts = [
+    {"name": "stream", "kind": "device", "ecp5": stream, "meets": ["b1", "b3"], "setup_ii": None},
+    {"name": "system4", "kind": "device", "ecp5": system4, "meets": ["b1", "b3"], "setup_ii": 4},
+    {"name": "phong", "kind": "phong", "ecp5": phong, "err": {"rel_lsb": 5e-4, "abs_lsb": 1e-3, "abs_raw": 3e-3},
+     "setup_ii": None},
+]
+sh, res = verdict.share(stream)
+close(sh, 6 / 156, "stream share")
+check(res == "MULT18X18D", f"stream binding resource {res}")
+close(verdict.share(system4)[0], 0.5, "system share")
+close(verdict.share(phong)[0], 0.5, "phong share")
+# Phong's errors: B1 rel 0.5, abs 0.1 -> 0.5 meets; B2 raw 3e-3 * 512 = 1.536 misses; B3 0.1.
+close(verdict.budget_error(pts[2]["err"], "b1"), 0.5, "b1 error fraction")
+close(verdict.budget_error(pts[2]["err"], "b2"), 3e-3 * 512, "b2 error fraction")
+close(verdict.budget_error(pts[2]["err"], "b3"), 0.1, "b3 error fraction")
+check(verdict.budget_error({"rel_lsb": 1e-4}, "b1") is None, "a missing figure gives no verdict")
+# Pixels per clock of the system at SetupII 4: spans of 2 pixels -> 0.5; of 8 -> 1.
+close(verdict.pixels_per_clock(4, 2), 0.5, "ppc m=2 k=4")
+close(verdict.pixels_per_clock(4, 8), 1.0, "ppc m=8 k=4")
+close(verdict.pixels_per_clock(None, 1), 1.0, "ppc host setup")
+
+# Only the system and the Phong core: at m = 2 the system gives 0.5 / 0.5 = 1 px/clock per part
+# against Phong's 2 (ratio 0.5); at m = 8, 2 against 2 (ratio 1). A measured 0.25 at m = 2 gives 0.25.
+res = verdict.verdict(pts[1:], [("2", 2, None), ("8", 8, None), ("scene", 2, {4: 0.25})])
+b1 = res["b1"]
+close(b1[0]["hw_ratio"], 0.5, "system/phong at m = 2")
+close(b1[1]["hw_ratio"], 1.0, "system/phong at m = 8")
+close(b1[2]["hw_ratio"], 0.25, "measured pixels per clock replace the formula")
+check(b1[0]["hw_ratio_at_clock"] is None, "no clock for a synthesis-only design")
+check(b1[0]["host"] is None and b1[0]["host_ratio"] is None, "no host-setup design among the points")
+check(res["b2"][0]["phong"] is None and res["b2"][0]["hw_ratio"] is None, "B2: the Phong core misses it")
+# With the stream: 26 / 2 = 13 per clock; at each clock 26 * 120 / (2 * 100) = 15.6.
+res = verdict.verdict(pts, [("1", 1, None)])
+check(res["b1"][0]["host"]["name"] == "stream", "the stream is the host-setup device design")
+close(res["b1"][0]["host_ratio"], 13.0, "stream/phong")
+close(res["b1"][0]["host_ratio_at_clock"], 15.6, "stream/phong at each clock")
+close(res["b1"][0]["hw_ratio"], (0.25 / 0.5) / 2, "system at m = 1: 1/4 px/clock, share 0.5, over Phong's 2")
+
+# The committed record: the section is written for every budget and span length.
+with open(os.path.join(ROOT, "docs", "fpga_figures.json")) as f:
+    figs = json.load(f)
+lines = []
+pts = verdict.load_points(figs, {}, {None: ["b1", "b3"]}, ["n1000"])
+verdict.write(lines.append, verdict.verdict(pts, [(str(m), m, None) for m in verdict.SPAN_LENGTHS]), pts)
+text = "\n".join(lines)
+for b in verdict.BUDGETS:
+    check(f"**{b.upper()}**" in text, f"no table for {b}")
+check(text.count("\n| 64 |") == len(verdict.BUDGETS), "one row per budget for span length 64")
+
+for msg in failures:
+    print("FAIL", msg)
+print("check_verdict:", "FAIL" if failures else "PASS")
+sys.exit(1 if failures else 0)
