@@ -59,8 +59,10 @@ class Data:
 
     # place and route
     def pnr(self, core, part):
+        """The default configuration's run (no "config": a --label or --phong-config run names its
+        configuration there, rtl/fpga/README.md#how-to-run)."""
         for r in self.fpga["runs"]:
-            if r["core"] == core and r["part"].startswith(part):
+            if r["core"] == core and r["part"].startswith(part) and not r.get("config"):
                 return r
         raise KeyError(f"{core} {part} not in docs/fpga_figures.json")
 
@@ -164,7 +166,7 @@ def fpga_table():
     def run(d, k):
         core, part = k
         for r in d.fpga["runs"]:
-            if r["core"] == core and r["part"] == part:
+            if r["core"] == core and r["part"] == part and not r.get("config"):  # the default configuration's
                 return r
         raise KeyError(f"{core} {part} not in docs/fpga_figures.json")
 
@@ -384,7 +386,7 @@ def check(root, specular=None, listing=False, updates=None):
     for doc, header, label, keys_of, columns in TABLES:
         check_table(doc, texts[doc], header, label, keys_of(d), columns, 1, compare, covered, errors)
     for doc, header, cores in FPGA_TABLES:
-        keys = [(r["core"], r["part"]) for r in d.fpga["runs"] if r["core"] in cores]
+        keys = [(r["core"], r["part"]) for r in d.fpga["runs"] if r["core"] in cores and not r.get("config")]
         check_table(doc, texts[doc], header, "docs/fpga_figures.json runs of " + "/".join(cores), keys,
                     fpga_table(), 2, compare, covered, errors, row_filter=lambda cells: cells[0] in cores)
 
