@@ -17,7 +17,7 @@ help:
 	@echo "make formal-long  the slow formal checks of specular_setup: its proof, bounded check and mutant (ctest label formal_long)"
 	@echo "make formal  the formal proofs alone (specular_stream's handshakes, specular_axil's AXI4-Lite rules, phong_stream's bounded check) and their mutants"
 	@echo "make sim-setup-ii  the system stage at SetupII 1, 2, 4 and 8 (turns on SPECULAR_SYSTEM_SETUP_II in $(BUILD): three more models)"
-	@echo "make roms    regenerate every configuration's ROM hex files and roms/build_configs.cmake (romgen --all)"
+	@echo "make roms    regenerate every configuration's ROM hex files and roms/build_configs.cmake (romgen --all), and roms/budget/ (scripts/budget_roms.py)"
 	@echo "make stage-table  rewrite docs/pipeline.md's stage table from rtl/prim/specular_pkg.sv"
 	@echo "make results-page  rewrite docs/results.md (the measured results) from docs/measured/*.json and docs/fpga_figures.json"
 	@echo "make vcd     write VCD timing diagrams to $(BUILD)/vcd and draw the 4-pixel one"
@@ -78,6 +78,7 @@ results-page:
 roms: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target romgen phong_romgen setup_romgen
 	./$(BUILD)/bin/romgen --all --out-dir roms
+	$(PYTHON) scripts/budget_roms.py --romgen ./$(BUILD)/bin/romgen
 	./$(BUILD)/bin/phong_romgen --out-dir roms/phong
 	./$(BUILD)/bin/setup_romgen --out roms/setup
 

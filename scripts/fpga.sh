@@ -12,7 +12,7 @@
 #                   [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N]
 #                   [--freq-hx8k MHZ] [--freq-up5k MHZ] [--freq-ecp5 MHZ] [--flatten|--no-flatten]
 #                   [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only]
-#                   [--setup-ii K] [--record]
+#                   [--setup-ii K] [--label NAME] [--record]
 #
 #   --top         the core in the harness fpga_ooc (its parameter Top): unit
 #                 (specular_unit), stream (specular_stream), axil (specular_axil: the
@@ -34,8 +34,8 @@
 #   --param       a core parameter by name, e.g. --param CosAddrBits=9
 #                 --param CosRomFile=build/roms9/cos_k_1_2_4_16.hex (repeatable; paths
 #                 relative to the repository root). Interface widths (CBits, AngleBits,
-#                 NBits, LenBits, TagBits, AddrWidth) go to
-#                 the harness, every other name to the core
+#                 NBits, LenBits, TagBits, AddrWidth, VecBits, and MulBits of --top mul) go
+#                 to the harness, every other name to the core
 #                 module (chparam before elaboration), so any parameter the core has can be
 #                 set and the core's own defaults apply to the rest. Integers and Verilog
 #                 literals (40'h...) are passed as numbers, anything else as a string.
@@ -59,9 +59,18 @@
 #   --fresh       re-run even when sources, parameters, ROM files and tools are unchanged
 #                 (otherwise an unchanged run's result is reused)
 #   --elaborate-only  only elaborate the harnesses in Yosys (hierarchy -check), no synthesis
+#   --label       the name of the configuration that --param sets (letters, digits, _; not
+#                 "default"), e.g. --label device_b1_n1000: each run's entry gets it as its
+#                 "config" in figures_entries.json and docs/fpga_figures.json, so that it is an
+#                 entry of its own beside the default configuration's (which has no "config");
+#                 the run's folder is TOP_NAME_DEVICE/. Not with --phong-config (which names
+#                 the configuration itself)
 #   --record      after the runs, record them in docs/fpga_figures.json (scripts/fpga_record.py:
-#                 each replaces the entry of the same core, configuration, part and multiplier
-#                 style); refused when rtl/ differs from the commit it was run on
+#                 each replaces the entry of the same core, configuration, SetupII, part and
+#                 multiplier style); refused when rtl/ differs from the commit it was run on,
+#                 and (exit 2) when --param or FPGA_PARAMS sets a core parameter other than
+#                 MulTileBits, TileBits or SetupII without --label or --phong-config: such a
+#                 run would replace the default configuration's entry
 #   --setup-ii    with --top setup or system: the setup's initiation interval SetupII (1, 2,
 #                 4 or 8: at most one span every K clocks, the hardware shared over them,
 #                 docs/setup_hw.md#sharing-over-setupii-clocks), as --param SetupII=K; the
@@ -84,7 +93,7 @@ me=scripts/fpga.sh
 
 die_usage() {
   echo "$me: $*" >&2
-  echo "usage: $me [--top unit|stream|axil|phong|setup|system|mul|all] [--device hx8k|up5k|ecp5|ecp5-25|ecp5-45|ecp5-85|all] [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--freq-ecp5 MHZ] [--flatten|--no-flatten] [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only] [--setup-ii K] [--record]" >&2
+  echo "usage: $me [--top unit|stream|axil|phong|setup|system|mul|all] [--device hx8k|up5k|ecp5|ecp5-25|ecp5-45|ecp5-85|all] [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--freq-ecp5 MHZ] [--flatten|--no-flatten] [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only] [--setup-ii K] [--label NAME] [--record]" >&2
   exit 2
 }
 
@@ -103,6 +112,7 @@ strict=0
 fresh=0
 elab_only=0
 setup_ii=
+label=
 record=0
 params=()
 for p in ${FPGA_PARAMS:-}; do params+=("$p"); done
@@ -126,9 +136,10 @@ while [ $# -gt 0 ]; do
     --fresh)     fresh=1; shift ;;
     --elaborate-only) elab_only=1; shift ;;
     --setup-ii)  need_value "$@"; setup_ii=$2; shift 2 ;;
+    --label)     need_value "$@"; label=$2; shift 2 ;;
     --record)    record=1; shift ;;
     -h|--help)   sed -n '4,/^set -euo/p' "$0" | sed '$d; s/^# \{0,1\}//'; exit 0 ;;
-    *)           die_usage "unknown argument '$1' (allowed: --top, --device, --out, --param, --phong-config, --seed, --freq-hx8k, --freq-up5k, --freq-ecp5, --flatten, --no-flatten, --yosys-timeout, --strict, --fresh, --elaborate-only, --setup-ii, --record, --help)" ;;
+    *)           die_usage "unknown argument '$1' (allowed: --top, --device, --out, --param, --phong-config, --seed, --freq-hx8k, --freq-up5k, --freq-ecp5, --flatten, --no-flatten, --yosys-timeout, --strict, --fresh, --elaborate-only, --setup-ii, --label, --record, --help)" ;;
   esac
 done
 
@@ -150,6 +161,12 @@ for d in "${dev_list[@]}"; do
     *) die_usage "--device must be one of hx8k, up5k, ecp5, ecp5-25, ecp5-45, ecp5-85, all, or a comma-separated list of them (got '$dev_arg')" ;;
   esac
 done
+# --label: the name of a --param configuration, its entries' "config" (rtl/fpga/README.md#how-to-run).
+if [ -n "$label" ]; then
+  [[ "$label" =~ ^[A-Za-z0-9_]+$ ]] || die_usage "--label must be letters, digits and _ (got '$label')"
+  [ "$label" != default ] || die_usage "--label must not be 'default': the entries without a label are the default configuration's"
+  [ -z "$phong_cfg" ] || die_usage "--label and --phong-config both name the configuration: give one (got --label $label --phong-config $phong_cfg)"
+fi
 # --phong-config: the -G flags of roms/phong/phong_configs.cmake as --param NAME=VALUE.
 if [ -n "$phong_cfg" ]; then
   [ "$top_arg" = phong ] || die_usage "--phong-config needs --top phong (got --top $top_arg)"
@@ -196,7 +213,7 @@ done
 
 # Parameters: NAME=VALUE, NAME an identifier; numbers and sized literals as they are,
 # anything else a quoted string (no quotes, backslashes or spaces inside).
-harness_widths=" CBits AngleBits NBits LenBits TagBits AddrWidth VecBits "
+harness_widths=" CBits AngleBits NBits LenBits TagBits AddrWidth VecBits MulBits "
 core_chparam=()
 harness_chparam=()
 for p in "${params[@]+"${params[@]}"}"; do
@@ -214,6 +231,17 @@ for p in "${params[@]+"${params[@]}"}"; do
   fi
   if [[ "$harness_widths" == *" $name "* ]]; then harness_chparam+=("$arg"); else core_chparam+=("$arg"); fi
 done
+# --record of a --param configuration needs its name: scripts/fpga_record.py keys an entry by
+# core, configuration, SetupII, part and multiplier style (rtl/fpga/README.md#the-setup-and-the-system),
+# so an unnamed one would replace the default configuration's entry.
+if [ "$record" = 1 ] && [ -z "$label" ] && [ -z "$phong_cfg" ]; then
+  for p in "${params[@]+"${params[@]}"}"; do
+    case "${p%%=*}" in
+      MulTileBits|TileBits|SetupII) ;;  # keyed by the multiplier style and by SetupII
+      *) die_usage "--record with --param ${p%%=*} needs --label NAME, the configuration's name in docs/fpga_figures.json (without it the run would replace the default configuration's entry)" ;;
+    esac
+  done
+fi
 
 for tool in yosys python3 $([[ " ${devices[*]} " == *" hx8k "* || " ${devices[*]} " == *" up5k "* ]] && echo nextpnr-ice40); do
   command -v "$tool" > /dev/null || { echo "$me: $tool is not installed (scripts/install-deps.sh installs it)" >&2; exit 1; }
@@ -286,7 +314,7 @@ for top in "${tops[@]}"; do
     auto) case "$top" in setup|system) hier=1 ;; esac ;;
   esac
   for dev in "${devices[@]}"; do
-    dir="$out/${top}${phong_cfg:+_$phong_cfg}${setup_ii:+_ii$setup_ii}_${dev}"
+    dir="$out/${top}${phong_cfg:+_$phong_cfg}${label:+_$label}${setup_ii:+_ii$setup_ii}_${dev}"
     # The multipliers in the resources of the part (docs/pipeline.md#multiplier-styles): LUT
     # trees on the HX8K, SB_MAC16 tiles on the UP5K, MULT18X18D tiles on the ECP5, unless
     # --param sets the style. The setup does not build its products through it yet.
@@ -440,10 +468,10 @@ PY3
     t1=$(date +%s)
     if [[ "$dev" == ecp5* ]]; then export FPGA_NEXTPNR_VERSION=$ecp5_version; else export FPGA_NEXTPNR_VERSION=$ice40_version; fi
     python3 - "$dir" "$top" "$dev" "$harness" "$core" "$freq" "$seed" "$synth_rc" "$pnr_rc" \
-      "$((t1 - t0))" "$((t_synth - t0))" "$synth" "$phong_cfg" "${run_params[@]+"${run_params[@]}"}" <<'PY'
+      "$((t1 - t0))" "$((t_synth - t0))" "$synth" "$phong_cfg" "$label" "${run_params[@]+"${run_params[@]}"}" <<'PY'
 import json, os, re, subprocess, sys
-d, top, dev, harness, core, freq, seed, synth_rc, pnr_rc, secs, synth_secs, synth, phong_cfg = sys.argv[1:14]
-params = sys.argv[14:]
+d, top, dev, harness, core, freq, seed, synth_rc, pnr_rc, secs, synth_secs, synth, phong_cfg, label = sys.argv[1:15]
+params = sys.argv[15:]
 res = {"top": top, "harness": harness, "core": core, "device": dev,
        "part": {"hx8k": "iCE40-HX8K ct256", "up5k": "iCE40-UP5K sg48"}.get(dev, "ECP5 (LFE5U)"),
        "synthesis": synth, "hierarchical": "-noflatten" in synth,
@@ -455,6 +483,8 @@ if os.environ.get("FPGA_NEXTPNR_VERSION"):
     res["nextpnr_version"] = os.environ["FPGA_NEXTPNR_VERSION"]
 if phong_cfg:
     res["phong_config"] = phong_cfg
+if label:  # --label: the configuration's name, its entries' "config"
+    res["label"] = label
 
 def read(p):
     try:
@@ -614,6 +644,12 @@ def multipliers(r):
 sys.path.insert(0, "scripts")
 import fpga_parts
 
+
+def config(r):
+    """The configuration's name of an entry: --phong-config or --label; None for the default
+    configuration, whose entries have no "config" (rtl/fpga/README.md#how-to-run)."""
+    return r.get("phong_config") or r.get("label")
+
 # The runs in the shapes of docs/fpga_figures.json: placed iCE40 runs as "runs" entries, placed
 # ECP5 runs as "ecp5_runs" entries, the runs whose Yosys counts exceed the part as
 # "synthesis_runs" entries, to paste there. Each with the date of its run and the RTL commit.
@@ -625,8 +661,8 @@ for r, date in zip(runs, dates):
         bram = npr.get("ICESTORM_RAM", {}).get("used", y["bram"])
         dsp = npr.get("ICESTORM_DSP", {}).get("used", y["dsp"])
         e = {"core": r["core"]}
-        if r.get("phong_config"):
-            e["config"] = r["phong_config"]
+        if config(r):
+            e["config"] = config(r)
         e.update({"part": {"hx8k": "HX8K ct256", "up5k": "UP5K sg48"}[r["device"]], "rtl": rtl, "date": date,
                   "tools": "Yosys " + re.sub(r"^Yosys (\S+).*", r"\1", r.get("yosys_version", "?")) + ", nextpnr-ice40 "
                            + r.get("nextpnr_version", "?"),
@@ -640,8 +676,8 @@ for r, date in zip(runs, dates):
     if r["device"].startswith("ecp5") and r["status"] == "placed and routed":
         y, npr = r["yosys"], r.get("nextpnr", {})
         e = {"core": r["core"]}
-        if r.get("phong_config"):
-            e["config"] = r["phong_config"]
+        if config(r):
+            e["config"] = config(r)
         e.update({"part": r["part"], "rtl": rtl, "date": date, "multipliers": multipliers(r),
                   "tools": "Yosys " + re.sub(r"^Yosys (\S+).*", r"\1", r.get("yosys_version", "?")) + ", nextpnr-ecp5 "
                            + r.get("nextpnr_version", "?"),
@@ -659,8 +695,8 @@ for r, date in zip(runs, dates):
         continue
     y = r["yosys"]
     e = {"core": r["core"]}
-    if r.get("phong_config"):
-        e["config"] = r["phong_config"]
+    if config(r):
+        e["config"] = config(r)
     ii = next((p.split("=", 1)[1] for p in r["params"] if p.startswith("SetupII=")), None)
     if ii is not None:  # --setup-ii (or --param SetupII=K)
         e["setup_ii"] = int(ii)
@@ -686,7 +722,7 @@ runs = [r for r in runs if not r["device"].startswith("ecp5")]
 
 def name(r):
     ii = next((p for p in r["params"] if p.startswith("SetupII=")), None)
-    return r["core"] + (f" {r['phong_config']}" if r.get("phong_config") else "") + (f" {ii}" if ii else "")
+    return r["core"] + (f" {config(r)}" if config(r) else "") + (f" {ii}" if ii else "")
 
 def n(v):
     return "-" if v is None else str(v)

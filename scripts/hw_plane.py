@@ -169,7 +169,7 @@ def ecp5_runs(path=os.path.join(ROOT, "docs", "fpga_figures.json")):
     for e in d.get("synthesis_runs", []):
         if e.get("part") != "ECP5":
             continue
-        if e.get("core") == "specular_system":
+        if e.get("core") == "specular_system" and not e.get("config"):  # a --label run is not the system's default
             ii = e.get("setup_ii", 1)
             out["specular_system" + (f" SetupII={ii}" if ii != 1 else "")] = e
         elif e.get("core") == "phong_stream":

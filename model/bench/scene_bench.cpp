@@ -113,8 +113,11 @@ double stream_fmax_mhz(const std::string& path, std::string& source) {
   std::ifstream f(path);
   if (!f) throw std::runtime_error("cannot read " + path);
   const json j = json::parse(f);
+  // The default configuration's entry: a --label run's entry names its configuration in
+  // "config" (rtl/fpga/README.md#how-to-run), the default's has none.
   for (const json& r : j.at("runs"))
-    if (r.at("core") == "specular_stream" && r.at("part").get<std::string>().rfind("HX8K", 0) == 0) {
+    if (r.at("core") == "specular_stream" && !r.contains("config") &&
+        r.at("part").get<std::string>().rfind("HX8K", 0) == 0) {
       source = path + ": specular_stream " + r.at("part").get<std::string>();
       return r.at("fmax_mhz").get<double>();
     }

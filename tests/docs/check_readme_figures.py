@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: Apache-2.0
-"""The measured figures of README.md and rtl/fpga/README.md, checked against the JSON of the runs
-that measured them (docs/usage.md, section "Where the measured figures live").
+"""The measured figures of README.md, rtl/fpga/README.md and docs/device.md's FPGA cost per error
+budget, checked against the JSON of the runs that measured them (docs/usage.md, section "Where the measured figures live").
 
 Sources (all committed; the paths are relative to the repository root):
   docs/measured/sim.json          `sim_regression --json` (deterministic: counts, errors, clocks)
@@ -59,10 +59,18 @@ class Data:
 
     # place and route
     def pnr(self, core, part):
+        """The default configuration's run (no "config": a --label or --phong-config run names its
+        configuration there, rtl/fpga/README.md#how-to-run)."""
         for r in self.fpga["runs"]:
-            if r["core"] == core and r["part"].startswith(part):
+            if r["core"] == core and r["part"].startswith(part) and not r.get("config"):
                 return r
         raise KeyError(f"{core} {part} not in docs/fpga_figures.json")
+
+    def fpga_budget_keys(self):
+        """The budget table's keys, or [] when no configuration per budget was run (then the
+        table may be absent)."""
+        keys = list(budget_entries(self))
+        return keys if any(k[1] != "default" for k in keys) else []
 
     # sim_regression
     def cfg(self, name):
@@ -115,6 +123,29 @@ def sim_total(d, key):
 
 R = "README.md"
 F = "rtl/fpga/README.md"
+D = "docs/device.md"  # its FPGA cost per error budget (#configurations-per-budget)
+
+
+def budget_range(label, what):
+    """The lowest and the highest over the parts of a configuration per budget's ratio of `what`
+    to the default configuration's (budget_ratio); a part where neither has any (the HX8K's
+    DSPs) is left out."""
+    def vals(d):
+        v = [budget_ratio(d, k, what) for k in budget_entries(d) if k[1] == label]
+        v = [x for x in v if x != "-"]
+        if not v:
+            raise KeyError(f"no {label} entries of {BUDGET_CORE} in docs/fpga_figures.json")
+        return v
+    return [(f"{label}: x {what} (lowest)", lambda d: min(vals(d))),
+            (f"{label}: x {what} (highest)", lambda d: max(vals(d)))]
+
+
+def budget_sentence(label):
+    """docs/device.md's sentence of one configuration per budget: its ratios to the default build."""
+    return (D, r"\(`" + label + r"`\): LUT4 (\S+) to (\S+) x, flip-flops (\S+) to (\S+) x, DSPs (\S+) to (\S+) x, "
+               r"block RAMs (\S+) to (\S+) x, Fmax (\S+) to (\S+) x",
+            sum((budget_range(label, w) for w in ("LUT4", "FFs", "DSPs", "BRAMs", "Fmax")), []))
+
 # README.md's Results table: one figure per row (a table cell is "| ... |": the bars are escaped).
 FIGURES = [
     (R, r"every configuration \((\S+) lines, (\S+) M pixels each\) and the scenes \|",
@@ -151,7 +182,7 @@ FIGURES = [
       ("specular_stream UP5K Fmax", lambda d: d.pnr("specular_stream", "UP5K")["fmax_mhz"])]),
     ranged(R, r"per-pixel Phong \(SLEEF\), per scene \| (\S+) to (\S+) x as fast \|",
            "software: device x phong_sleef, both at the best instruction set", lambda d, x: d.best(x)),
-]
+] + [budget_sentence(label) for label in ("device_b1_n1000", "device_b1_n128", "device_b3_n1000")]
 
 # Markdown tables checked cell by cell: (document, header start, label, keys, {column: value
 # function of (Data, key cell)}); the first column is the key; every row must have a source
@@ -164,7 +195,7 @@ def fpga_table():
     def run(d, k):
         core, part = k
         for r in d.fpga["runs"]:
-            if r["core"] == core and r["part"] == part:
+            if r["core"] == core and r["part"] == part and not r.get("config"):  # the default configuration's
                 return r
         raise KeyError(f"{core} {part} not in docs/fpga_figures.json")
 
@@ -187,6 +218,81 @@ FPGA_TABLES = [
     (F, "| core | device | fit | LCs |", cores)
     for cores in (("specular_unit", "specular_stream"), ("specular_axil",))
 ]
+
+# rtl/fpga/README.md#the-device-per-error-budget: specular_stream in each configuration of the
+# device per error budget (fpga.sh --label device_*, roms/budget/budget_configs.json) beside the
+# default configuration's entry (no "config"), on each part in its multiplier style
+# (docs/pipeline.md#multiplier-styles), placed and routed (runs and ecp5_runs), and the ratios of
+# each count and of Fmax to the default's on the same family of parts. Keyed by core,
+# configuration ("default" for the entry without one) and part.
+PART_STYLE = (("HX8K", "LUT trees"), ("UP5K", "SB_MAC16 tiles (16-bit)"), ("LFE5U", "MULT18X18D tiles (18-bit)"))
+BUDGET_CORE = "specular_stream"
+
+
+def family(part):
+    return next((f for f, _ in PART_STYLE if part.startswith(f)), None)
+
+
+def budget_entries(d):
+    """(core, configuration, part) -> entry, for the budget table."""
+    out = {}
+    for e in d.fpga["runs"] + d.fpga.get("ecp5_runs", []):
+        cfg = e.get("config") or "default"
+        if e["core"] != BUDGET_CORE or not (cfg == "default" or cfg.startswith("device_")):
+            continue
+        if (family(e["part"]), e.get("multipliers", "MULT18X18D tiles (18-bit)")) not in PART_STYLE:
+            continue
+        out[(e["core"], cfg, e["part"])] = e
+    return out
+
+
+def budget_counts(e):
+    """The counts of an entry in one shape for both families: iCE40 (SB_LUT4, SB_CARRY, SB_MAC16,
+    SB_RAM40_4K, logic cells) and ECP5 (LUT4, CCU2C, MULT18X18D, DP16KD, TRELLIS_COMB)."""
+    if "lcs" in e:
+        return {"placed": f"{e['lcs']} / {e['lcs_available']}", "LUT4": e["sb_lut4"], "carry": e["sb_carry"],
+                "FFs": e["ffs"], "DSPs": e["dsps"], "BRAMs": e["brams"], "fmax": e["fmax_mhz"]}
+    return {"placed": f"{e['trellis_comb']} / {e['trellis_comb_available']}", "LUT4": e["lut4"], "carry": e["ccu2c"],
+            "FFs": e["ffs"], "DSPs": e["mult18x18d"], "BRAMs": e["dp16kd"], "fmax": e["fmax_mhz"]}
+
+
+def budget_default(d, k):
+    """The default configuration's entry on the family of parts of key k."""
+    fam = family(k[2])
+    for (core, cfg, part), e in budget_entries(d).items():
+        if core == k[0] and cfg == "default" and family(part) == fam:
+            return e
+    raise KeyError(f"no default {k[0]} entry on {fam} in docs/fpga_figures.json")
+
+
+def budget_ratio(d, k, what):
+    """count (or Fmax) of k over the default's; '-' when the default's is 0 (no DSP on the HX8K)."""
+    a, b = budget_counts(budget_entries(d)[k]), budget_counts(budget_default(d, k))
+    what = "fmax" if what == "Fmax" else what
+    return "-" if b[what] == 0 and a[what] == 0 else a[what] / b[what]
+
+
+def budget_fmax_text(d, k):
+    e = budget_entries(d)[k]
+    return f"{e['fmax_mhz']:.2f}" + ("" if e["fmax_mhz"] >= e["target_mhz"] else " (missed)")
+
+
+BUDGET_COLUMNS = {
+    "placed": lambda d, k: budget_counts(budget_entries(d)[k])["placed"],
+    "LUT4": lambda d, k: budget_counts(budget_entries(d)[k])["LUT4"],
+    "carry": lambda d, k: budget_counts(budget_entries(d)[k])["carry"],
+    "FFs": lambda d, k: budget_counts(budget_entries(d)[k])["FFs"],
+    "DSPs": lambda d, k: budget_counts(budget_entries(d)[k])["DSPs"],
+    "BRAMs": lambda d, k: budget_counts(budget_entries(d)[k])["BRAMs"],
+    "Fmax (MHz)": budget_fmax_text,
+    "x LUT4": lambda d, k: budget_ratio(d, k, "LUT4"),
+    "x FFs": lambda d, k: budget_ratio(d, k, "FFs"),
+    "x DSPs": lambda d, k: budget_ratio(d, k, "DSPs"),
+    "x BRAMs": lambda d, k: budget_ratio(d, k, "BRAMs"),
+    "x Fmax": lambda d, k: budget_ratio(d, k, "Fmax"),
+    "RTL": lambda d, k: f"`{budget_entries(d)[k]['rtl']}`",
+}
+
 
 def synth_key(e):
     """A synthesis-only entry's table key: its core (with the Phong configuration, or the setup's
@@ -241,6 +347,8 @@ FIGURE_REGIONS = [
     (R, r"\A", r"\Z"),  # the whole README: every number it prints is a figure or a constant below
     (F, r"## Measured", r"What the tables say:"),
     (F, r"<!-- synthesis-only figures -->", r"<!-- end of the synthesis-only figures -->"),
+    (F, r"<!-- budget figures -->", r"<!-- end of the budget figures -->"),
+    (D, r"<!-- FPGA cost per budget -->", r"<!-- end of the FPGA cost per budget -->"),
 ]
 # Numbers in those regions that are not measurements: names, definitions, settings.
 NOT_MEASURED = [
@@ -259,6 +367,7 @@ NOT_MEASURED = [
     r"SetupII=\d+",                              # a configuration of the hardware setup
     r"\d+-bit SB_MAC16 tiles",                    # the UP5K's multiplier style (docs/pipeline.md)
     r"\d+ x \d+ tile products",                   # the tile size of that style
+    r"CABGA381 -6",                              # an ECP5 part's package and speed grade
 ]
 
 
@@ -332,7 +441,7 @@ def check(root, specular=None, listing=False, updates=None):
     source gives a value to print."""
     errors = []
     texts = {}
-    for doc in {R, F}:
+    for doc in {R, F, D}:
         with open(os.path.join(root, doc)) as f:
             texts[doc] = f.read()
     try:
@@ -384,9 +493,13 @@ def check(root, specular=None, listing=False, updates=None):
     for doc, header, label, keys_of, columns in TABLES:
         check_table(doc, texts[doc], header, label, keys_of(d), columns, 1, compare, covered, errors)
     for doc, header, cores in FPGA_TABLES:
-        keys = [(r["core"], r["part"]) for r in d.fpga["runs"] if r["core"] in cores]
+        keys = [(r["core"], r["part"]) for r in d.fpga["runs"] if r["core"] in cores and not r.get("config")]
         check_table(doc, texts[doc], header, "docs/fpga_figures.json runs of " + "/".join(cores), keys,
                     fpga_table(), 2, compare, covered, errors, row_filter=lambda cells: cells[0] in cores)
+
+    if d.fpga_budget_keys():
+        check_table(F, texts[F], "| core | configuration | part | placed |", "docs/fpga_figures.json runs of the "
+                    "device per error budget", d.fpga_budget_keys(), BUDGET_COLUMNS, 3, compare, covered, errors)
 
     for doc, header, columns, which in SYNTH_TABLES:
         keys = [synth_key(e) for e in d.fpga.get("synthesis_runs", []) if which(e)]
@@ -477,7 +590,7 @@ def self_test(root, specular):
         def fresh():
             dst = os.path.join(tmp, "repo")
             shutil.rmtree(dst, ignore_errors=True)
-            for rel in (R, F, "docs/fpga_figures.json", "docs/measured/sim.json", "docs/measured/scene_bench.json"):
+            for rel in (R, F, D, "docs/fpga_figures.json", "docs/measured/sim.json", "docs/measured/scene_bench.json"):
                 os.makedirs(os.path.dirname(os.path.join(dst, rel)), exist_ok=True)
                 shutil.copy(os.path.join(root, rel), os.path.join(dst, rel))
             return dst
@@ -525,6 +638,17 @@ def self_test(root, specular):
         if specular:
             cases.append(("the float-model figure tampered", R, "| 1.09 % |", "| 1.01 % |",
                           "patent float model at n = 3"))
+        # The device per error budget: a count of a labelled entry tampered in the JSON, and a
+        # ratio of docs/device.md tampered.
+        budget = {k: e for k, e in budget_entries(d).items() if k[1] != "default"}
+        if budget:
+            k, e = next(iter(budget.items()))
+            lut = "sb_lut4" if "sb_lut4" in e else "lut4"
+            cases.append(("a budget configuration's count tampered", "docs/fpga_figures.json",
+                          json.dumps(e), json.dumps(dict(e, **{lut: e[lut] + 1})), f"LUT4 of {k}"))
+            b_lo = budget_range(k[1], "LUT4")[0][1](d)
+            cases.append(("a budget ratio tampered in docs/device.md", D, f"(`{k[1]}`): LUT4 {b_lo:.2f} to",
+                          f"(`{k[1]}`): LUT4 {b_lo + 0.2:.2f} to", f"{k[1]}: x LUT4 (lowest)"))
         for what, rel, old, new, must in cases:
             dst = fresh()
             edit(dst, rel, old, new)
@@ -535,6 +659,23 @@ def self_test(root, specular):
                 failures.append(f"self-test: {what}: no message names '{must}': " + "; ".join(errs[:3]))
             else:
                 print(f"self-test: {what}: fails as it must: {errs[0]}")
+        # A labelled run's entry (fpga.sh --label) ahead of the default configuration's, with other
+        # figures: every default figure still reads the default's entry, so the copy passes.
+        dst = fresh()
+        p = os.path.join(dst, "docs/fpga_figures.json")
+        with open(p) as f:
+            fig = json.load(f)
+        default_hx8k = d.pnr("specular_stream", "HX8K")
+        fig["runs"].insert(0, dict(default_hx8k, config="other_label", fmax_mhz=default_hx8k["fmax_mhz"] + 7,
+                                   sb_lut4=default_hx8k["sb_lut4"] + 7))
+        with open(p, "w") as f:
+            json.dump(fig, f)
+        errs = check(dst, specular)
+        if errs:
+            failures.append("self-test: a labelled entry ahead of the default's changes what the check reads: "
+                            + "; ".join(errs[:3]))
+        else:
+            print("self-test: a labelled entry ahead of the default's: the default's figures still agree")
         # --update puts back what a tampered copy changed, each at its printed precision: a count,
         # a percentage and the lowest of a range.
         dst = fresh()

@@ -33,5 +33,12 @@ expect "must be a positive number of MHz \(got 'fast'\)" --freq-ecp5 fast
 expect "--out needs a value" --out
 expect "--setup-ii must be 1, 2, 4 or 8 \(got '3'\)" --top setup --setup-ii 3
 expect "--setup-ii needs --top setup or system \(got --top stream\)" --top stream --setup-ii 2
+expect "--label must be letters, digits and _ \(got 'b1 n64'\)" --top stream --label 'b1 n64'
+expect "--label must not be 'default'" --top stream --label default
+expect "--label and --phong-config both name the configuration: give one \(got --label x --phong-config n64\)" --top phong --phong-config n64 --label x
+expect "--label needs a value" --top stream --label
+expect "--record with --param CosAddrBits needs --label NAME" --top stream --param CosAddrBits=7 --record
+expect "--record with --param CoefBits needs --label NAME" --top stream --record --param MulTileBits=0 --param CoefBits=20
 expect "unknown argument '--bogus' \(allowed: .*--flatten, --no-flatten" --bogus
+expect "unknown argument .*--setup-ii, --label, --record, --help\)" --bogus
 exit $fail
