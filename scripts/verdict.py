@@ -175,8 +175,8 @@ def device_budgets(data, figs):
     None) by this run's measured errors (report_data's hardware section, n <= 1000), B1 and B3 only
     (B2 bounds the raw error, which report_data does not give; docs/device.md#configurations-per-budget
     records that no device configuration meets it); a labelled run of the record
-    (scripts/fpga.sh --label device_bK_...) by its label (the search that found it held it to bK; B1
-    implies B3)."""
+    (scripts/fpga.sh --label device_bK_n1000, roms/budget/budget_configs.json) by its label (the search
+    that found it held it to bK for n <= 1000; B1 implies B3)."""
     out = {}
     default = next((h for h in data.get("hardware", []) if h.get("name") == "default"), None)
     if default:
@@ -185,7 +185,7 @@ def device_budgets(data, figs):
         out[None] = [b for b in ("b1", "b3") if budget_error(dict(err, abs_raw=0.0), b) <= 1.0]
     for e in figs.get("ecp5_runs", []):
         c = e.get("config") or ""
-        if e.get("core") == "specular_stream" and c.startswith("device_b"):
+        if e.get("core") == "specular_stream" and c.startswith("device_b") and c.endswith("_n1000"):
             b = c.split("_")[1]
             out[c] = [b, "b3"] if b == "b1" else [b]
     return out
