@@ -159,8 +159,10 @@ target_phong_cross() {
   target_phong
   harness_params="-set Cross 1"
   probes+="
-p_len3 u_dut.u_setup.len_3
-p_tag3 u_dut.u_setup.tag_3"
+p_lenr1 u_dut.u_setup.gen_headroom.len_h
+p_tagr1 u_dut.u_setup.gen_headroom.tag_h
+p_lenr2 u_dut.u_setup.len_3
+p_tagr2 u_dut.u_setup.tag_3"
 }
 
 target_setup() {

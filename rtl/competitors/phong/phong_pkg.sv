@@ -16,10 +16,10 @@ package phong_pkg;
     mul_stages = 1 + specular_pkg::pipe_mul_stages(b_bits);
   endfunction
 
-  // phong_span_setup: the input register, differences / magnitudes / k, the headroom shift
-  // (the cross form only), the multiplier L * |N1| over the vec_bits-wide magnitude, the sign.
+  // phong_span_setup: the input register, differences / magnitudes / k, the headroom and its
+  // shift (the cross form only), the multiplier L * |N1| over the vec_bits-wide magnitude, the sign.
   function automatic int setup_stages(input int vec_bits, input bit headroom);
-    setup_stages = 2 + (headroom ? 1 : 0) + mul_stages(vec_bits) + 1;
+    setup_stages = 2 + (headroom ? 2 : 0) + mul_stages(vec_bits) + 1;
   endfunction
 
   // phong_dot: magnitudes, the nine products, the negation and two additions.

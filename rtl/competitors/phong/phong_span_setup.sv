@@ -20,7 +20,7 @@
 //   1            the span's ports registered
 //   2            N2 - N1, He - H1, |N1|, |H1| (|N2|, |He| with Headroom: parallel carry
 //                chains), k and L (priority encoder, shift), the zero flag
-//   (Headroom)   hn, hb (priority encoders) and the magnitudes and steps shifted by them
+//   (Headroom)   hn, hb (priority encoders); then the magnitudes and steps shifted by them
 //   3 ..         L * |N1| and L * |H1| (phong_mul), the steps shifted by k beside them
 //   last         the sign of N1, H1 applied and the rounding constant added (one carry chain)
 
@@ -73,7 +73,7 @@ module phong_span_setup #(
   // The rounding constant may not carry an accumulator over: RoundBits < VecBits - 1 keeps
   // A_i 2^hn + 2^(RoundBits-1) below 2^(AccBits-1) (docs/phong_hw.md#the-cancellation-free-form).
   if (VecBits < 2 || LenBits < 2 || RoundBits < 0 || RoundBits >= VecBits - 1 ||
-      Depth != 3 + (Headroom ? 1 : 0) + MulDepth) begin : gen_param_check
+      Depth != 3 + (Headroom ? 2 : 0) + MulDepth) begin : gen_param_check
     `SPEC_PARAM_ERROR("phong_span_setup: VecBits, LenBits >= 2, 0 <= RoundBits < VecBits - 1; phong_pkg disagrees")
   end
 
@@ -204,8 +204,9 @@ module phong_span_setup #(
         if (x[b]) head = (b >= VecBits - 1) ? '0 : HBits'(VecBits - 2 - b);
       end
     endfunction
+    // Stage h1: hn, hb (OR of the magnitudes, priority encoders), the span's values beside;
+    // stage h2: the shifts. Two stages, so that no stage holds an encoder and a shifter.
     logic [VecBits-1:0] orn, orh;
-    logic [HBits-1:0]   hn, hb;
     always_comb begin
       orn = '0;
       orh = '0;
@@ -213,26 +214,55 @@ module phong_span_setup #(
         orn = orn | magn_2[c] | magn2_2[c];
         orh = orh | magh_2[c] | (ConstH ? '0 : maghe_2[c]);
       end
-      hn = head(orn);
-      hb = head(orh);
+    end
+    logic [HBits-1:0]     hn_h, hb_h;
+    logic [VecBits-1:0]   magn_h [3], magh_h [3];
+    logic [3*AccBits-1:0] ea_h, eb_h, hc_h;
+    logic [LenBits-1:0]   l_h;
+    logic [2:0]           sgnn_h, sgnh_h;
+    logic                 zero_h;
+    logic [NBits-1:0]     n_h;
+    logic [LenBits-1:0]   len_h;
+    logic [CBits-1:0]     scale_h;
+    logic [TagBits-1:0]   tag_h;
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        hn_h    <= head(orn);
+        hb_h    <= head(orh);
+        for (int c = 0; c < 3; c++) begin
+          magn_h[c] <= magn_2[c];
+          magh_h[c] <= magh_2[c];
+        end
+        ea_h    <= ea_2;
+        eb_h    <= eb_2;
+        hc_h    <= hc_2;
+        l_h     <= l_2;
+        sgnn_h  <= sgnn_2;
+        sgnh_h  <= sgnh_2;
+        zero_h  <= zero_2;
+        n_h     <= n_2;
+        len_h   <= len_2;
+        scale_h <= scale_2;
+        tag_h   <= tag_2;
+      end
     end
     always_ff @(posedge clk_i) begin
       if (en_i) begin
         for (int c = 0; c < 3; c++) begin
-          magn_3[c] <= magn_2[c] << hn;
-          magh_3[c] <= magh_2[c] << hb;
-          ea_3[c*AccBits +: AccBits] <= ea_2[c*AccBits +: AccBits] << hn;
-          eb_3[c*AccBits +: AccBits] <= eb_2[c*AccBits +: AccBits] << hb;
-          hc_3[c*AccBits +: AccBits] <= hc_2[c*AccBits +: AccBits] << hb;
+          magn_3[c] <= magn_h[c] << hn_h;
+          magh_3[c] <= magh_h[c] << hb_h;
+          ea_3[c*AccBits +: AccBits] <= ea_h[c*AccBits +: AccBits] << hn_h;
+          eb_3[c*AccBits +: AccBits] <= eb_h[c*AccBits +: AccBits] << hb_h;
+          hc_3[c*AccBits +: AccBits] <= hc_h[c*AccBits +: AccBits] << hb_h;
         end
-        l_3     <= l_2;
-        sgnn_3  <= sgnn_2;
-        sgnh_3  <= sgnh_2;
-        zero_3  <= zero_2;
-        n_3     <= n_2;
-        len_3   <= len_2;
-        scale_3 <= scale_2;
-        tag_3   <= tag_2;
+        l_3     <= l_h;
+        sgnn_3  <= sgnn_h;
+        sgnh_3  <= sgnh_h;
+        zero_3  <= zero_h;
+        n_3     <= n_h;
+        len_3   <= len_h;
+        scale_3 <= scale_h;
+        tag_3   <= tag_h;
       end
     end
   end else begin : gen_no_headroom

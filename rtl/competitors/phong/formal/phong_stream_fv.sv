@@ -244,14 +244,16 @@ module phong_stream_fv #(
   // Strengthening invariants on the core's state (probes connected by
   // scripts/formal.sh phong). Left out (FV_PROPERTIES_ONLY) by the bounded and mutant runs.
   // ---------------------------------------------------------------------------------
-  localparam int Hr       = Cross ? 1 : 0;  // the span setup's headroom stage (Cross)
+  localparam int Hr       = Cross ? 2 : 0;  // the span setup's headroom stages (Cross)
   localparam int MulDepth = SpDepth - 3 - Hr;  // u_setup.u_side: the multiplier stages
   localparam int AccBits  = VecBits + LenBits;
   localparam int SideW    = 9 * AccBits + 6 + 1 + NBits + LenBits + CBits + TagBits;
 
   logic [SpDepth-1:0]           p_sp_vld;   // span-pipe stage j holds a span
-  logic [LenBits-1:0]           p_len1, p_len2, p_len3, p_lenh;  // p_len3, p_tag3: Cross only
-  logic [TagBits-1:0]           p_tag1, p_tag2, p_tag3, p_tagh;
+  logic [LenBits-1:0]           p_len1, p_len2, p_lenh;
+  logic [TagBits-1:0]           p_tag1, p_tag2, p_tagh;
+  logic [LenBits-1:0]           p_lenr1, p_lenr2;  // Cross only: the headroom stages
+  logic [TagBits-1:0]           p_tagr1, p_tagr2;
   logic [MulDepth*SideW-1:0]    p_side;     // {.., len, scale, tag} per multiplier stage
   logic [Depth-1:0]             p_vld;      // pixel stage j holds a pixel (0: accumulators)
   logic [Depth-1:1]             p_last;     // ... its span's last
@@ -265,7 +267,7 @@ module phong_stream_fv #(
   logic                         p_adv;      // ... its registered room: the pixel pipe's advance
 
   // The span pipe's len and tag per stage: 0 and 1 the registers of its stages 1 and 2, (Cross:
-  // 2 the headroom stage's,) then the multiplier stages' side line, the head.
+  // 2 and 3 the headroom stages',) then the multiplier stages' side line, the head.
   logic [SpDepth*LenBits-1:0] sp_len;
   logic [SpDepth*TagBits-1:0] sp_tag;
   assign sp_len[0 +: LenBits]                 = p_len1;
@@ -275,11 +277,13 @@ module phong_stream_fv #(
   assign sp_len[(SpDepth-1)*LenBits +: LenBits] = p_lenh;
   assign sp_tag[(SpDepth-1)*TagBits +: TagBits] = p_tagh;
   if (Cross) begin : gen_hr
-    assign sp_len[2*LenBits +: LenBits] = p_len3;
-    assign sp_tag[2*TagBits +: TagBits] = p_tag3;
+    assign sp_len[2*LenBits +: LenBits] = p_lenr1;
+    assign sp_tag[2*TagBits +: TagBits] = p_tagr1;
+    assign sp_len[3*LenBits +: LenBits] = p_lenr2;
+    assign sp_tag[3*TagBits +: TagBits] = p_tagr2;
   end else begin : gen_no_hr
-    logic unused_p3;
-    assign unused_p3 = ^{p_len3, p_tag3};
+    logic unused_pr;
+    assign unused_pr = ^{p_lenr1, p_tagr1, p_lenr2, p_tagr2};
   end
   for (genvar m = 1; m <= MulDepth; m++) begin : gen_side
     assign sp_len[(m+1+Hr)*LenBits +: LenBits] = p_side[(m-1)*SideW + TagBits + CBits +: LenBits];
