@@ -123,12 +123,14 @@ def section_sim(sim, rel):
                   "stream clocks per pixel", "max device rel. epicenter", "max device abs. error",
                   "checked M pixels/s"], rows)
     out += ["", "### The Phong competitor (`phong_stream`)", "",
-            "Every scene through the verilated `phong_stream` against its golden model and double per-pixel "
+            "Every scene through the verilated `phong_stream` in both forms, the textbook `n1000` and the "
+            "cancellation-free `cross_n1000`, against its golden model and double per-pixel "
             "Phong (same run; [phong_hw.md](phong_hw.md)).", ""]
-    rows = [[f"`{k}`", num(v["spans"]), num(v["pixels"]), num(v["mismatches"]),
+    rows = [[f"`{cfg}`", f"`{k}`", num(v["spans"]), num(v["pixels"]), num(v["mismatches"]),
              num(v["rel_violations"] + v["abs_violations"]), sci(v["abs_lsb"]), sci(v["rel_lsb"]), num(v["cycles"])]
-            for k, v in sim["phong"].items()]
-    out += table(["scene", "spans", "pixels", "mismatches", "budget violations", "max abs. error",
+            for cfg, key in (("n1000", "phong"), ("cross_n1000", "phong_cross"))
+            for k, v in sim.get(key, {}).items()]
+    out += table(["configuration", "scene", "spans", "pixels", "mismatches", "budget violations", "max abs. error",
                   "max rel. epicenter error", "cycles"], rows)
     out += ["", "### The system (`specular_system`)", "",
             "Geometry spans through the setup and the stream in hardware at `SetupII = 1` (same run; "
