@@ -124,6 +124,7 @@ def sim_total(d, key):
 R = "README.md"
 F = "rtl/fpga/README.md"
 D = "docs/device.md"  # its FPGA cost per error budget (#configurations-per-budget)
+P = "docs/phong_hw.md"  # the verdict (#verdict)
 
 
 def budget_range(label, what):
@@ -145,6 +146,44 @@ def budget_sentence(label):
     return (D, r"\(`" + label + r"`\): LUT4 (\S+) to (\S+) x, flip-flops (\S+) to (\S+) x, DSPs (\S+) to (\S+) x, "
                r"block RAMs (\S+) to (\S+) x, Fmax (\S+) to (\S+) x",
             sum((budget_range(label, w) for w in ("LUT4", "FFs", "DSPs", "BRAMs", "Fmax")), []))
+
+_VERDICT = {}
+
+
+def verdict_rows(d):
+    """scripts/verdict.py on the record (docs/fpga_figures.json): every configuration at the budget it
+    was built for (the Phong configurations by their names, roms/phong/phong_configs.cmake; the
+    device's by their labels; B1 implies B3), spans of 1 and 8 pixels. Cached per Data."""
+    key = id(d)
+    if key not in _VERDICT:
+        sys.path.insert(0, os.path.join(d.root, "scripts"))
+        import verdict  # scripts/verdict.py
+        phong = {"n1000": ["b1", "b3"], "cross_n1000": ["b1", "b3"], "b2_n1000": ["b2"], "cross_b2_n1000": ["b2"],
+                 "b3_n1000": ["b3"], "cross_b3_n1000": ["b3"]}
+        dev = {None: ["b1", "b3"], "device_b1_n1000": ["b1", "b3"], "device_b3_n1000": ["b3"]}
+        pts = verdict.load_points(d.fpga, {}, dev, list(phong))
+        for p in pts:
+            if p["kind"] == "phong":
+                p["meets"] = phong[p["name"].split()[1]]
+        _VERDICT[key] = verdict.verdict(pts, [("1", 1, None), ("8", 8, None)])
+    return _VERDICT[key]
+
+
+def verdict_figure(budget, span, field):
+    return lambda d: verdict_rows(d)[budget][0 if span == 1 else 1][field]
+
+
+def phong_entry(d, config):
+    return next(e for e in d.fpga["ecp5_runs"] if e.get("core") == "phong_stream" and e.get("config") == config)
+
+
+def device_entry(d, config):
+    return next(e for e in d.fpga["ecp5_runs"] if e.get("core") == "specular_stream" and e.get("config") == config)
+
+
+def positions(e):
+    return e["lut4"] + 2 * e["ccu2c"]
+
 
 # README.md's Results table: one figure per row (a table cell is "| ... |": the bars are escaped).
 FIGURES = [
@@ -182,6 +221,34 @@ FIGURES = [
       ("specular_stream UP5K Fmax", lambda d: d.pnr("specular_stream", "UP5K")["fmax_mhz"])]),
     ranged(R, r"per-pixel Phong \(SLEEF\), per scene \| (\S+) to (\S+) x as fast \|",
            "software: device x phong_sleef, both at the best instruction set", lambda d, x: d.best(x)),
+    (R, r"over the cancellation-free per-pixel Phong core \| (\S+) x \((\S+) x at each core's clock\); with the "
+        r"setup in hardware (\S+) x on spans of 8 pixels or more \|",
+     [("B1 verdict: host-setup device / best Phong, px per clock per part", verdict_figure("b1", 1, "host_ratio")),
+      ("B1 verdict: the same at each core's clock", verdict_figure("b1", 1, "host_ratio_at_clock")),
+      ("B1 verdict: hardware-setup device / best Phong, spans of 8", verdict_figure("b1", 8, "hw_ratio"))]),
+    (P, r"at B1 the device's stream gives (\S+) times the pixels per clock per part of the cancellation-free core "
+        r"\((\S+) times at each core's clock\), at B3 (\S+) times \((\S+) times\)",
+     [("B1 verdict ratio", verdict_figure("b1", 1, "host_ratio")),
+      ("B1 verdict ratio at clock", verdict_figure("b1", 1, "host_ratio_at_clock")),
+      ("B3 verdict ratio", verdict_figure("b3", 1, "host_ratio")),
+      ("B3 verdict ratio at clock", verdict_figure("b3", 1, "host_ratio_at_clock"))]),
+    (P, r"at B1 it uses (\S+) times fewer LUT4 positions, (\S+) times fewer flip-flops and (\S+) times fewer "
+        r"MULT18X18D",
+     [("B1: cross / device LUT4 positions", lambda d: positions(phong_entry(d, "cross_n1000"))
+       / positions(device_entry(d, "device_b1_n1000"))),
+      ("B1: cross / device flip-flops", lambda d: phong_entry(d, "cross_n1000")["ffs"]
+       / device_entry(d, "device_b1_n1000")["ffs"]),
+      ("B1: cross / device MULT18X18D", lambda d: phong_entry(d, "cross_n1000")["mult18x18d"]
+       / device_entry(d, "device_b1_n1000")["mult18x18d"])]),
+    (P, r"from (\S+) times at one pixel per span to (\S+) times on spans of 8 pixels or more",
+     [("B1: hardware-setup device / Phong, spans of 1", verdict_figure("b1", 1, "hw_ratio")),
+      ("B1: hardware-setup device / Phong, spans of 8", verdict_figure("b1", 8, "hw_ratio"))]),
+    (P, r"the cancellation-free core takes (\S+) MULT18X18D where the textbook core takes (\S+), and clocks at (\S+) "
+        r"MHz where the textbook core clocks at (\S+) MHz",
+     [("cross_n1000 MULT18X18D", lambda d: phong_entry(d, "cross_n1000")["mult18x18d"]),
+      ("n1000 MULT18X18D", lambda d: phong_entry(d, "n1000")["mult18x18d"]),
+      ("cross_n1000 Fmax", lambda d: phong_entry(d, "cross_n1000")["fmax_mhz"]),
+      ("n1000 Fmax", lambda d: phong_entry(d, "n1000")["fmax_mhz"])]),
 ] + [budget_sentence(label) for label in ("device_b1_n1000", "device_b1_n128", "device_b3_n1000")]
 
 # Markdown tables checked cell by cell: (document, header start, label, keys, {column: value
@@ -368,6 +435,7 @@ NOT_MEASURED = [
     r"\d+-bit SB_MAC16 tiles",                    # the UP5K's multiplier style (docs/pipeline.md)
     r"\d+ x \d+ tile products",                   # the tile size of that style
     r"CABGA381 -6",                              # an ECP5 part's package and speed grade
+    r"spans of 8 pixels or more",                # a span length of the verdict (scripts/verdict.py)
 ]
 
 
@@ -441,7 +509,7 @@ def check(root, specular=None, listing=False, updates=None):
     source gives a value to print."""
     errors = []
     texts = {}
-    for doc in {R, F, D}:
+    for doc in {R, F, D, P}:
         with open(os.path.join(root, doc)) as f:
             texts[doc] = f.read()
     try:
@@ -590,7 +658,8 @@ def self_test(root, specular):
         def fresh():
             dst = os.path.join(tmp, "repo")
             shutil.rmtree(dst, ignore_errors=True)
-            for rel in (R, F, D, "docs/fpga_figures.json", "docs/measured/sim.json", "docs/measured/scene_bench.json"):
+            for rel in (R, F, D, P, "docs/fpga_figures.json", "docs/measured/sim.json", "docs/measured/scene_bench.json",
+                        "scripts/verdict.py", "scripts/fpga_parts.py"):
                 os.makedirs(os.path.dirname(os.path.join(dst, rel)), exist_ok=True)
                 shutil.copy(os.path.join(root, rel), os.path.join(dst, rel))
             return dst
