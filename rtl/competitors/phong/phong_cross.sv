@@ -95,21 +95,15 @@ module phong_cross #(
   localparam int Depth    = phong_pkg::cross_stages(NormBits, RcpFracBits, UBits, RcpBits, GFracBits,
                                                     LogFracBits, GBits);
 
-  if (RcpAddrBits < 3 || RcpAddrBits + RcpFracBits > NormBits || RcpFracBits < 2 || Sh1 < 0 || Sh2 < 0 ||
+  if (PBits > 64 || RcpAddrBits < 3 || RcpAddrBits + RcpFracBits > NormBits || RcpFracBits < 2 || Sh1 < 0 || Sh2 < 0 ||
       GAddrBits + GFracBits > SBits || LogAddrBits + LogFracBits > CosFrac || Pf < CosFrac + 2 ||
       ProdBits < Sh1 + SBits + 1 || GFracBits < 1 || LogFracBits < 1 || UBits < 4 ||
       MulN + 2 + T1 < MulDm || T1 < MulRt + 2 || T1 < MulU + 3 ||
       Depth != 2 + MulN + 2 + T1 + MulX + 3 + MulT + 2 + MulG + 1) begin : gen_param_check
-    `SPEC_PARAM_ERROR("phong_cross: the fields of PhongFormat::validate, Sh1, Sh2 >= 0; phong_pkg disagrees")
+    `SPEC_PARAM_ERROR("phong_cross: 2 OpBits <= 64, the fields of PhongFormat::validate, Sh1, Sh2 >= 0; phong_pkg disagrees")
   end
 
   // ---- stage 1: exponents ----
-  function automatic logic [EBits-1:0] even_exp(input logic [PBits-1:0] x);
-    even_exp = '0;
-    for (int b = 0; b < PBits; b++) begin
-      if (x[b]) even_exp = EBits'(b & ~1);
-    end
-  endfunction
   function automatic logic [EdBits-1:0] lead(input logic [DBits-1:0] x);
     lead = '0;
     for (int b = 0; b < DBits - 1; b++) begin
@@ -127,8 +121,8 @@ module phong_cross #(
     if (en_i) begin
       na_1   <= na_i;
       nb_1   <= nb_i;
-      ea_1   <= even_exp(na_i);
-      eb_1   <= even_exp(nb_i);
+      ea_1   <= EBits'(phong_pkg::even_exp(64'(na_i)));
+      eb_1   <= EBits'(phong_pkg::even_exp(64'(nb_i)));
       ed_1   <= lead(d_i);
       d_1    <= d_i;
       u_1    <= u_i;

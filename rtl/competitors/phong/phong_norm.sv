@@ -46,18 +46,12 @@ module phong_norm #(
   localparam int StepLen = phong_pkg::newton_stages(NormBits);
   localparam int Depth   = phong_pkg::norm_stages(NormBits, Newton);
 
-  if (RsqrtAddrBits < 3 || RsqrtAddrBits > NormBits || Newton < 0 || Newton > 2 ||
+  if (PBits > 64 || RsqrtAddrBits < 3 || RsqrtAddrBits > NormBits || Newton < 0 || Newton > 2 ||
       Depth != 2 + MulN + 2 + Newton * StepLen + MulC + 1 || StepLen != 2 * MulN + 1 + MulV) begin : gen_param_check
-    `SPEC_PARAM_ERROR("phong_norm: 3 <= RsqrtAddrBits <= NormBits, Newton in 0..2; phong_pkg disagrees")
+    `SPEC_PARAM_ERROR("phong_norm: 2 OpBits <= 64, 3 <= RsqrtAddrBits <= NormBits, Newton in 0..2; phong_pkg disagrees")
   end
 
   // ---- stage 1: exponents ----
-  function automatic logic [EBits-1:0] even_exp(input logic [PBits-1:0] x);
-    even_exp = '0;
-    for (int b = 0; b < PBits; b++) begin
-      if (x[b]) even_exp = EBits'(b & ~1);
-    end
-  endfunction
 
   logic [PBits-1:0]        na_1, nb_1;
   logic [EBits-1:0]        ea_1, eb_1;
@@ -67,8 +61,8 @@ module phong_norm #(
     if (en_i) begin
       na_1   <= na_i;
       nb_1   <= nb_i;
-      ea_1   <= even_exp(na_i);
-      eb_1   <= even_exp(nb_i);
+      ea_1   <= EBits'(phong_pkg::even_exp(64'(na_i)));
+      eb_1   <= EBits'(phong_pkg::even_exp(64'(nb_i)));
       d_1    <= d_i;
       dpos_1 <= !d_i[DBits-1] && d_i != '0;
     end

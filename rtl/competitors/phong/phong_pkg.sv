@@ -8,6 +8,15 @@
 
 package phong_pkg;
 
+  // The even exponent of x (the largest even e with 2^e <= x; 0 for x = 0): where the
+  // mantissas of |a|^2 and |b|^2 start (phong_norm, phong_cross; x holds 2 op_bits <= 60 bits).
+  function automatic int even_exp(input logic [63:0] x);
+    even_exp = 0;
+    for (int b = 0; b < 64; b++) begin
+      if (x[b]) even_exp = b & ~1;
+    end
+  endfunction
+
   // Stage 0 of the pixel pipeline: the accumulators A_i, B_i (phong_stream).
   localparam int AccStages = 1;
 
