@@ -299,7 +299,9 @@ class Report:
         budget (verdict_b1.png, ...) and verdict.json."""
         figs = hw_plane.load_figures(os.path.join(ROOT, "docs", "fpga_figures.json"))
         errors = {c: verdict.worst_errors(j) for c, j in getattr(self, "phong", {}).items()}
-        pts = verdict.load_points(figs, errors, verdict.device_budgets(data, figs), hw_plane.PHONG_CONFIGS)
+        search = hw_plane.load_figures(os.path.join(ROOT, "docs", "measured", "device_search.json"))
+        pts = verdict.load_points(figs, errors, verdict.device_budgets(data, figs), hw_plane.PHONG_CONFIGS,
+                                  verdict.device_errors(data, search))
         res = verdict.verdict(pts, verdict.report_spans(sim, hw_plane.setup_ii_sim()))
         with open(os.path.join(self.out, "verdict.json"), "w") as f:
             json.dump({"points": [{k: v for k, v in p.items()} for p in pts], "verdict": res}, f, indent=1)

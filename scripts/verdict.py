@@ -139,20 +139,42 @@ def ecp5_entry(figs, core, config=None, setup_ii=None, dsp=True):
     return None
 
 
-def load_points(figs, phong_errors, device_meets, phong_configs):
+def device_errors(data, search):
+    """Config label -> the worst {rel_lsb, abs_lsb, abs_raw} of a device stream configuration for
+    n <= 1000, for the plots: the default build (None) from this run's report_data (no raw error
+    there), a labelled budget configuration from the device search that found it
+    (docs/measured/device_search.json: the run of its bank set at its widths)."""
+    out = {}
+    default = next((h for h in data.get("hardware", []) if h.get("name") == "default"), None)
+    if default:
+        out[None] = {"rel_lsb": max(default["max_rel_epicenter_lsb"]), "abs_lsb": max(default["max_abs_lobe"]),
+                     "abs_raw": None}
+    for r in (search or {}).get("runs", []):
+        best = r.get("best")
+        if not best or r.get("n_max") != 1000:
+            continue
+        same = [x for x in r.get("runs", []) if x.get("meets") and all(x.get(k) == v for k, v in best.items())]
+        if same:
+            out[f"device_{r['budget']}_n1000"] = {k: same[0][k] for k in ("rel_lsb", "abs_lsb", "abs_raw")}
+    return out
+
+
+def load_points(figs, phong_errors, device_meets, phong_configs, device_errs=None):
     """The verdict's points from the record (figs), this run's Phong errors (config -> worst
     {rel_lsb, abs_lsb, abs_raw} over n <= 1000) and the device's budgets (config label ->
-    [budgets met]; None: the default build)."""
+    [budgets met]; None: the default build) and errors for the plots (device_errors)."""
     pts = []
+    device_errs = device_errs or {}
     for label, meets in device_meets.items():
         e = ecp5_entry(figs, "specular_stream", label)
         name = "device stream" + (f" {label}" if label else "") + " (setup on a host)"
-        pts.append({"name": name, "kind": "device", "ecp5": e, "meets": meets, "setup_ii": None})
+        pts.append({"name": name, "kind": "device", "ecp5": e, "meets": meets, "setup_ii": None,
+                    "err": device_errs.get(label)})
     for k in (1, 2, 4, 8):
         e = ecp5_entry(figs, "specular_system", None, None if k == 1 else k)
         if e:
             pts.append({"name": f"device system SetupII={k} (setup in hardware)", "kind": "device", "ecp5": e,
-                        "meets": device_meets.get(None, []), "setup_ii": k})
+                        "meets": device_meets.get(None, []), "setup_ii": k, "err": device_errs.get(None)})
     for c in phong_configs:
         if c.endswith("_consth"):
             continue  # constant H serves only a directional light and a distant viewer
@@ -255,7 +277,8 @@ def budget_text(b):
 
 def plot(points, out_dir, plt):
     """One figure per budget: every point's worst error as a fraction of the budget's bound against
-    its share of an LFE5U-85F (the points without an error measured here are left out)."""
+    its share of an LFE5U-85F (a point without the figure the budget needs is left out: the default
+    device build at B2, whose raw error report_data does not give)."""
     written = []
     for b in BUDGETS:
         fig, ax = plt.subplots(figsize=(7.5, 5))
