@@ -281,7 +281,7 @@ def plot(points, out_dir, plt):
     device build at B2, whose raw error report_data does not give)."""
     written = []
     for b in BUDGETS:
-        fig, ax = plt.subplots(figsize=(7.5, 5))
+        fig, ax = plt.subplots(figsize=(10, 6))
         any_pt = False
         for i, p in enumerate(points):
             e = p.get("ecp5")
@@ -302,7 +302,7 @@ def plot(points, out_dir, plt):
         ax.set_yscale("log")
         ax.set_xlabel("share of an LFE5U-85F on the binding resource (ECP5, MULT18X18D tiles)")
         ax.set_ylabel(f"worst error / {b.upper()} bound, n = 1..1000")
-        ax.set_title(f"{b.upper()}: {budget_text(b)}")
+        ax.set_title(f"{b.upper()}: {budget_text(b)}", fontsize=10)
         ax.grid(True, which="both", alpha=0.3)
         fig.tight_layout()
         path = os.path.join(out_dir, f"verdict_{b}.png")
