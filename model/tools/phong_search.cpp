@@ -220,9 +220,11 @@ int main(int argc, char** argv) {
       ->check(CLI::Range(1, 1000))
       ->capture_default_str();
   app.add_flag("--eval", eval, "measure the given configuration on every n instead of searching");
+  std::string names;
+  for (const auto& p : presets()) names += (names.empty() ? "" : ", ") + p.first;
   app.add_option("--measure", measure,
-                 "measure this preset on n = 1, 1+S, ..., 1000 (one seed) instead of searching: "
-                 "n1000, n128, n64, n1000_consth, n64_consth");
+                 "measure this configuration of roms/phong/phong_configs.cmake on n = 1, 1+S, ..., 1000 (one "
+                 "seed) instead of searching: " + names);
   app.add_option("--n-step", n_step, "with --measure: the step S of the n grid (1..999)")->capture_default_str();
   app.add_option("--seed", seed, "seed of the sweep's random frames")->capture_default_str();
   app.add_option("--json", json_out, "write the result to this file");
