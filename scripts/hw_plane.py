@@ -15,6 +15,7 @@ OUT/report_data.json, OUT/phong_*.json and OUT/hw_plane_cells.json.
 """
 import json
 import os
+import re
 import subprocess
 import time
 
@@ -22,10 +23,17 @@ import fpga_parts  # scripts/fpga_parts.py, beside this file
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
-# The Phong configurations of docs/phong_hw.md (names of roms/phong/phong_configs.cmake): the
-# textbook form's presets, and both forms per budget (n <= 1000; docs/phong_hw.md#budgets).
-PHONG_CONFIGS = ("n1000", "n128", "n64", "n1000_consth", "cross_n1000", "b2_n1000", "b3_n1000",
-                 "cross_b2_n1000", "cross_b3_n1000")
+def phong_configs(path=os.path.join(ROOT, "roms", "phong", "phong_configs.cmake")):
+    """The Phong configurations of docs/phong_hw.md and the budget each is built for, from the
+    fragment phong_romgen writes (model/device/phong_model.hpp's phong_configs()): name -> budget."""
+    with open(path) as f:
+        text = f.read()
+    names = re.search(r"set\(PHONG_CONFIGS ([^)]*)\)", text).group(1).split()
+    return {n: re.search(rf"set\(PHONG_CONFIG_{n}_BUDGET (\w+)\)", text).group(1) for n in names}
+
+
+# Every Phong configuration is a point of the plane (names of roms/phong/phong_configs.cmake).
+PHONG_CONFIGS = tuple(phong_configs())
 # The n ranges of the plane: 1..64, 1..128, 1..1000 (the ranges the Phong presets serve).
 RANGES = (64, 128, 1000)
 REL_BUDGET, ABS_BUDGET = 1e-3, 1e-2  # 0.10 % + 1 LSB in the epicenter, 0.01 C over the lobe

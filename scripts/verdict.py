@@ -125,12 +125,12 @@ def verdict(points, spans):
     return res
 
 
-def ecp5_entry(figs, core, config=None, setup_ii=None, dsp=True):
-    """The docs/fpga_figures.json ECP5 entry of a core: a placed and routed run (ecp5_runs) first,
-    else the synthesis counts (synthesis_runs, part ECP5); with MULT18X18D tiles when dsp."""
+def ecp5_entry(figs, core, config=None, setup_ii=None):
+    """The docs/fpga_figures.json ECP5 entry of a core with MULT18X18D tiles: a placed and routed run
+    (ecp5_runs) first, else the synthesis counts (synthesis_runs, part ECP5)."""
     for e in figs.get("ecp5_runs", []):
         if (e.get("core") == core and e.get("config") == config and e.get("setup_ii") == setup_ii
-                and (not dsp or e.get("mult18x18d", 0) > 0 or core != "specular_stream")):
+                and e.get("multipliers", "").startswith("MULT18X18D")):
             return dict(e, placed=True)
     for e in figs.get("synthesis_runs", []):
         if (e.get("core") == core and e.get("part") == "ECP5" and e.get("config") == config
@@ -192,24 +192,30 @@ def worst_errors(phong_json, n_max=1000):
     return out
 
 
+# The budgets a configuration built for one meets: B1's bounds are B3's or tighter.
+IMPLIED = {"b1": ["b1", "b3"], "b2": ["b2"], "b3": ["b3"]}
+
+
+def labelled_device_budgets(figs):
+    """The device's budget configurations in the record (scripts/fpga.sh --label device_bK_n1000,
+    roms/budget/budget_configs.json): label -> the budgets met (the search that found it held it to
+    bK for n <= 1000)."""
+    return {e["config"]: IMPLIED[e["config"].split("_")[1]] for e in figs.get("ecp5_runs", [])
+            if e.get("core") == "specular_stream" and (e.get("config") or "").startswith("device_b")
+            and e["config"].endswith("_n1000")}
+
+
 def device_budgets(data, figs):
     """Config label -> the budgets a device stream configuration meets: the default build (label
     None) by this run's measured errors (report_data's hardware section, n <= 1000), B1 and B3 only
     (B2 bounds the raw error, which report_data does not give; docs/device.md#configurations-per-budget
-    records that no device configuration meets it); a labelled run of the record
-    (scripts/fpga.sh --label device_bK_n1000, roms/budget/budget_configs.json) by its label (the search
-    that found it held it to bK for n <= 1000; B1 implies B3)."""
+    records that no device configuration meets it); the labelled ones by labelled_device_budgets."""
     out = {}
     default = next((h for h in data.get("hardware", []) if h.get("name") == "default"), None)
     if default:
-        err = {"rel_lsb": max(default["max_rel_epicenter_lsb"]), "abs_lsb": max(default["max_abs_lobe"]),
-               "abs_raw": None}
-        out[None] = [b for b in ("b1", "b3") if budget_error(dict(err, abs_raw=0.0), b) <= 1.0]
-    for e in figs.get("ecp5_runs", []):
-        c = e.get("config") or ""
-        if e.get("core") == "specular_stream" and c.startswith("device_b") and c.endswith("_n1000"):
-            b = c.split("_")[1]
-            out[c] = [b, "b3"] if b == "b1" else [b]
+        err = {"rel_lsb": max(default["max_rel_epicenter_lsb"]), "abs_lsb": max(default["max_abs_lobe"])}
+        out[None] = [b for b in ("b1", "b3") if budget_error(err, b) <= 1.0]
+    out.update(labelled_device_budgets(figs))
     return out
 
 
@@ -312,15 +318,31 @@ def plot(points, out_dir, plt):
     return written
 
 
+def record_points(figs, configs):
+    """The points of the record alone, each configuration at the budget it was built for (no error
+    measured): the device's default build (B1) and labelled runs, and the Phong configurations
+    for n <= 1000 of configs (name -> budget, hw_plane.phong_configs())."""
+    phong = {c: IMPLIED[b] for c, b in configs.items() if c.endswith("n1000")}
+    dev = labelled_device_budgets(figs)
+    dev[None] = IMPLIED["b1"]  # the default build meets B1 (docs/device.md)
+    pts = load_points(figs, {}, dev, list(phong))
+    for p in pts:
+        if p["kind"] == "phong":
+            p["meets"] = phong[p["name"].split()[1]]
+    return pts
+
+
 def main():
     import argparse
-    ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    import hw_plane  # scripts/hw_plane.py: the Phong configurations and their budgets
+    ap = argparse.ArgumentParser(description="The verdict of the record alone (every configuration at the budget "
+                                             "it was built for); make report measures the errors instead.")
     ap.add_argument("--figures", default=os.path.join(ROOT, "docs", "fpga_figures.json"))
     ap.add_argument("--json", help="write the verdict as JSON to FILE")
     a = ap.parse_args()
     with open(a.figures) as f:
         figs = json.load(f)
-    pts = load_points(figs, {}, {None: ["b1", "b3"]}, [])
+    pts = record_points(figs, hw_plane.phong_configs())
     res = verdict(pts, [(str(m), m, None) for m in SPAN_LENGTHS])
     if a.json:
         with open(a.json, "w") as f:

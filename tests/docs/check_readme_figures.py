@@ -158,13 +158,9 @@ def verdict_rows(d):
     if key not in _VERDICT:
         sys.path.insert(0, os.path.join(d.root, "scripts"))
         import verdict  # scripts/verdict.py
-        phong = {"n1000": ["b1", "b3"], "cross_n1000": ["b1", "b3"], "b2_n1000": ["b2"], "cross_b2_n1000": ["b2"],
-                 "b3_n1000": ["b3"], "cross_b3_n1000": ["b3"]}
-        dev = {None: ["b1", "b3"], "device_b1_n1000": ["b1", "b3"], "device_b3_n1000": ["b3"]}
-        pts = verdict.load_points(d.fpga, {}, dev, list(phong))
-        for p in pts:
-            if p["kind"] == "phong":
-                p["meets"] = phong[p["name"].split()[1]]
+        import hw_plane  # scripts/hw_plane.py: the configurations and their budgets
+        pts = verdict.record_points(d.fpga, hw_plane.phong_configs(os.path.join(d.root, "roms", "phong",
+                                                                                "phong_configs.cmake")))
         _VERDICT[key] = verdict.verdict(pts, [("1", 1, None), ("8", 8, None)])
     return _VERDICT[key]
 
@@ -659,7 +655,8 @@ def self_test(root, specular):
             dst = os.path.join(tmp, "repo")
             shutil.rmtree(dst, ignore_errors=True)
             for rel in (R, F, D, P, "docs/fpga_figures.json", "docs/measured/sim.json", "docs/measured/scene_bench.json",
-                        "scripts/verdict.py", "scripts/fpga_parts.py"):
+                        "scripts/verdict.py", "scripts/fpga_parts.py", "scripts/hw_plane.py",
+                        "roms/phong/phong_configs.cmake"):
                 os.makedirs(os.path.dirname(os.path.join(dst, rel)), exist_ok=True)
                 shutil.copy(os.path.join(root, rel), os.path.join(dst, rel))
             return dst

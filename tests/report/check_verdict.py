@@ -77,7 +77,8 @@ close(res["b1"][0]["hw_ratio"], (0.25 / 0.5) / 2, "system at m = 1: 1/4 px/clock
 with open(os.path.join(ROOT, "docs", "fpga_figures.json")) as f:
     figs = json.load(f)
 lines = []
-pts = verdict.load_points(figs, {}, {None: ["b1", "b3"]}, ["n1000"])
+import hw_plane  # noqa: E402  (scripts/hw_plane.py: the configurations and their budgets)
+pts = verdict.record_points(figs, hw_plane.phong_configs())
 verdict.write(lines.append, verdict.verdict(pts, [(str(m), m, None) for m in verdict.SPAN_LENGTHS]), pts)
 text = "\n".join(lines)
 for b in verdict.BUDGETS:

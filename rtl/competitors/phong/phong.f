@@ -10,6 +10,6 @@ rtl/competitors/phong/phong_span_setup.sv
 rtl/competitors/phong/phong_dot.sv
 rtl/competitors/phong/phong_norm.sv
 rtl/competitors/phong/phong_exp2.sv
-rtl/competitors/phong/phong_pow.sv
+rtl/competitors/phong/phong_log2.sv
 rtl/competitors/phong/phong_cross.sv
 rtl/competitors/phong/phong_stream.sv

@@ -48,17 +48,16 @@ package phong_pkg;
                   + mul_stages(norm_bits) + 1;
   endfunction
 
-  // phong_exp2 (both forms): n*w; the exp2 ROM read, du*t, rounding, u - step, the shift;
+  // phong_exp2 (both forms, after w): n*w; the exp2 ROM read, du*t, rounding, u - step, the shift;
   // scale*p and rounding.
   function automatic int exp2_stages(input int w_bits, input int exp_frac_bits, input int exp_bits);
     exp2_stages = mul_stages(w_bits) + 1 + mul_stages(exp_frac_bits) + 3 + mul_stages(exp_bits + 1) + 1;
   endfunction
 
-  // phong_pow: the exponent of c, the mantissa, the log2 ROM read, dv*t, rounding, v + step,
-  // w; then phong_exp2.
-  function automatic int pow_stages(input int log_frac_bits, input int w_bits, input int exp_frac_bits,
-                                    input int exp_bits);
-    pow_stages = 3 + mul_stages(log_frac_bits) + 3 + exp2_stages(w_bits, exp_frac_bits, exp_bits);
+  // phong_log2 (the textbook form's c -> w): the exponent of c, the mantissa, the log2 ROM
+  // read, dv*t, rounding, v + step, w.
+  function automatic int log2_stages(input int log_frac_bits);
+    log2_stages = 3 + mul_stages(log_frac_bits) + 3;
   endfunction
 
   // phong_cross (the cancellation-free form): the bits of w = -log2 cos, LogBits fraction

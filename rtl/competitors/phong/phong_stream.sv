@@ -8,8 +8,9 @@
 //   N_i = N1 + (N2 - N1) i / l,  H_i = H1 + (He - H1) i / l,
 // bit-identical to model/device/phong_model.hpp (PhongFormat: the parameters below have its
 // fields' names and defaults; the cross form's fields those of PhongFormat::cross()).
-// Cross = 0: the textbook form, c = N.H / sqrt(|N|^2 |H|^2) (phong_norm, phong_pow); Cross = 1:
-// the cancellation-free form (phong_cross, phong_exp2; docs/phong_hw.md#the-cancellation-free-form).
+// Cross = 0: the textbook form, c = N.H / sqrt(|N|^2 |H|^2) and w = -log2 c (phong_norm,
+// phong_log2); Cross = 1: the cancellation-free form, w from sin^2 or cos^2 (phong_cross,
+// docs/phong_hw.md#the-cancellation-free-form). Both: 2^-nw and the scale (phong_exp2).
 //
 // Ports: clk_i, rst_ni (asynchronous, active low: drops every span and pixel in flight);
 // the span side geo_* (AXI4-Stream rules); the pixel side px_* of specular_stream.
@@ -21,8 +22,8 @@
 //   span pipe      phong_span_setup: L = l 2^k, A0 = L N1, steps (N2 - N1) 2^k, the same for H
 //   stage 0        the lerp accumulators A_i = A0 + i EA, B_i (control unit: specular_control,
 //                  pixel counter: specular_down_counter), the span's n, scale, zero flag, tag
-//   then           phong_dot (a.b, |a|^2, |b|^2; a x b with Cross), phong_norm (c) and phong_pow
-//                  (scale c^n), or with Cross phong_cross (w = -log2 c) and phong_exp2 (scale 2^-nw)
+//   then           phong_dot (a.b, |a|^2, |b|^2; a x b with Cross), phong_norm (c) and phong_log2
+//                  (w = -log2 c) or with Cross phong_cross (w), then phong_exp2 (scale 2^-nw)
 //   output buffer  specular_out_buf
 // Stage counts: phong_pkg (docs/phong_hw.md#pipeline). One pixel per clock sustained, l = 0
 // spans back to back included: the control takes the span pipe's head on the edge at which
@@ -80,13 +81,11 @@ module phong_stream #(
   localparam int AccBits   = VecBits + LenBits;
   localparam int WBits     = Cross ? phong_pkg::cross_w_bits(OpBits, LogBits) : $clog2(CosFrac + 2) + LogBits;
   localparam int DotStages = phong_pkg::dot_stages(OpBits);
-  // The stages from the dot products to w (phong_norm + phong_pow's log2 part, or phong_cross)
-  // and the pipeline.
+  // The stages from the dot products to w (phong_norm and phong_log2, or phong_cross) and the
+  // pipeline.
   localparam int ToWStages = Cross ? phong_pkg::cross_stages(NormBits, RcpFracBits, UBits, RcpBits, GFracBits,
                                                              LogFracBits, GBits)
-                                   : phong_pkg::norm_stages(NormBits, Newton)
-                                     + phong_pkg::pow_stages(LogFracBits, WBits, ExpFracBits, ExpBits)
-                                     - phong_pkg::exp2_stages(WBits, ExpFracBits, ExpBits);
+                                   : phong_pkg::norm_stages(NormBits, Newton) + phong_pkg::log2_stages(LogFracBits);
   localparam int PipeDepth = phong_pkg::pipe_depth(OpBits, ToWStages,
                                                     phong_pkg::exp2_stages(WBits, ExpFracBits, ExpBits));
 
@@ -217,18 +216,10 @@ module phong_stream #(
   phong_dot #(.AccBits (AccBits), .OpBits (OpBits), .Cross (Cross), .MulTileBits (MulTileBits)) u_dot (
     .clk_i (clk_i), .en_i (adv), .a_i (a_q), .b_i (b_q), .d_o (d), .na_o (na), .nb_o (nb), .u_o (u));
 
-  // The span's n, scale and zero flag beside the pixel up to the power; the tag to the end.
-  logic [NBits-1:0] n_p;
-  logic [CBits-1:0] scale_p;
-  logic             zero_p;
-  logic [TagBits-1:0] tag_out;
-  logic [CBits-1:0] intensity;
-  specular_delay #(.Width (TagBits), .Depth (PipeDepth - 1)) u_tag_line (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (tag0), .q_o (tag_out));
-
+  // w = -log2 c and the zero flag of the form.
+  logic [WBits-1:0] w;
+  logic             zero_w;
   if (Cross) begin : gen_cross
-    logic [WBits-1:0] w;
-    logic             zero_w;
     phong_cross #(
       .OpBits      (OpBits),
       .NormBits    (NormBits),
@@ -259,27 +250,6 @@ module phong_stream #(
       .w_o    (w),
       .zero_o (zero_w)
     );
-    specular_delay #(.Width (NBits + CBits + 1), .Depth (DotStages + ToWStages), .Reset (1'b0)) u_span_line (
-      .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({n0, scale0, zero0}), .q_o ({n_p, scale_p, zero_p}));
-    phong_exp2 #(
-      .WBits       (WBits),
-      .LogBits     (LogBits),
-      .ExpAddrBits (ExpAddrBits),
-      .ExpFracBits (ExpFracBits),
-      .ExpBits     (ExpBits),
-      .NBits       (NBits),
-      .CBits       (CBits),
-      .ExpRomFile  (ExpRomFile),
-      .MulTileBits (MulTileBits)
-    ) u_exp2 (
-      .clk_i       (clk_i),
-      .en_i        (adv),
-      .w_i         (w),
-      .zero_i      (zero_w | zero_p),
-      .n_i         (n_p),
-      .scale_i     (scale_p),
-      .intensity_o (intensity)
-    );
   end else begin : gen_dot
     logic unused_u;
     assign unused_u = ^u;
@@ -302,32 +272,54 @@ module phong_stream #(
       .c_o    (cosv),
       .zero_o (zero_c)
     );
-    specular_delay #(.Width (NBits + CBits + 1), .Depth (DotStages + phong_pkg::norm_stages(NormBits, Newton)),
-                     .Reset (1'b0)) u_span_line (
-      .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({n0, scale0, zero0}), .q_o ({n_p, scale_p, zero_p}));
-    phong_pow #(
+    phong_log2 #(
       .CosFrac     (CosFrac),
       .LogAddrBits (LogAddrBits),
       .LogFracBits (LogFracBits),
       .LogBits     (LogBits),
-      .ExpAddrBits (ExpAddrBits),
-      .ExpFracBits (ExpFracBits),
-      .ExpBits     (ExpBits),
-      .NBits       (NBits),
-      .CBits       (CBits),
       .LogRomFile  (LogRomFile),
-      .ExpRomFile  (ExpRomFile),
       .MulTileBits (MulTileBits)
-    ) u_pow (
-      .clk_i       (clk_i),
-      .en_i        (adv),
-      .c_i         (cosv),
-      .zero_i      (zero_c | zero_p),
-      .n_i         (n_p),
-      .scale_i     (scale_p),
-      .intensity_o (intensity)
+    ) u_log2 (
+      .clk_i (clk_i),
+      .en_i  (adv),
+      .c_i   (cosv),
+      .w_o   (w)
     );
+    specular_delay #(.Width (1), .Depth (phong_pkg::log2_stages(LogFracBits)), .Reset (1'b0)) u_zero_line (
+      .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (zero_c), .q_o (zero_w));
   end
+
+  // The span's n, scale and zero flag beside the pixel up to w; the tag to the end.
+  logic [NBits-1:0]   n_p;
+  logic [CBits-1:0]   scale_p;
+  logic               zero_p;
+  logic [TagBits-1:0] tag_out;
+  logic [CBits-1:0]   intensity;
+  specular_delay #(.Width (NBits + CBits + 1), .Depth (DotStages + ToWStages), .Reset (1'b0)) u_span_line (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({n0, scale0, zero0}), .q_o ({n_p, scale_p, zero_p}));
+  specular_delay #(.Width (TagBits), .Depth (PipeDepth - 1)) u_tag_line (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (tag0), .q_o (tag_out));
+
+  // The power and the scale (both forms).
+  phong_exp2 #(
+    .WBits       (WBits),
+    .LogBits     (LogBits),
+    .ExpAddrBits (ExpAddrBits),
+    .ExpFracBits (ExpFracBits),
+    .ExpBits     (ExpBits),
+    .NBits       (NBits),
+    .CBits       (CBits),
+    .ExpRomFile  (ExpRomFile),
+    .MulTileBits (MulTileBits)
+  ) u_exp2 (
+    .clk_i       (clk_i),
+    .en_i        (adv),
+    .w_i         (w),
+    .zero_i      (zero_w | zero_p),
+    .n_i         (n_p),
+    .scale_i     (scale_p),
+    .intensity_o (intensity)
+  );
 
   // ---------------------------------------------------------------------------------
   // Output buffer

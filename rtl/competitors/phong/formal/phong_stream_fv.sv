@@ -19,7 +19,7 @@
 // ABSTRACTION (scripts/formal.sh phong, docs/formal.md#phong_stream-the-span-and-pixel-handshakes):
 // the script cuts the pixel value where it leaves the power unit (cutpoint u_dut.intensity:
 // a free value every clock) and removes the logic left without a reader (the span setup's
-// multipliers, the accumulators, phong_dot, phong_norm, phong_pow, the n/scale line). No
+// multipliers, the accumulators, phong_dot, phong_norm and phong_log2 or phong_cross, phong_exp2, the n/scale line). No
 // property below constrains the intensity, so the proof covers the real datapath.
 //
 // Properties (asserted whenever rst_ni is high; P4 while it is low), under two assumptions:
