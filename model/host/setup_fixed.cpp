@@ -40,10 +40,6 @@ i128 prod(i128 a, i128 b) {
   return p;
 }
 
-void require(bool ok, const std::string& what) {
-  if (!ok) throw std::invalid_argument("setup_fixed: " + what);
-}
-
 }  // namespace
 
 // ---- Tables ----
@@ -241,7 +237,11 @@ uint32_t scale_exp2(uint32_t code, int64_t e, uint32_t max_code, bool* saturated
 
 // ---- The setup ----
 
-Result setup_fixed(const device::GeoSpan& g, const device::GeoFormat& gf, const device::Format& f) {
+void check_geo_span(const device::GeoSpan& g, const device::GeoFormat& gf, const device::Format& f, const char* who) {
+  const std::string w = std::string(who) + ": ";
+  auto require = [&w](bool ok, const std::string& what) {
+    if (!ok) throw std::invalid_argument(w + what);
+  };
   const device::Format def;
   require(gf.vec_bits >= 2 && gf.vec_bits <= 24, "vec_bits must be in 2..24, got " + std::to_string(gf.vec_bits));
   require(f.c_bits == def.c_bits && f.angle_bits == def.angle_bits && f.angle_frac == def.angle_frac &&
@@ -254,19 +254,24 @@ Result setup_fixed(const device::GeoSpan& g, const device::GeoFormat& gf, const 
     for (int32_t c : *v)
       require(c >= gf.vec_min() && c <= gf.vec_max(), "vector component " + std::to_string(c) + " outside " +
                                                           std::to_string(gf.vec_min()) + ".." + std::to_string(gf.vec_max()));
+}
 
+std::optional<SetupStatus> decode_codes(const device::GeoSpan& g) {
+  auto zero = [](const device::GeoVec& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; };
+  if (g.n == 0 || g.n > static_cast<uint32_t>(kMaxN) || zero(g.n1) || zero(g.n2)) return SetupStatus::invalid_input;
+  if (zero(g.h1) || zero(g.he)) return SetupStatus::undefined_halfway;
+  return std::nullopt;
+}
+
+Result setup_fixed(const device::GeoSpan& g, const device::GeoFormat& gf, const device::Format& f) {
+  check_geo_span(g, gf, f, "setup_fixed");
   Result r;
   r.span.tag = g.tag;
   r.span.reg.n = g.n;
   r.span.reg.len = g.len;
-  auto zero = [](const device::GeoVec& v) { return v[0] == 0 && v[1] == 0 && v[2] == 0; };
   // 1. Decode.
-  if (g.n == 0 || g.n > static_cast<uint32_t>(kMaxN) || zero(g.n1) || zero(g.n2)) {
-    r.status = SetupStatus::invalid_input;
-    return r;
-  }
-  if (zero(g.h1) || zero(g.he)) {
-    r.status = SetupStatus::undefined_halfway;
+  if (const auto st = decode_codes(g)) {
+    r.status = *st;
     return r;
   }
   auto widen = [](const device::GeoVec& v) { return Vec{v[0], v[1], v[2]}; };

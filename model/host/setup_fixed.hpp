@@ -29,6 +29,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace specular::host::fixed {
@@ -121,6 +122,14 @@ struct Result {
   bool c_saturated = false;  // C clamped to the top of register 1
   Trace trace;
 };
+
+// The input checks of both golden models (this and host::lean::setup_lean): throws
+// std::invalid_argument, the message starting with `who`, unless vec_bits is in 2..24, the
+// register formats are device::Format{}'s and every code fits its field.
+void check_geo_span(const device::GeoSpan& g, const device::GeoFormat& gf, const device::Format& f, const char* who);
+// The decisions on the codes alone: invalid_input (n = 0 or > 1000, N1 or N2 zero) or
+// undefined_halfway (H1 or He zero); nothing for any other span.
+std::optional<SetupStatus> decode_codes(const device::GeoSpan& g);
 
 // The golden model. Requires the default interface widths' limits: vec_bits in 2..24 and the
 // register formats of device::Format{} (c 16/15, angle 32/28, n 10, len 11); throws

@@ -30,6 +30,7 @@
 #include <bit>
 #include <cmath>
 #include <limits>
+#include <numbers>
 #include <stdexcept>
 #include <string>
 
@@ -104,7 +105,13 @@ std::string to_string(SetupStatus s) {
   return "?";
 }
 
-ScanlineSetup scanline_setup(const ScanlineInput& in) {
+namespace {
+bool decide(SetupRule::Force f, bool by_metric) {
+  return f == SetupRule::Force::by_metric ? by_metric : f == SetupRule::Force::yes;
+}
+}  // namespace
+
+ScanlineSetup scanline_setup(const ScanlineInput& in, const SetupRule& rule) {
   ScanlineSetup s;
   Normalized v;
   std::string why;
@@ -126,7 +133,8 @@ ScanlineSetup scanline_setup(const ScanlineInput& in) {
   const dvec3 sum = v.n1 + v.n2;
   const double opc = 0.5 * glm::dot(sum, sum);
   dvec3 h2;
-  if (opc <= 1e-30) {
+  s.q = 2.0 * opc;
+  if (decide(rule.opposite_normals, rule.hardware ? s.q < rule.q_min : opc <= 1e-30)) {
     s.status = SetupStatus::opposite_normals;
     add_note(s.note, "N1 = -N2: half turn about the tangential part of He");
     dvec3 w = v.he - glm::dot(v.he, v.n1) * v.n1;
@@ -151,12 +159,18 @@ ScanlineSetup scanline_setup(const ScanlineInput& in) {
   //    direction means nothing, and taking u from it gave A > 1 (C saturated) for N1 = N2,
   //    H1 = He. Below kChordNoise gamma is 0; pixel values change by O(kChordNoise) there.
   constexpr double kChordNoise = 16.0 * std::numeric_limits<double>::epsilon();
+  s.sin_gamma = 0.5 * ld * lhs;  // 2 sin(gamma/2) cos(gamma/2)
+  s.x_positive = ld < lhs;
+  const bool flat = rule.hardware ? s.x_positive && s.sin_gamma < rule.flat_sin : ld <= kChordNoise;
+  const bool opposite = rule.hardware ? !s.x_positive && s.sin_gamma < rule.opposite_sin : lhs <= 1e-12;
   double nu = 0.0;
-  if (ld <= kChordNoise) {
+  if (decide(rule.flat, flat)) {
+    s.flat = true;
     s.gamma = 0.0;
     nu = 0.0;  // gamma = 0: u undefined and irrelevant (dpsi = 0, A cos(lambda) = cos t1)
-  } else if (lhs <= 1e-12) {
+  } else if (decide(rule.opposite_halfway, opposite)) {
     s.status = SetupStatus::opposite_halfway;
+    if (rule.hardware) s.gamma = std::numbers::pi;  // the stated rule: the half turn exactly
     add_note(s.note, "H2 = -H1: slerp along the great circle through N1");
     dvec3 u = v.n1 - cos_t1 * v.h1;
     const double lu = glm::length(u);

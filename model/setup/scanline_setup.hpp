@@ -51,9 +51,26 @@ struct ScanlineSetup {
   double dpsi = 0.0;    // gamma / l, 0 when l = 0
   SetupStatus status = SetupStatus::ok;
   std::string note;     // human-readable explanation when status != ok
+  // The decision metrics (docs/setup_hw.md#the-contract): |N1 + N2|^2 of the unit normals,
+  // sin gamma and the sign of H1.H2; and whether gamma was set to 0 (flat).
+  double q = 0.0, sin_gamma = 0.0;
+  bool x_positive = true, flat = false;
 };
 
-ScanlineSetup scanline_setup(const ScanlineInput& in);
+// The rule that decides the degenerate classes. The default is the scalar setup's own
+// (double-precision noise floors); a hardware setup states thresholds at its own precision
+// (docs/setup_hw.md#the-contract) and, inside a decision's guard band, forces the branch it
+// took.
+struct SetupRule {
+  enum class Force { by_metric, yes, no };
+  bool hardware = false;         // false: the double floors below; true: the thresholds on q and sin gamma
+  double q_min = 0.0;            // hardware: opposite_normals when q < q_min
+  double flat_sin = 0.0;         // hardware: flat when sin gamma < flat_sin and H1.H2 > 0
+  double opposite_sin = 0.0;     // hardware: opposite_halfway when sin gamma < opposite_sin and H1.H2 < 0
+  Force opposite_normals = Force::by_metric, flat = Force::by_metric, opposite_halfway = Force::by_metric;
+};
+
+ScanlineSetup scanline_setup(const ScanlineInput& in, const SetupRule& rule = {});
 
 // psi of pixel i (0..l).
 inline double pixel_psi(const ScanlineSetup& s, int i) { return s.psi0 + i * s.dpsi; }

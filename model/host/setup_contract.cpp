@@ -1,0 +1,54 @@
+// SPDX-License-Identifier: Apache-2.0
+// The lean setup's contract, docs/setup_hw.md#the-contract.
+#include "setup_contract.hpp"
+
+#include "setup_lean.hpp"
+
+#include <cmath>
+
+namespace specular::host {
+
+SetupRule lean_rule() {
+  SetupRule r;
+  r.hardware = true;
+  r.q_min = std::ldexp(1.0, -lean::kOppNormLog2);
+  r.flat_sin = std::ldexp(1.0, -lean::kFlatLog2 / 2);
+  r.opposite_sin = std::ldexp(1.0, -lean::kOppHalfLog2 / 2);
+  return r;
+}
+
+ContractCheck check_contract(const device::GeoSpan& g, SetupStatus hw_status, const Decisions& hw_took, const device::Registers& hw,
+                             const device::GeoFormat& gf, const device::Format& f) {
+  ContractCheck out;
+  const ScanlineInput in = device::geo_input(g, gf, f);
+  SetupRule rule = lean_rule();
+  auto band = [](double metric, double threshold) { return metric >= threshold / 2 && metric <= threshold * 2; };
+  auto force = [](bool took) { return took ? SetupRule::Force::yes : SetupRule::Force::no; };
+  ScanlineSetup s = scanline_setup(in, rule);
+  const bool decoded = s.status == SetupStatus::invalid_input || s.status == SetupStatus::undefined_halfway;
+  if (!decoded) {
+    // The normals first: the halfway decisions depend on the H2 they give.
+    if (band(s.q, rule.q_min)) {
+      rule.opposite_normals = force(hw_took.opposite_normals);
+      ++out.in_band;
+      s = scanline_setup(in, rule);
+    }
+    if (s.x_positive && band(s.sin_gamma, rule.flat_sin)) {
+      rule.flat = force(hw_took.flat);
+      ++out.in_band;
+    }
+    if (!s.x_positive && band(s.sin_gamma, rule.opposite_sin)) {
+      rule.opposite_halfway = force(hw_took.opposite_halfway);
+      ++out.in_band;
+    }
+    s = scanline_setup(in, rule);
+  }
+  out.ref_status = s.status;
+  out.ref_flat = s.flat;
+  out.decisions_equal = s.status == hw_status && (decoded || s.flat == hw_took.flat);
+  out.ref = device::load_registers(s, in.n, in.l, f).reg;
+  out.pixels = compare_pixels(hw, out.ref, f);
+  return out;
+}
+
+}  // namespace specular::host
