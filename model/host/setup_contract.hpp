@@ -3,7 +3,8 @@
 // scalar double setup on the exact values of the codes under the hardware's stated rule
 // (thresholds on |N1 + N2|^2 and sin gamma); inside a decision's guard band (a factor of 2 on
 // its metric) either outcome is accepted and the reference takes the hardware's branch;
-// outside, the status and the flat flag must be equal. The registers are then compared as
+// outside, the status and the flat flag must be equal (on a one-pixel span, whose pixel does
+// not depend on N2 or He, only the decode's statuses). The registers are then compared as
 // pixels: within 0.01 % in the epicenter (0.01 % of C elsewhere) + 1 LSB (compare_pixels).
 #pragma once
 

@@ -47,6 +47,16 @@ std::array<i128, 3> cross3(const Vec& a, const Vec& b) {
           static_cast<i128>(a[0]) * b[1] - static_cast<i128>(a[1]) * b[0]};
 }
 
+// C = scale 2^((n/2) log2 A^2) from trace.a2 (Q(2F)); 0 when A = 0.
+void set_amplitude(const device::GeoSpan& g, const device::Format& f, const Widths& w, Result& r) {
+  Trace& t = r.trace;
+  if (t.a2 <= 0) return;
+  // log2_unit reads its argument as Q44.
+  t.log2_a2 = fixed::log2_unit(t.a2) - (2 * w.frac - fixed::kUnitFrac) * (int64_t{1} << fixed::kLogFrac);
+  const auto e = static_cast<int64_t>(rshift_round(static_cast<i128>(g.n) * t.log2_a2, 1));  // (n/2) log2 A^2
+  r.span.reg.c = fixed::scale_exp2(g.scale, e, (1u << f.c_bits) - 1, &r.c_saturated);
+}
+
 }  // namespace
 
 void check_widths(const Widths& w) {
@@ -131,6 +141,30 @@ int64_t cordic_angle(int64_t x, int64_t y, int frac, int iters, int bits) {
   return z;
 }
 
+bool takes_flat_path(const device::GeoSpan& g) { return g.len == 0 || (g.n1 == g.n2 && g.h1 == g.he); }
+
+Result setup_lean_flat(const device::GeoSpan& g, const device::GeoFormat& gf, const device::Format& f, const Widths& w) {
+  check_widths(w);
+  fixed::check_geo_span(g, gf, f, "setup_lean_flat");
+  Result r;
+  r.span.tag = g.tag;
+  r.span.reg.n = g.n;
+  r.span.reg.len = g.len;
+  if (const auto st = fixed::decode_codes(g)) {
+    r.status = *st;
+    return r;
+  }
+  Trace& t = r.trace;
+  t.flat = true;
+  t.n1 = normalize(Vec{g.n1[0], g.n1[1], g.n1[2]}, w);
+  t.h1 = normalize(Vec{g.h1[0], g.h1[1], g.h1[2]}, w);
+  t.cos_t1 = static_cast<int64_t>(rshift_round(dot3(t.n1, t.h1), w.frac));
+  // cos t1 <= 0: pixel 0 is 0 whatever C; C = 0 says so without the angle pi.
+  if (t.cos_t1 > 0) t.a2 = static_cast<int64_t>(static_cast<i128>(t.cos_t1) * t.cos_t1);
+  set_amplitude(g, f, w, r);
+  return r;
+}
+
 Result setup_lean(const device::GeoSpan& g, const device::GeoFormat& gf, const device::Format& f, const Widths& w) {
   check_widths(w);
   fixed::check_geo_span(g, gf, f, "setup_lean");
@@ -210,12 +244,7 @@ Result setup_lean(const device::GeoSpan& g, const device::GeoFormat& gf, const d
         rshift_round(rshift_round(t.gamma, cf - fixed::kGammaFrac) * static_cast<i128>(fixed::recip_len_table()[g.len]),
                      fixed::kGammaFrac + fixed::kRecipLenFrac + fixed::recip_len_shift(g.len) - f.angle_frac));
   t.a2 = static_cast<int64_t>(static_cast<i128>(t.cos_t1) * t.cos_t1 + static_cast<i128>(t.nu) * t.nu);
-  if (t.a2 > 0) {
-    // log2_unit reads its argument as Q44.
-    t.log2_a2 = fixed::log2_unit(t.a2) - (2 * fr - fixed::kUnitFrac) * (int64_t{1} << fixed::kLogFrac);
-    const auto e = static_cast<int64_t>(rshift_round(static_cast<i128>(g.n) * t.log2_a2, 1));  // (n/2) log2 A^2
-    r.span.reg.c = fixed::scale_exp2(g.scale, e, (1u << f.c_bits) - 1, &r.c_saturated);
-  }
+  set_amplitude(g, f, w, r);
   if (t.opposite_halfway) r.status = SetupStatus::opposite_halfway;
   else if (t.opposite_normals) r.status = SetupStatus::opposite_normals;
   return r;

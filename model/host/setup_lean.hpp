@@ -109,6 +109,14 @@ struct Result {
   Trace trace;
 };
 
+// The flat path (docs/setup_hw.md#the-flat-path): the spans whose pixels do not depend on N2 and
+// He, one-pixel spans (l = 0) and flat spans (N1 = N2 and H1 = He as codes). Their registers
+// need only cos t1: C = scale cos^n t1 (0 when cos t1 <= 0), psi0 = dpsi = 0; the status is
+// the decode's (invalid_input, undefined_halfway) or ok.
+bool takes_flat_path(const device::GeoSpan& g);
+Result setup_lean_flat(const device::GeoSpan& g, const device::GeoFormat& gf, const device::Format& f,
+                       const Widths& w = {});
+
 // The golden model. The register formats must be device::Format{}'s and vec_bits in 2..24;
 // throws std::invalid_argument otherwise (as host::fixed::setup_fixed).
 Result setup_lean(const device::GeoSpan& g, const device::GeoFormat& gf, const device::Format& f,

@@ -144,3 +144,37 @@ TEST_CASE("lean setup meets the contract on random spans", "[setup_lean]") {
   WARN("lean setup, " << spans << " random spans: worst " << worst << " of the allowance, max " << lsb << " LSB, "
                       << bands << " decisions in a guard band");
 }
+
+TEST_CASE("lean setup: the flat path meets the contract on one-pixel and flat spans", "[setup_lean]") {
+  std::vector<GeoSpan> spans = geo_cases::random_geo_spans(20000, 4242);
+  for (size_t i = 0; i < spans.size(); ++i) {
+    if (i % 2 == 0) spans[i].len = 0;  // one-pixel spans of any geometry
+    else spans[i].n2 = spans[i].n1, spans[i].he = spans[i].h1;  // flat spans of any length
+  }
+  for (const auto& h : geo_cases::hard_cases()) spans.push_back(h.g);
+  for (const auto& g : geo_cases::near_degenerate_spans()) spans.push_back(g);
+  size_t taken = 0, fails = 0, diffs = 0, same_c = 0, flat_gen = 0;
+  double worst = 0;
+  for (const GeoSpan& g : spans) {
+    if (!hl::takes_flat_path(g)) continue;
+    ++taken;
+    const hl::Result r = hl::setup_lean_flat(g, kGeo, kFmt);
+    const host::ContractCheck c = check(g, r);
+    fails += !c.pixels.ok();
+    diffs += !c.decisions_equal;
+    worst = std::max(worst, c.pixels.worst);
+    CHECK(r.span.reg.dpsi == 0);
+    CHECK(r.span.reg.psi0 == 0);
+    // The general path on the same span gives the same C (the same cos t1, A = |cos t1|) when cos t1 > 0.
+    const hl::Result gen = hl::setup_lean(g, kGeo, kFmt);
+    if (r.trace.cos_t1 > 0 && gen.trace.flat) ++flat_gen, same_c += gen.span.reg.c == r.span.reg.c;
+  }
+  INFO(taken << " spans on the flat path");
+  CHECK(taken >= 20000);
+  CHECK(fails == 0);
+  CHECK(diffs == 0);
+  CHECK(flat_gen > 5000);
+  CHECK(same_c == flat_gen);
+  WARN("lean flat path, " << taken << " spans: worst " << worst << " of the allowance; C equal to the general path's on "
+                          << same_c << " flat spans with cos t1 > 0");
+}
