@@ -352,6 +352,12 @@ def section_setup_lean(d, rel):
                     ["yes" if r["meets"] else "no"])
     out += table(["F", "hard and near-degenerate: worst (decisions)", "random: worst", "fail", "decisions",
                   "in a band", "max LSB"] + [f"{s}: worst" for s in scenes] + ["meets"], rows)
+    if d.get("scene_spans"):
+        out += ["", "The scenes' spans on the [flat path](setup_hw.md#the-flat-path) (`l = 0`, or `N1 = N2` and "
+                    "`H1 = He` as codes):", ""]
+        rows = [[s, num(v["spans"]), num(v["one_pixel"]), num(v["flat_path"]),
+                 f"{100.0 * v['flat_path'] / max(1, v['spans']):.1f} %"] for s, v in sorted(d["scene_spans"].items())]
+        out += table(["scene", "spans", "one-pixel", "flat path", "share"], rows)
     return out
 
 

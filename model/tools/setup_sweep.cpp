@@ -92,6 +92,11 @@ int main(int argc, char** argv) {
   }
   const std::vector<device::GeoSpan> random = geo_cases::random_geo_spans(n_random, 20261205);
 
+  nlohmann::json flat = nlohmann::json::object();
+  for (const auto& [name, spans] : scenes)
+    flat[name] = {{"spans", spans.size()},
+                  {"flat_path", std::count_if(spans.begin(), spans.end(), host::lean::takes_flat_path)},
+                  {"one_pixel", std::count_if(spans.begin(), spans.end(), [](const auto& g) { return g.len == 0; })}};
   nlohmann::json out = nlohmann::json::array();
   bool default_ok = true;
   for (int f : fracs) {
@@ -118,7 +123,7 @@ int main(int argc, char** argv) {
   }
   if (!json_path.empty()) {
     std::ofstream os(json_path + ".tmp");
-    os << nlohmann::json{{"widths", out}, {"random_spans", n_random}, {"default_frac", host::lean::kFrac}}.dump(2) << "\n";
+    os << nlohmann::json{{"widths", out}, {"scene_spans", flat}, {"random_spans", n_random}, {"default_frac", host::lean::kFrac}}.dump(2) << "\n";
     if (!os) {
       std::cerr << "setup_sweep: error: cannot write " << json_path << "\n";
       return 2;
