@@ -52,6 +52,7 @@ ContractCheck check_contract(const device::GeoSpan& g, SetupStatus hw_status, co
   out.decisions_equal = g.len == 0 ? decode_only(s.status) == decode_only(hw_status)
                                    : s.status == hw_status && (decoded || s.flat == hw_took.flat);
   out.ref = device::load_registers(s, in.n, in.l, f).reg;
+  out.ref_setup = s;
   out.pixels = compare_pixels(hw, out.ref, f);
   return out;
 }

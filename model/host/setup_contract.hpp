@@ -23,7 +23,8 @@ struct ContractCheck {
   bool ref_flat = false;
   bool decisions_equal = true;  // status and flat flag, after the guard bands
   int in_band = 0;              // decisions that fell inside a guard band
-  device::Registers ref;        // the reference registers in the branch taken
+  ScanlineSetup ref_setup;      // the reference setup in the branch taken (the end-to-end truth)
+  device::Registers ref;        // its registers
   PixelAgreement pixels;
   bool ok() const { return decisions_equal && pixels.ok(); }
 };
