@@ -57,6 +57,22 @@ void set_amplitude(const device::GeoSpan& g, const device::Format& f, const Widt
   r.span.reg.c = fixed::scale_exp2(g.scale, e, (1u << f.c_bits) - 1, &r.c_saturated);
 }
 
+// The checks, the pass-through fields and the decode of both paths; true when the decode
+// decided the span (its registers stay 0).
+bool begin(const device::GeoSpan& g, const device::GeoFormat& gf, const device::Format& f, const Widths& w,
+           const char* who, Result& r) {
+  check_widths(w);
+  fixed::check_geo_span(g, gf, f, who);
+  r.span.tag = g.tag;
+  r.span.reg.n = g.n;
+  r.span.reg.len = g.len;
+  const auto st = fixed::decode_codes(g);
+  if (st) r.status = *st;
+  return st.has_value();
+}
+
+Vec vec(const device::GeoVec& v) { return {v[0], v[1], v[2]}; }
+
 }  // namespace
 
 void check_widths(const Widths& w) {
@@ -144,20 +160,12 @@ int64_t cordic_angle(int64_t x, int64_t y, int frac, int iters, int bits) {
 bool takes_flat_path(const device::GeoSpan& g) { return g.len == 0 || (g.n1 == g.n2 && g.h1 == g.he); }
 
 Result setup_lean_flat(const device::GeoSpan& g, const device::GeoFormat& gf, const device::Format& f, const Widths& w) {
-  check_widths(w);
-  fixed::check_geo_span(g, gf, f, "setup_lean_flat");
   Result r;
-  r.span.tag = g.tag;
-  r.span.reg.n = g.n;
-  r.span.reg.len = g.len;
-  if (const auto st = fixed::decode_codes(g)) {
-    r.status = *st;
-    return r;
-  }
+  if (begin(g, gf, f, w, "setup_lean_flat", r)) return r;
   Trace& t = r.trace;
   t.flat = true;
-  t.n1 = normalize(Vec{g.n1[0], g.n1[1], g.n1[2]}, w);
-  t.h1 = normalize(Vec{g.h1[0], g.h1[1], g.h1[2]}, w);
+  t.n1 = normalize(vec(g.n1), w);
+  t.h1 = normalize(vec(g.h1), w);
   t.cos_t1 = static_cast<int64_t>(rshift_round(dot3(t.n1, t.h1), w.frac));
   // cos t1 <= 0: pixel 0 is 0 whatever C; C = 0 says so without the angle pi.
   if (t.cos_t1 > 0) t.a2 = static_cast<int64_t>(static_cast<i128>(t.cos_t1) * t.cos_t1);
@@ -166,20 +174,11 @@ Result setup_lean_flat(const device::GeoSpan& g, const device::GeoFormat& gf, co
 }
 
 Result setup_lean(const device::GeoSpan& g, const device::GeoFormat& gf, const device::Format& f, const Widths& w) {
-  check_widths(w);
-  fixed::check_geo_span(g, gf, f, "setup_lean");
-  const int fr = w.frac, cf = w.cordic_frac(), bb = w.block_bits();
   Result r;
-  r.span.tag = g.tag;
-  r.span.reg.n = g.n;
-  r.span.reg.len = g.len;
   // 1. Decode.
-  if (const auto st = fixed::decode_codes(g)) {
-    r.status = *st;
-    return r;
-  }
+  if (begin(g, gf, f, w, "setup_lean", r)) return r;
+  const int fr = w.frac, cf = w.cordic_frac(), bb = w.block_bits();
   Trace& t = r.trace;
-  auto vec = [](const device::GeoVec& v) { return Vec{v[0], v[1], v[2]}; };
   // 2. Unit N1, N2, H1.
   t.n1 = normalize(vec(g.n1), w);
   t.n2 = normalize(vec(g.n2), w);
