@@ -34,11 +34,13 @@
 // stages and three registers, at the price of II clocks per vector.
 //
 // Coding (docs/setup_hw.md#the-cordics-adders): each register of a stage is one sum,
-// a + (b ^ {W{sub}}) + sub (add_sub), not two sums and a multiplexer. The shift of stage k
-// takes only the Rounds amounts r PerClock + k, so it is a Rounds-way multiplexer over
-// fixed shifts selected by cnt_q, not a barrel shifter; the angle constant of stage k is a
-// Rounds-word ROM (LUTs) over the same counter, its words lean::atan_word: the package's
-// Q50 atan_q(i) rounded half up to Frac bits at elaboration (Yosys 0.23 has no real $atan).
+// a + (b ^ {W{sub}}) + sub (add_sub), one carry chain, not two sums and a multiplexer (z's
+// is the same sum written with W + 1 bits, see gen_stage). The shift of stage k takes only
+// the Rounds amounts r PerClock + k, so it is a Rounds-way multiplexer (a tree of 2:1
+// multiplexers on cnt_q's bits) over fixed shifts, not a barrel shifter; the angle constant
+// of stage k is a Rounds-word ROM (LUTs) in the same tree, its words lean::atan_word: the
+// package's Q50 atan_q(i) rounded half up to Frac bits at elaboration (Yosys 0.23 cannot
+// evaluate a real $atan).
 
 `include "specular_assert.svh"
 
@@ -70,7 +72,7 @@ module specular_setup_cordic_iter #(
   localparam int Latency /*verilator public*/ = Rounds + 1;
   /* verilator lint_on UNUSEDPARAM */
   localparam int CntW    = (Rounds > 1) ? $clog2(Rounds) : 1;
-  localparam int Slots   = 1 << CntW;  // the ROMs' and shift multiplexers' words: Rounds, padded
+  localparam int Slots   = 1 << CntW;  // the multiplexers' words: Rounds, padded to 2^CntW
   localparam int PiFrac  = specular_setup_pkg::CordicFrac - Frac;
   localparam logic signed [W-1:0] Pi =
       W'(specular_setup_pkg::rshift_round(128'(specular_setup_pkg::Pi), PiFrac));
@@ -168,35 +170,52 @@ module specular_setup_cordic_iter #(
   assign z_s[0 +: W] = z_q;
 
   for (genvar k = 0; k < PerClock; k++) begin : gen_stage
-    // Word r of each table (bits r W +: W): iteration i = r PerClock + k; the words past
-    // Rounds - 1 repeat the last round's, so that every value of cnt_q selects a defined word.
-    logic [W-1:0]       x, y, z;
-    logic [Slots*W-1:0] dx_tab, dy_tab, atan_tab;
-    logic [Slots-1:0]   act_tab;
+    logic [W-1:0] x, y, z;
     assign x = x_s[k*W +: W];
     assign y = y_s[k*W +: W];
     assign z = z_s[k*W +: W];
-    for (genvar r = 0; r < Slots; r++) begin : gen_round
-      localparam int I     = ((r < Rounds) ? r : Rounds - 1) * PerClock + k;
-      localparam int IUsed = (I < Iters) ? I : Iters - 1;  // an idle stage's words: any valid i
-      assign dx_tab[r*W +: W]   = $signed(y) >>> IUsed;
-      assign dy_tab[r*W +: W]   = $signed(x) >>> IUsed;
-      assign atan_tab[r*W +: W] = atan_word(IUsed);
-      assign act_tab[r]         = I < Iters;
+
+    // The Rounds-way multiplexer of the stage's operands {atan, dy, dx} by cnt_q: a binary tree
+    // of 2:1 multiplexers, node n (1..2 Slots - 1, bits (n - 1) 3W +: 3W) of depth floor(log2 n)
+    // selecting by cnt_q's bit CntW - 1 - depth between its children 2n and 2n + 1; leaf
+    // Slots + r is round r's words: iteration i = r PerClock + k, its two fixed shifts and its
+    // angle constant (the leaves past Rounds - 1 repeat the last round's). An iteration
+    // i >= Iters (only in the last round) has the words 0: add_sub(a, 0, s) = a for either s,
+    // the stage passes the vector on. (A part-select by cnt_q W would be a general shifter
+    // for Yosys, and an AND-OR of the words maps worse.)
+    logic [(2*Slots-1)*3*W-1:0] tree /*verilator split_var*/;
+    for (genvar r = 0; r < Slots; r++) begin : gen_leaf
+      localparam int I = ((r < Rounds) ? r : Rounds - 1) * PerClock + k;
+      if (I < Iters) begin : gen_iter
+        localparam logic [W-1:0] Atan = atan_word(I);
+        assign tree[(Slots+r-1)*3*W +: 3*W] = {Atan, W'($signed(x) >>> I), W'($signed(y) >>> I)};
+      end else begin : gen_idle
+        assign tree[(Slots+r-1)*3*W +: 3*W] = '0;
+      end
+    end
+    for (genvar n = 1; n < Slots; n++) begin : gen_node
+      localparam int Sel = CntW - $clog2(n + 1);  // CntW - 1 - floor(log2 n)
+      assign tree[(n-1)*3*W +: 3*W] = cnt_q[Sel] ? tree[2*n*3*W +: 3*W] : tree[(2*n-1)*3*W +: 3*W];
     end
 
-    // up: y < 0, the vector turns up: x - dx, y + dy, z - atan (else x + dx, y - dy, z + atan).
-    // act: iteration i < Iters (else the stage passes the vector on).
-    logic         up, act;
     logic [W-1:0] dx, dy, atan;
-    assign up   = y[W-1];
-    assign act  = act_tab[cnt_q];
-    assign dx   = dx_tab[cnt_q*W +: W];
-    assign dy   = dy_tab[cnt_q*W +: W];
-    assign atan = atan_tab[cnt_q*W +: W];
-    assign x_s[(k+1)*W +: W] = act ? add_sub(x, dx, up) : x;
-    assign y_s[(k+1)*W +: W] = act ? add_sub(y, dy, !up) : y;
-    assign z_s[(k+1)*W +: W] = act ? add_sub(z, atan, up) : z;
+    assign {atan, dy, dx} = tree[0 +: 3*W];  // the root
+
+    // up: y < 0, the vector turns up: x - dx, y + dy, z - atan (else x + dx, y - dy, z + atan).
+    // z's sum is add_sub written as one (W+1)-bit sum whose bit 0 makes the carry in,
+    // {z, 1} + {atan ^ {W{up}}, up}: the same W bits, but Yosys' alumacc does not merge the
+    // stages' z sums (each used once) into one multi-operand $macc, which it would build
+    // from LUTs instead of PerClock carry chains.
+    logic       up;
+    logic [W:0] z_sum;
+    assign up       = y[W-1];
+    assign z_sum    = {z, 1'b1} + {atan ^ {W{up}}, up};
+    assign x_s[(k+1)*W +: W] = add_sub(x, dx, up);
+    assign y_s[(k+1)*W +: W] = add_sub(y, dy, !up);
+    assign z_s[(k+1)*W +: W] = z_sum[W:1];
+
+    logic unused_z_sum;
+    assign unused_z_sum = z_sum[0];
   end
 
   always_comb begin
