@@ -7,6 +7,7 @@
 rtl/setup/specular_setup_pkg.sv
 rtl/setup/specular_setup_norm.sv
 rtl/setup/specular_setup_cordic.sv
+rtl/setup/specular_setup_cordic_iter.sv
 rtl/setup/specular_setup_log2.sv
 rtl/setup/specular_setup_exp2.sv
 rtl/setup/specular_setup.sv
