@@ -51,9 +51,8 @@ module specular_setup_lean_block #(
   end
 
   for (genvar i = 0; i < N; i++) begin : gen_comp
-    logic signed [InW-1:0] x1, x2;
+    logic signed [InW-1:0] x2;
     logic signed [YW-1:0]  y_q;
-    assign x1 = x1_q[i*InW +: InW];
     assign x2 = x2_q[i*InW +: InW];
     always_ff @(posedge clk_i) begin
       if (en_i) begin

@@ -74,6 +74,10 @@ module specular_setup_lean_norm #(
   localparam int TR    = TE + LSe + 1;
   localparam int Stages = TR + LVr + 2;
 
+  if (Stages != specular_setup_lean_pkg::norm_stages(InW)) begin : gen_stage_check
+    `SPEC_PARAM_ERROR("specular_setup_lean_norm: specular_setup_lean_pkg::norm_stages disagrees with the stages built here")
+  end
+
   // ---- S1 .. +2: the squared length ----
   logic signed [2*InW-1:0] sqx, sqy, sqz;
   specular_setup_smul #(.ABits(InW), .BBits(InW), .TileBits(TileBits)) u_sqx (
@@ -171,7 +175,7 @@ module specular_setup_lean_norm #(
   logic signed [EW-1:0] xs2_q, e_q;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      xs2_q <= EW'((ms + (XW + S2W)'(64'sd1 <<< (B - 1))) >>> B);
+      xs2_q <= EW'((ms + ((XW + S2W)'(1) <<< (B - 1))) >>> B);
       e_q   <= EW'(64'sd3 <<< RFrac) - xs2_q;
     end
   end

@@ -89,6 +89,12 @@ package specular_setup_lean_pkg;
   function automatic int smul_stages(input int b_bits);
     smul_stages = 3 + pipe_mul_stages(b_bits);
   endfunction
+  // specular_setup_lean_norm for InW-bit components (the module checks its own count).
+  function automatic int norm_stages(input int in_w);
+    norm_stages = smul_stages(in_w) + 6 + smul_stages(SeedW + 1) + 2 + smul_stages(SeedW + 1) + 1
+                + smul_stages(2 * SeedW - (2 * SeedFrac - RsqrtFrac) + 2) + 2 + smul_stages(RsqrtFrac + 5) + 1
+                + smul_stages(RW) + 2;
+  endfunction
   localparam int BlockStages  = 4;                // specular_setup_lean_block
   localparam int CordicStages = 1 + CordicIters;  // specular_setup_lean_cordic
 
