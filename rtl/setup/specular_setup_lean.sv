@@ -511,8 +511,10 @@ module specular_setup_lean #(
   specular_rom #(.Width(RecipLenFrac + 1), .AddrBits(LenBits), .File(RecipLenFile)) u_recip_len_rom (
     .clk_i (clk_i), .en_i (adv), .addr_i (len_cor), .data_o (recip));
   logic signed [GW+RLW-1:0] gr;
+  logic signed [GW-1:0]     gamma2;  // rshift_round(gamma, CFrac - GammaFrac): gamma 2^1
+  assign gamma2 = GW'(gamma_q) <<< (GammaFrac - CFrac);
   specular_setup_smul #(.ABits(GW), .BBits(RLW), .TileBits(TileBits)) u_gr (
-    .clk_i (clk_i), .en_i (adv), .a_i (GW'(gamma_q) <<< (GammaFrac - CFrac)), .b_i ($signed({1'b0, recip})), .p_o (gr));
+    .clk_i (clk_i), .en_i (adv), .a_i (gamma2), .b_i ($signed({1'b0, recip})), .p_o (gr));
   specular_delay #(.Width(4), .Depth(LDP), .Reset(1'b0)) u_dly_lshift (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (lshift_q), .q_o (lshift_dp));
   logic len_zero_dp, len_zero_q;
