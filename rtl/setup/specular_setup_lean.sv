@@ -129,6 +129,11 @@ module specular_setup_lean #(
   if (VecBits < 2 || VecBits > 24 || TagBits < 1) begin : gen_param_check
     `SPEC_PARAM_ERROR("specular_setup_lean: VecBits must be in 2..24 and TagBits >= 1")
   end
+  // psi0's rounding below is written for a one-bit shift (Q29 -> Q28); the flat test's guard
+  // for |x| <= 2^28 (x^2 <= 2^56).
+  if (CFrac - AngleFrac != 1 || BBits != 28) begin : gen_width_check
+    `SPEC_PARAM_ERROR("specular_setup_lean: psi0's rounding and the decisions' guards assume CordicFrac = AngleFrac + 1 and BlockBits = 28")
+  end
   // Products started together must finish together.
   if (LQ != LH || LP != LX || TCC > TOUT) begin : gen_sched_check
     `SPEC_PARAM_ERROR("specular_setup_lean: the schedule's parallel multipliers disagree in latency")

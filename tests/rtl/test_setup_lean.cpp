@@ -5,8 +5,12 @@
 // near-degenerate spans the lean model's test runs, back to back and under backpressure; on
 // random spans under random input gaps, backpressure and resets; the AXI4-Stream rules on the
 // descriptor side; and the throughput, one span per clock with span_ready_i high.
-// SPECULAR_SETUP_RTL_SPANS=N runs N random spans instead of 20,000.
+// SPECULAR_SETUP_RTL_SPANS=N runs N random spans instead of 20,000; the LUT-tree variant
+// (TileBits = 0) is built and tested with -DSPECULAR_SETUP_VARIANTS=ON.
 #include "Vsetup_lean.h"
+#if SPECULAR_SETUP_VARIANTS
+#include "Vsetup_lean_lut.h"
+#endif
 #include "setup_rtl_harness.hpp"
 
 #include <catch2/catch.hpp>
@@ -67,6 +71,21 @@ TEST_CASE("lean setup RTL: random spans bit-exact under random gaps, backpressur
   if (mode.p_reset == 0.0) CHECK(st.checked == spans.size());
   else CHECK(st.resets > 0);
 }
+
+#if SPECULAR_SETUP_VARIANTS
+TEST_CASE("lean setup RTL with LUT-tree multipliers (TileBits = 0): bit-exact", "[setup_lean_rtl]") {
+  Vsetup_lean_lut m;
+  std::vector<device::GeoSpan> spans = geo_cases::random_geo_spans(5000, 31337);
+  for (const auto& g : hard_and_near_degenerate()) spans.push_back(g);
+  const Stats st = run(m, spans, 0.9, 0.7, 0.0, 17, false, golden_lean);
+  INFO(st.first_mismatch);
+  WARN("specular_setup_lean, TileBits 0: " << st.checked << " descriptors checked bit for bit, " << st.mismatches
+                                          << " mismatches");
+  CHECK(st.checked == spans.size());
+  CHECK(st.mismatches == 0);
+  CHECK(st.hold_violations == 0);
+}
+#endif  // SPECULAR_SETUP_VARIANTS
 
 TEST_CASE("lean setup RTL: one span per clock with span_ready_i high", "[setup_lean_rtl]") {
   Vsetup_lean m;
