@@ -7,7 +7,7 @@
 # RAMs, DSPs, Fmax and pixels per second per harness and device. `make fpga` runs it; so does
 # `make report`. One Yosys for every figure: Debian's (rtl/fpga/README.md#ecp5 says why).
 #
-#   scripts/fpga.sh [--top unit|stream|axil|phong|setup|system|mul|all]
+#   scripts/fpga.sh [--top unit|stream|axil|phong|setup|setup_lean|system|mul|all]
 #                   [--device hx8k|up5k|ecp5|ecp5-25|ecp5-45|ecp5-85|all]
 #                   [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N]
 #                   [--freq-hx8k MHZ] [--freq-up5k MHZ] [--freq-ecp5 MHZ] [--flatten|--no-flatten]
@@ -19,7 +19,10 @@
 #                 AXI4-Lite core), all (default: those three) or phong (phong_stream, the
 #                 per-pixel Blinn-Phong competitor of docs/phong_hw.md; its configurations
 #                 by --param or --phong-config, roms/phong/phong_configs.cmake), setup
-#                 (specular_setup, the scanline setup in hardware, docs/setup_hw.md) or
+#                 (specular_setup, the scanline setup in hardware, docs/setup_hw.md),
+#                 setup_lean (specular_setup_lean, the lean setup,
+#                 docs/setup_hw.md#the-lean-datapath; as setup, its products in the
+#                 part's multiplier style) or
 #                 system (specular_system: the setup, then the stream) or mul
 #                 (specular_pipe_mul alone, 16 x 16: the smallest block, the flow's smoke test)
 #   --device      hx8k (iCE40-HX8K, package ct256), up5k (iCE40-UP5K, package sg48,
@@ -93,7 +96,7 @@ me=scripts/fpga.sh
 
 die_usage() {
   echo "$me: $*" >&2
-  echo "usage: $me [--top unit|stream|axil|phong|setup|system|mul|all] [--device hx8k|up5k|ecp5|ecp5-25|ecp5-45|ecp5-85|all] [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--freq-ecp5 MHZ] [--flatten|--no-flatten] [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only] [--setup-ii K] [--label NAME] [--record]" >&2
+  echo "usage: $me [--top unit|stream|axil|phong|setup|setup_lean|system|mul|all] [--device hx8k|up5k|ecp5|ecp5-25|ecp5-45|ecp5-85|all] [--out DIR] [--param NAME=VALUE]... [--phong-config NAME] [--seed N] [--freq-hx8k MHZ] [--freq-up5k MHZ] [--freq-ecp5 MHZ] [--flatten|--no-flatten] [--yosys-timeout S] [--strict] [--fresh] [--elaborate-only] [--setup-ii K] [--label NAME] [--record]" >&2
   exit 2
 }
 
@@ -144,12 +147,12 @@ while [ $# -gt 0 ]; do
 done
 
 case "$top_arg" in
-  unit|stream|axil|phong|setup|system|mul) tops=("$top_arg") ;;
+  unit|stream|axil|phong|setup|setup_lean|system|mul) tops=("$top_arg") ;;
   all)         tops=(unit stream axil) ;;
-  *) die_usage "--top must be one of unit, stream, axil, phong, setup, system, mul, all (got '$top_arg')" ;;
+  *) die_usage "--top must be one of unit, stream, axil, phong, setup, setup_lean, system, mul, all (got '$top_arg')" ;;
 esac
 if [ -z "$dev_arg" ]; then
-  case "$top_arg" in setup|system) dev_arg=hx8k,up5k,ecp5 ;; *) dev_arg=hx8k,up5k ;; esac
+  case "$top_arg" in setup|setup_lean|system) dev_arg=hx8k,up5k,ecp5 ;; *) dev_arg=hx8k,up5k ;; esac
 fi
 devices=()
 IFS=, read -r -a dev_list <<< "$dev_arg"
@@ -277,10 +280,10 @@ sources+=(rtl/fpga/fpga_ooc_io.sv rtl/fpga/fpga_ooc.sv)
 harness=fpga_ooc
 # fpga_ooc's parameter Top for each --top (rtl/fpga/fpga_ooc.sv).
 top_id_of()  { case "$1" in unit) echo 0 ;; stream) echo 1 ;; axil) echo 2 ;; phong) echo 3 ;;
-                            setup) echo 4 ;; system) echo 5 ;; mul) echo 6 ;; esac; }
+                            setup) echo 4 ;; system) echo 5 ;; mul) echo 6 ;; setup_lean) echo 7 ;; esac; }
 core_of()    { case "$1" in unit) echo specular_unit ;; stream) echo specular_stream ;; axil) echo specular_axil ;;
                             phong) echo phong_stream ;; setup) echo specular_setup ;; system) echo specular_system ;;
-                            mul) echo specular_pipe_mul ;; esac; }
+                            mul) echo specular_pipe_mul ;; setup_lean) echo specular_setup_lean ;; esac; }
 
 # Everything a run's result depends on: sources, ROM files (the defaults in roms/ and any
 # file named by a parameter), parameters, options, this script and the tool versions.
@@ -311,7 +314,7 @@ for top in "${tops[@]}"; do
   hier=0
   case "$flatten" in
     no)   hier=1 ;;
-    auto) case "$top" in setup|system) hier=1 ;; esac ;;
+    auto) case "$top" in setup|setup_lean|system) hier=1 ;; esac ;;
   esac
   for dev in "${devices[@]}"; do
     dir="$out/${top}${phong_cfg:+_$phong_cfg}${label:+_$label}${setup_ii:+_ii$setup_ii}_${dev}"
@@ -322,7 +325,7 @@ for top in "${tops[@]}"; do
     case "$dev" in hx8k) tile=0 ;; up5k) tile=16 ;; *) tile=18 ;; esac
     case "$top" in
       unit|stream|axil|system|phong) style_param="MulTileBits=$tile" ;;
-      mul) style_param="TileBits=$tile" ;;
+      mul|setup_lean) style_param="TileBits=$tile" ;;
     esac
     if [ -n "$style_param" ] && [[ " ${params[*]+"${params[*]}"} " == *" ${style_param%=*}="* ]]; then
       style_param=

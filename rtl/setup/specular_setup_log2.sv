@@ -16,16 +16,18 @@
 `include "specular_assert.svh"
 
 module specular_setup_log2 #(
+  // The argument's width: specular_setup's A (Q44 < 8); the lean setup's A^2 in Q52, read as
+  // Q44 as host::fixed::log2_unit reads any int64.
+  parameter int AmpW     = specular_setup_pkg::AmpW,
   parameter LogRecipFile = "roms/setup/log_recip.hex",
   parameter LogValueFile = "roms/setup/log_value.hex"
 ) (
   input  logic                                       clk_i,
   input  logic                                       en_i,
-  input  logic signed [specular_setup_pkg::AmpW-1:0] a_i,
+  input  logic signed [AmpW-1:0]                     a_i,
   output logic signed [specular_setup_pkg::LogW-1:0] log2_o
 );
 
-  localparam int AmpW      = specular_setup_pkg::AmpW;
   localparam int LogW      = specular_setup_pkg::LogW;
   localparam int UnitFrac  = specular_setup_pkg::UnitFrac;
   localparam int LogFrac   = specular_setup_pkg::LogFrac;

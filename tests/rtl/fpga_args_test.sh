@@ -17,7 +17,7 @@ expect() {  # expect REGEX ARGS...: exit 2 and stderr matching REGEX
   fi
 }
 expect "--device must be one of hx8k, up5k, ecp5, ecp5-25, ecp5-45, ecp5-85, all, or a comma-separated list of them \(got 'virtex7'\)" --device virtex7
-expect "--top must be one of unit, stream, axil, phong, setup, system, mul, all \(got 'core'\)" --top core
+expect "--top must be one of unit, stream, axil, phong, setup, setup_lean, system, mul, all \(got 'core'\)" --top core
 expect "--device must be one of hx8k, up5k, ecp5, ecp5-25, ecp5-45, ecp5-85, all, or a comma-separated list of them \(got 'hx8k,ecp6'\)" --top setup --device hx8k,ecp6
 expect "--device must be one of .* \(got 'ecp5-12'\)" --device ecp5-12
 expect "--seed must be a non-negative integer \(got 'abc'\)" --top phong --phong-config all --seed abc

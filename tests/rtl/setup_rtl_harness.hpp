@@ -1,13 +1,16 @@
 // SPDX-License-Identifier: Apache-2.0
-// The hardware setup's block-test harness (tests/rtl/test_setup.cpp, test_setup_ii.cpp):
-// drives geometry spans into a Verilator model of specular_setup (rtl/setup/specular_setup.sv) and
-// checks every descriptor field and the status against the golden model
-// host::fixed::setup_fixed, in order, under random input gaps, backpressure and resets.
+// The hardware setups' block-test harness (tests/rtl/test_setup.cpp, test_setup_ii.cpp,
+// test_setup_lean.cpp): drives geometry spans into a Verilator model of specular_setup or
+// specular_setup_lean (rtl/setup/; the same ports) and checks every descriptor field and the
+// status against a golden model, in order, under random input gaps, backpressure and resets.
+// The golden model is run()'s argument: host::fixed::setup_fixed (golden, the default) or
+// host::lean::setup_lean (golden_lean).
 #pragma once
 
 #include "geo_cases.hpp"
 #include "rtl_harness.hpp"
 #include "setup_fixed.hpp"
+#include "setup_lean.hpp"
 
 #include <cstdint>
 #include <cstdlib>
@@ -43,6 +46,13 @@ inline Out golden(const device::GeoSpan& g) {
   return {r.span, static_cast<int>(r.status)};
 }
 
+inline Out golden_lean(const device::GeoSpan& g) {
+  const host::lean::Result r = host::lean::setup_lean(g, kGeo, kFmt);
+  return {r.span, static_cast<int>(r.status)};
+}
+
+using Golden = Out (*)(const device::GeoSpan&);
+
 template <class M>
 void drive(M& m, const device::GeoSpan& g) {
   m.geo_n1_i = device::pack_vec(g.n1, kGeo);
@@ -77,10 +87,10 @@ struct Stats {
 // cycle of offering, of span_ready_i and of an asynchronous reset; spans in flight at a reset
 // are dropped, the one offered is offered again. Ends with span_ready_i high until empty.
 // he_eq_h1: for a model with HeEqH1 = 1, geo_he_i carries garbage and the golden model gets
-// He = H1.
+// He = H1. gold: the golden model the model must equal.
 template <class M>
 Stats run(M& m, const std::vector<device::GeoSpan>& spans, double p_valid, double p_ready, double p_reset, uint64_t seed,
-          bool he_eq_h1 = false) {
+          bool he_eq_h1 = false, Golden gold = golden) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   Stats st;
@@ -121,7 +131,7 @@ Stats run(M& m, const std::vector<device::GeoSpan>& spans, double p_valid, doubl
     if (accept) {
       device::GeoSpan g = spans[next];
       if (he_eq_h1) g.he = g.h1;
-      expected.push_back(golden(g));
+      expected.push_back(gold(g));
       ++st.accepted, ++next, offering = false;
     }
     if (p_reset > 0.0 && u01(rng) < p_reset) {

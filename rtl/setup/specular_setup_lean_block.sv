@@ -1,0 +1,81 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// specular_setup_lean_block: block normalization, N components shifted by one common power of
+// two, rounded half up, so that the largest magnitude lies in [2^(Bits-1), 2^Bits]; the zero
+// vector stays 0 (the golden model's host::lean::block_normalize; docs/setup_hw.md#the-lean-datapath,
+// steps 3 and 4). One vector per clock.
+//
+//   stage 1  |x_i|
+//   stage 2  s = bit width(OR of the |x_i|) - Bits (the OR has the bit width of the largest)
+//   stage 3  y_i = x_i >> (s - 1), or x_i << (1 - s) when s <= 0 (a shifter, no adder)
+//   stage 4  (y_i + 1) >> 1: the rounding of s > 0; exact for s <= 0 (y_i even)
+// Stages: specular_setup_lean_pkg::BlockStages. en_i freezes every stage. No reset.
+
+`include "specular_assert.svh"
+
+module specular_setup_lean_block #(
+  parameter int N    = 3,
+  parameter int InW  = 64,
+  parameter int Bits = 28
+) (
+  input  logic                    clk_i,
+  input  logic                    en_i,
+  input  logic [N*InW-1:0]        x_i,   // component i at [i*InW +: InW], signed
+  output logic [N*(Bits+2)-1:0]   x_o    // component i at [i*(Bits+2) +: Bits+2], signed
+);
+
+  localparam int OutW   = Bits + 2;
+  localparam int YW     = Bits + 3;
+  localparam int Stages = 4;
+
+  if (Stages != specular_setup_lean_pkg::BlockStages) begin : gen_stage_check
+    `SPEC_PARAM_ERROR("specular_setup_lean_block: BlockStages disagrees with the stages built here")
+  end
+  if (InW < 2 || InW > 120 || Bits < 2) begin : gen_width_check
+    `SPEC_PARAM_ERROR("specular_setup_lean_block: InW must be in 2..120, Bits >= 2")
+  end
+
+  logic [N*InW-1:0] x1_q, x2_q, mag_q;
+  logic [InW-1:0]   all_d;
+  logic signed [7:0] sh_d, sh_q;
+  always_comb begin
+    all_d = '0;
+    for (int i = 0; i < N; i++) begin
+      all_d = all_d | mag_q[i*InW +: InW];
+    end
+    sh_d = '0;
+    for (int b = 0; b < InW; b++) begin
+      if (all_d[b]) sh_d = 8'(b + 1 - Bits);
+    end
+  end
+
+  for (genvar i = 0; i < N; i++) begin : gen_comp
+    logic signed [InW-1:0] x2;
+    logic signed [YW-1:0]  y_q;
+    assign x2 = x2_q[i*InW +: InW];
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        // stage 1
+        mag_q[i*InW +: InW] <= x_i[i*InW + InW - 1] ? InW'(-$signed(x_i[i*InW +: InW])) : x_i[i*InW +: InW];
+        // stage 3 (the true value fits YW bits, so the truncation of a left shift is exact)
+        if (sh_q >= 8'sd1) begin
+          y_q <= YW'(x2 >>> (sh_q - 8'sd1));
+        end else begin
+          y_q <= YW'({{YW{x2[InW-1]}}, x2} << (8'sd1 - sh_q));
+        end
+        // stage 4
+        x_o[i*OutW +: OutW] <= OutW'((y_q + YW'(1)) >>> 1);
+      end
+    end
+  end
+
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      x1_q <= x_i;
+      x2_q <= x1_q;
+      sh_q <= sh_d;
+    end
+  end
+
+endmodule

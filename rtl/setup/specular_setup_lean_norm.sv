@@ -1,0 +1,223 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// specular_setup_lean_norm: a vector of any scale scaled to unit length, Q26, one vector per
+// clock: host::lean::normalize and host::lean::rsqrt (model/host/setup_lean.cpp;
+// docs/setup_hw.md#the-lean-datapath, steps 2 and 5). The seed of 1/sqrt is interpolated
+// between two words of a 385-word table and refined by one Newton-Raphson step; every
+// product is a specular_setup_smul and every rounding has a stage of its own, so no stage
+// holds more than one carry chain. The zero vector gives 0.
+//
+//   S1              sq_i = v_i^2 (three multipliers)
+//   +1, +2          sq = sq_x + sq_y, + sq_z
+//   +3              k = floor((30 - bit width(sq)) / 2) (a priority encoder)
+//   +4              m = sq 4^k in [2^28, 2^30) (a shifter)
+//   +5              the two seed words y0 = word j - 128, y1 = word j - 127, j = m >> 21 (ROMs)
+//   +6              d = y0 - y1                  then S(d t): t = the next 9 bits of m
+//   +1, +2          rshift_round(d t, 9); seed = y0 - that (Q18)
+//   S, +1           s2 = rshift_round(seed^2, 8)
+//   S, +1, +2       xs2 = rshift_round(m s2, 30); e = 3 2^28 - xs2
+//   S, +1           r = rshift_round(seed e, 19) (Q28)
+//   S, +1, +2       u_i = rshift_round(v_i r, 17 - k): a shift by 16 - k, then (y + 1) >> 1
+// (S: a specular_setup_smul.) Stages: the localparam Stages (specular_setup_lean_pkg::norm_stages).
+// en_i freezes every stage. No reset.
+
+`include "specular_assert.svh"
+
+module specular_setup_lean_norm #(
+  parameter int InW      = 18,   // input components, signed, any common scale
+  parameter int TileBits = 18,
+  parameter     SeedFile = "roms/setup/rsqrt_seed_lean.hex"
+) (
+  input  logic                                             clk_i,
+  input  logic                                             en_i,
+  input  logic signed [InW-1:0]                            x_i,
+  input  logic signed [InW-1:0]                            y_i,
+  input  logic signed [InW-1:0]                            z_i,
+  output logic signed [specular_setup_lean_pkg::UnitW-1:0] x_o,
+  output logic signed [specular_setup_lean_pkg::UnitW-1:0] y_o,
+  output logic signed [specular_setup_lean_pkg::UnitW-1:0] z_o
+);
+
+  localparam int B        = specular_setup_lean_pkg::RsqrtInBits;   // 30
+  localparam int RFrac    = specular_setup_lean_pkg::RsqrtFrac;     // 28
+  localparam int Frac     = specular_setup_lean_pkg::Frac;          // 26
+  localparam int SFrac    = specular_setup_lean_pkg::SeedFrac;      // 18
+  localparam int ABits    = specular_setup_lean_pkg::SeedAddrBits;  // 9
+  localparam int IBits    = specular_setup_lean_pkg::SeedInterpBits;
+  localparam int SeedW    = specular_setup_lean_pkg::SeedW;         // 20
+  localparam int UnitW    = specular_setup_lean_pkg::UnitW;
+  localparam int RW       = specular_setup_lean_pkg::RW;            // 32
+  localparam int SqW      = 2 * InW + 2;
+  localparam int SW       = SeedW + 1;    // seed, signed
+  localparam int S2W      = 2 * SeedW - (2 * SFrac - RFrac) + 2;  // s2 < 2^31: 34 bits signed
+  localparam int XW       = B + 1;        // m, signed
+  localparam int EW       = RFrac + 5;    // e = 3 - x s^2 in (0, 3]: Q28, signed
+  localparam int PW       = InW + RW;     // v_i r
+
+  // The schedule: each value's stage.
+  localparam int LSq   = specular_setup_lean_pkg::smul_stages(InW);
+  localparam int LDt   = specular_setup_lean_pkg::smul_stages(SW);
+  localparam int LSs   = specular_setup_lean_pkg::smul_stages(SW);
+  localparam int LMs   = specular_setup_lean_pkg::smul_stages(S2W);
+  localparam int LSe   = specular_setup_lean_pkg::smul_stages(EW);
+  localparam int LVr   = specular_setup_lean_pkg::smul_stages(RW);
+  localparam int TSq   = LSq + 2;      // sq
+  localparam int TK    = TSq + 1;      // k
+  localparam int TM    = TK + 1;       // m
+  localparam int TRom  = TM + 1;       // y0, y1
+  localparam int TD    = TRom + 1;     // d
+  localparam int TRd   = TD + LDt + 1; // rshift_round(d t, 9)
+  localparam int TSeed = TRd + 1;      // seed
+  localparam int TS2   = TSeed + LSs + 1;
+  localparam int TE    = TS2 + LMs + 2;
+  localparam int TR    = TE + LSe + 1;
+  localparam int Stages = TR + LVr + 2;
+
+  if (Stages != specular_setup_lean_pkg::norm_stages(InW)) begin : gen_stage_check
+    `SPEC_PARAM_ERROR("specular_setup_lean_norm: specular_setup_lean_pkg::norm_stages disagrees with the stages built here")
+  end
+
+  // ---- S1 .. +2: the squared length ----
+  logic signed [2*InW-1:0] sqx, sqy, sqz;
+  specular_setup_smul #(.ABits(InW), .BBits(InW), .TileBits(TileBits)) u_sqx (
+    .clk_i (clk_i), .en_i (en_i), .a_i (x_i), .b_i (x_i), .p_o (sqx));
+  specular_setup_smul #(.ABits(InW), .BBits(InW), .TileBits(TileBits)) u_sqy (
+    .clk_i (clk_i), .en_i (en_i), .a_i (y_i), .b_i (y_i), .p_o (sqy));
+  specular_setup_smul #(.ABits(InW), .BBits(InW), .TileBits(TileBits)) u_sqz (
+    .clk_i (clk_i), .en_i (en_i), .a_i (z_i), .b_i (z_i), .p_o (sqz));
+  logic [SqW-1:0] sq01_q, sqz_q, sq_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      sq01_q <= SqW'(sqx) + SqW'(sqy);
+      sqz_q  <= SqW'(sqz);
+      sq_q   <= sq01_q + sqz_q;
+    end
+  end
+
+  // ---- +3, +4: k and m ----
+  logic signed [7:0] k_d, k_q, k_m;
+  always_comb begin
+    k_d = 8'(B / 2);  // sq = 0: any k (m = 0 and the output 0)
+    for (int b = 0; b < SqW; b++) begin
+      if (sq_q[b]) k_d = 8'((B - b - 1) >= 0 ? (B - b - 1) / 2 : -((b + 2 - B) / 2));
+    end
+  end
+  logic [SqW-1:0] sq_k;
+  logic [B-1:0]   m_q;
+  localparam int ShW = SqW > B ? SqW : B;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      k_q  <= k_d;
+      sq_k <= sq_q;
+      k_m  <= k_q;
+      if (k_q >= 0) begin
+        m_q <= B'(ShW'(sq_k) << (2 * k_q));
+      end else begin
+        m_q <= B'(ShW'(sq_k) >> (-2 * k_q));
+      end
+    end
+  end
+
+  // ---- +5: the seed words ----
+  logic [ABits-1:0] a0, a1;
+  assign a0 = m_q[B-1 -: ABits] - ABits'(128);
+  assign a1 = m_q[B-1 -: ABits] - ABits'(127);
+  logic [SeedW-1:0] y0, y1;
+  specular_rom #(.Width(SeedW), .AddrBits(ABits), .Depth(specular_setup_lean_pkg::SeedWords), .File(SeedFile)) u_rom0 (
+    .clk_i (clk_i), .en_i (en_i), .addr_i (a0), .data_o (y0));
+  specular_rom #(.Width(SeedW), .AddrBits(ABits), .Depth(specular_setup_lean_pkg::SeedWords), .File(SeedFile)) u_rom1 (
+    .clk_i (clk_i), .en_i (en_i), .addr_i (a1), .data_o (y1));
+  logic [IBits-1:0] t_rom, t_d;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      t_rom <= m_q[B-ABits-1 -: IBits];
+      t_d   <= t_rom;
+    end
+  end
+
+  // ---- +6 .. : the interpolated seed ----
+  logic signed [SW-1:0] d_q, y0_rd, seed_q;
+  logic signed [SW+IBits:0] dt;
+  logic signed [SW-1:0] rd_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      d_q <= SW'(y0) - SW'(y1);
+    end
+  end
+  specular_setup_smul #(.ABits(IBits + 1), .BBits(SW), .TileBits(TileBits)) u_dt (
+    .clk_i (clk_i), .en_i (en_i), .a_i ($signed({1'b0, t_d})), .b_i (d_q), .p_o (dt));
+  specular_delay #(.Width(SW), .Depth(TRd - TRom), .Reset(1'b0)) u_dly_y0 (
+    .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (SW'(y0)), .q_o (y0_rd));
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      rd_q   <= SW'((dt + (SW + IBits + 1)'(1 << (IBits - 1))) >>> IBits);
+      seed_q <= y0_rd - rd_q;
+    end
+  end
+
+  // ---- s2 = seed^2, xs2 = m s2, e, r ----
+  logic signed [2*SW-1:0] ss;
+  logic signed [S2W-1:0]  s2_q;
+  specular_setup_smul #(.ABits(SW), .BBits(SW), .TileBits(TileBits)) u_ss (
+    .clk_i (clk_i), .en_i (en_i), .a_i (seed_q), .b_i (seed_q), .p_o (ss));
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      s2_q <= S2W'((ss + (2 * SW)'(1 << (2 * SFrac - RFrac - 1))) >>> (2 * SFrac - RFrac));
+    end
+  end
+  logic [B-1:0] m_s2;
+  specular_delay #(.Width(B), .Depth(TS2 - TM), .Reset(1'b0)) u_dly_m (
+    .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (m_q), .q_o (m_s2));
+  logic signed [XW+S2W-1:0] ms;
+  specular_setup_smul #(.ABits(XW), .BBits(S2W), .TileBits(TileBits)) u_ms (
+    .clk_i (clk_i), .en_i (en_i), .a_i ($signed({1'b0, m_s2})), .b_i (s2_q), .p_o (ms));
+  logic signed [EW-1:0] xs2_q, e_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      xs2_q <= EW'((ms + ((XW + S2W)'(1) <<< (B - 1))) >>> B);
+      e_q   <= EW'(64'sd3 <<< RFrac) - xs2_q;
+    end
+  end
+  logic signed [SW-1:0] seed_e;
+  specular_delay #(.Width(SW), .Depth(TE - TSeed), .Reset(1'b0)) u_dly_seed (
+    .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (seed_q), .q_o (seed_e));
+  logic signed [SW+EW-1:0] se;
+  specular_setup_smul #(.ABits(SW), .BBits(EW), .TileBits(TileBits)) u_se (
+    .clk_i (clk_i), .en_i (en_i), .a_i (seed_e), .b_i (e_q), .p_o (se));
+  logic signed [RW-1:0] r_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      r_q <= RW'((se + (SW + EW)'(1 << SFrac)) >>> (SFrac + 1));
+    end
+  end
+
+  // ---- u_i = rshift_round(v_i r, 17 - k) ----
+  logic [3*InW-1:0] v_r;
+  specular_delay #(.Width(3 * InW), .Depth(TR), .Reset(1'b0)) u_dly_v (
+    .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i ({z_i, y_i, x_i}), .q_o (v_r));
+  logic signed [7:0] k_u;
+  specular_delay #(.Width(8), .Depth(TR + LVr - TK), .Reset(1'b0)) u_dly_k (
+    .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (k_q), .q_o (k_u));
+  logic signed [UnitW-1:0] u [3];
+  for (genvar i = 0; i < 3; i++) begin : gen_scale
+    logic signed [PW-1:0]      vr;
+    logic signed [UnitW+1:0]   y_q;
+    specular_setup_smul #(.ABits(InW), .BBits(RW), .TileBits(TileBits)) u_vr (
+      .clk_i (clk_i), .en_i (en_i), .a_i (v_r[i*InW +: InW]), .b_i (r_q), .p_o (vr));
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        // s = RFrac + B/2 - Frac - k >= 3: the shift by s - 1, then the rounding.
+        y_q  <= (UnitW + 2)'(vr >>> (8'(RFrac + B / 2 - Frac - 1) - k_u));
+        u[i] <= UnitW'((y_q + (UnitW + 2)'(1)) >>> 1);
+      end
+    end
+  end
+  assign x_o = u[0];
+  assign y_o = u[1];
+  assign z_o = u[2];
+
+  logic unused;
+  assign unused = ^{k_m, sq_k[0]};
+
+endmodule

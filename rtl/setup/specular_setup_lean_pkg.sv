@@ -1,0 +1,102 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// specular_setup_lean_pkg: the widths, constants and stage counts of the lean hardware setup
+// (rtl/setup/specular_setup_lean.sv, docs/setup_hw.md#the-lean-datapath) at the golden
+// model's unit width F = 26 (host::lean::kFrac, model/host/setup_lean.hpp, where each is
+// defined). The lines holding the model's values are printed by
+// `build/bin/setup_romgen --lean-consts`, and ctest rtl_setup_lean_pkg
+// (setup_romgen --check-lean-pkg) fails if one differs. The seed table is a ROM file
+// (roms/setup/rsqrt_seed_lean.hex).
+//
+// Written for Yosys 0.23 and Verilator alike: functions return through their name, no local
+// variables; callers write specular_setup_lean_pkg::f(...).
+
+/* verilator lint_off UNUSEDPARAM */
+package specular_setup_lean_pkg;
+
+  // ---- The model's widths and constants (setup_romgen --lean-consts) ----
+  localparam int Frac = 26;
+  localparam int SeedAddrBits = 9;
+  localparam int SeedInterpBits = 9;
+  localparam int SeedFrac = 18;
+  localparam int SeedWords = 385;
+  localparam int FlatLog2 = 44;
+  localparam int OppHalfLog2 = 20;
+  localparam int OppNormLog2 = 12;
+  localparam int RsqrtInBits = 30;
+  localparam int RsqrtFrac = 28;
+  localparam int BlockBits = 28;
+  localparam int CordicFrac = 29;
+  localparam int CordicIters = 28;
+  localparam int CordicW = 34;
+  localparam int GammaFrac = 30;
+  localparam int RecipLenFrac = 31;
+  localparam int LogFrac = 30;
+  localparam int LogUnitFrac = 44;
+  localparam logic signed [63:0] Pi = 64'sd1686629713;
+
+  // ---- Widths of the datapath (derived; each holds its value with margin) ----
+  localparam int SeedW  = SeedFrac + 2;  // seed words in (2^18, 2^19]: 20 bits, unsigned
+  localparam int UnitW  = Frac + 2;      // unit vectors, Q26: |value| < 2
+  localparam int BlkW   = BlockBits + 2; // block-normalized: |value| <= 2^28
+  localparam int RW     = Frac + 6;      // 1/sqrt, Q28 in (1, 2]
+  localparam int A2W    = 2 * Frac + 3;  // A^2, Q52: < 2 (Cauchy-Schwarz and rounding)
+  localparam int AngleBits = 32;         // psi0, dpsi (device::Format)
+  localparam int AngleFrac = 28;
+
+  // round(atan(2^-i) 2^CordicFrac): host::fixed's Q50 words rounded half up (lean::atan_word).
+  function automatic logic signed [63:0] atan_word(input int i);
+    case (i)
+      0: atan_word = 64'sd421657428;
+      1: atan_word = 64'sd248918915;
+      2: atan_word = 64'sd131521918;
+      3: atan_word = 64'sd66762579;
+      4: atan_word = 64'sd33510843;
+      5: atan_word = 64'sd16771758;
+      6: atan_word = 64'sd8387925;
+      7: atan_word = 64'sd4194219;
+      8: atan_word = 64'sd2097141;
+      9: atan_word = 64'sd1048575;
+      10: atan_word = 64'sd524288;
+      11: atan_word = 64'sd262144;
+      12: atan_word = 64'sd131072;
+      13: atan_word = 64'sd65536;
+      14: atan_word = 64'sd32768;
+      15: atan_word = 64'sd16384;
+      16: atan_word = 64'sd8192;
+      17: atan_word = 64'sd4096;
+      18: atan_word = 64'sd2048;
+      19: atan_word = 64'sd1024;
+      20: atan_word = 64'sd512;
+      21: atan_word = 64'sd256;
+      22: atan_word = 64'sd128;
+      23: atan_word = 64'sd64;
+      24: atan_word = 64'sd32;
+      25: atan_word = 64'sd16;
+      26: atan_word = 64'sd8;
+      27: atan_word = 64'sd4;
+      default: atan_word = 64'sd0;
+    endcase
+  endfunction
+
+  // ---- Stage counts ----
+  // specular_pipe_mul's stages for a BBits-wide multiplier operand (specular_pkg::pipe_mul_stages).
+  function automatic int pipe_mul_stages(input int b_bits);
+    pipe_mul_stages = 1 + ((((b_bits + 1) / 2) > 1) ? $clog2((b_bits + 1) / 2) : 0);
+  endfunction
+  // specular_setup_smul (signed, B bits): magnitudes, 3|a|, the multiplier, the sign.
+  function automatic int smul_stages(input int b_bits);
+    smul_stages = 3 + pipe_mul_stages(b_bits);
+  endfunction
+  // specular_setup_lean_norm for InW-bit components (the module checks its own count).
+  function automatic int norm_stages(input int in_w);
+    norm_stages = smul_stages(in_w) + 6 + smul_stages(SeedW + 1) + 2 + smul_stages(SeedW + 1) + 1
+                + smul_stages(2 * SeedW - (2 * SeedFrac - RsqrtFrac) + 2) + 2 + smul_stages(RsqrtFrac + 5) + 1
+                + smul_stages(RW) + 2;
+  endfunction
+  localparam int BlockStages  = 4;                // specular_setup_lean_block
+  localparam int CordicStages = 1 + CordicIters;  // specular_setup_lean_cordic
+
+endpackage
+/* verilator lint_on UNUSEDPARAM */
