@@ -103,39 +103,6 @@ inline std::vector<Hard> hard_cases() {
   return h;
 }
 
-// Spans the hard cases do not reach: He a few codes from -H1, N2 a few codes from -N1, and
-// tiny chords between codes at the largest C (docs/setup_hw.md#the-contract).
-inline std::vector<GeoSpan> near_degenerate_spans() {
-  std::vector<GeoSpan> v;
-  for (int d : {0, 1, 2, 3, 5, 10, 30, 300, 3000})
-    for (int y : {1, 7}) {
-      GeoSpan g;
-      g.n1 = g.n2 = {0, 0, 65536};
-      g.h1 = {131071, y, 0};
-      g.he = {-131071 + d, -y, 0};
-      g.n = 100, g.len = 100, g.scale = 30000;
-      v.push_back(g);
-    }
-  for (int d : {0, 1, 3, 10, 100, 300, 1000, 3000, 10000}) {
-    GeoSpan g;
-    g.n1 = {12000, -5000, 60000};
-    g.n2 = {-12000 + d, 5000, -60000};
-    g.h1 = {3000, 2000, 65000};
-    g.he = {-2000, 1000, 65000};
-    g.n = 200, g.len = 40, g.scale = 50000;
-    v.push_back(g);
-  }
-  for (int d : {1, 2, 3, 5}) {
-    GeoSpan g;
-    g.n1 = g.n2 = g.h1 = {1000, 2000, 65000};
-    g.he = {1000 + d, 2000 - d, 65000};
-    g.n = 1000, g.len = 2047, g.scale = 65535;
-    v.push_back(g);
-  }
-  return v;
-}
-
-
 // Spans of the interface: host::random_spans quantized, with vectors of every length the
 // interface carries (unit, shortened like a rasterizer's lerped normals, tiny, up to the
 // maximum) and a share of flat spans.
