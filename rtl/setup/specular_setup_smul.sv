@@ -6,10 +6,10 @@
 // the lean setup goes through one). Signs are taken off before the multiplier and put back
 // after it, so the multiplier stays unsigned and its stages keep one carry chain each.
 //
-//   stage 1          |a|, |b|, the sign of the product
-//   stage 2          3|a| (the LUT tree's digit row; dropped by synthesis with DSP tiles)
-//   stages 3 .. 2+M  specular_pipe_mul (M = pipe_mul_stages(BBits))
-//   stage 3+M        the sign put back (negate or not)
+//   first stage   |a|, |b|, the sign of the product
+//   second stage  3|a| (the LUT tree's digit row; dropped by synthesis with DSP tiles)
+//   then          specular_pipe_mul (specular_pkg::pipe_mul_stages(BBits))
+//   last stage    the sign put back (negate or not)
 // Stages: specular_setup_lean_pkg::smul_stages(BBits). en_i freezes every stage. No reset.
 
 module specular_setup_smul #(
