@@ -7,6 +7,7 @@
 #include "Vspecular_system.h"
 #include "system_setup_ii.inc"  // SPECULAR_SYSTEM_SETUP_II (sim/CMakeLists.txt)
 #if SPECULAR_SYSTEM_SETUP_II
+#include "Vspecular_system_ii1.h"
 #include "Vspecular_system_ii2.h"
 #include "Vspecular_system_ii4.h"
 #include "Vspecular_system_ii8.h"
@@ -15,7 +16,9 @@
 #include "geo_span.hpp"
 #include "metrics.hpp"
 #include "setup_batch.hpp"
+#include "setup_contract.hpp"
 #include "setup_fixed.hpp"
+#include "setup_lean.hpp"
 #include "verilated_model.hpp"
 
 #include <algorithm>
@@ -41,7 +44,8 @@ struct Pixel {
 template <class V>
 class Bench {
  public:
-  Bench(const BuildConfig& bc, const device::DeviceModel& dm) : bc_(bc), dm_(dm), vm_("specular_system"), top_(vm_.top()) {
+  Bench(const BuildConfig& bc, const device::DeviceModel& dm, bool lean)
+      : bc_(bc), dm_(dm), lean_(lean), vm_("specular_system"), top_(vm_.top()) {
     vm_.power_up();
   }
   V* top() const { return top_; }
@@ -72,28 +76,45 @@ class Bench {
     top_->geo_tag_i = static_cast<uint16_t>(g.tag);
   }
 
+  static void note_setup(const host::PixelAgreement& a, SystemRunStats& st) {
+    st.setup_violations += !a.ok();
+    st.setup_worst = std::max(st.setup_worst, a.worst);
+    st.setup_rel = std::max(st.setup_rel, a.max_rel_epicenter);
+    st.setup_lsb = std::max(st.setup_lsb, a.max_abs_lsb);
+  }
+
   // The expected pixels of a span, and its setup error into `st`.
   void expect(const device::GeoSpan& g, bool accuracy, SystemRunStats& st, std::deque<Pixel>& out) const {
     const device::Format& f = bc_.f;
-    const host::fixed::Result r = host::fixed::setup_fixed(g, geo_cases::kGeo, f);
+    host::lean::Result lr;
+    host::fixed::Result fr;
+    if (lean_) lr = host::lean::setup_lean(g, geo_cases::kGeo, f);
+    else fr = host::fixed::setup_fixed(g, geo_cases::kGeo, f);
+    const device::Span& span = lean_ ? lr.span : fr.span;
     std::vector<device::StreamPixel> px;
-    dm_.stream_span(r.span, px);
+    dm_.stream_span(span, px);
     if (!accuracy) {
       for (const auto& p : px) out.push_back({p});
       return;
     }
     const ScanlineInput in = device::geo_input(g, geo_cases::kGeo, f);
-    const ScanlineSetup s = scanline_setup(in);
+    ScanlineSetup s;
     bool c_sat = false;
-    const device::Registers ref_reg = host::span_registers(in, f, &c_sat);
-    if (r.status != s.status) {
-      if (st.status_mismatches++ == 0) st.first_errors.push_back("setup status differs from scanline_setup's");
+    if (lean_) {
+      const host::ContractCheck c = host::check_contract(
+          g, lr.status, {lr.trace.opposite_normals, lr.trace.flat, lr.trace.opposite_halfway}, lr.span.reg, geo_cases::kGeo, f);
+      if (!c.decisions_equal && st.status_mismatches++ == 0)
+        st.first_errors.push_back("setup decisions differ from the contract's reference outside the guard bands");
+      note_setup(c.pixels, st);
+      s = c.ref_setup;
+      c_sat = device::load_registers(s, in.n, in.l, f).c_saturated;
+    } else {
+      s = scanline_setup(in);
+      const device::Registers ref_reg = host::span_registers(in, f, &c_sat);
+      if (fr.status != s.status && st.status_mismatches++ == 0)
+        st.first_errors.push_back("setup status differs from scanline_setup's");
+      note_setup(host::compare_pixels(fr.span.reg, ref_reg, f), st);
     }
-    const auto a = host::compare_pixels(r.span.reg, ref_reg, f);
-    st.setup_violations += !a.ok();
-    st.setup_worst = std::max(st.setup_worst, a.worst);
-    st.setup_rel = std::max(st.setup_rel, a.max_rel_epicenter);
-    st.setup_lsb = std::max(st.setup_lsb, a.max_abs_lsb);
     st.c_saturated_spans += c_sat;
     const double lsb = std::ldexp(1.0, -f.c_frac), n = in.n;
     const bool valid_n = s.status != SetupStatus::invalid_input;
@@ -118,6 +139,7 @@ class Bench {
  private:
   const BuildConfig& bc_;
   const device::DeviceModel& dm_;
+  bool lean_;
   VerilatedModel<V> vm_;
   V* top_;
   uint64_t cycle_ = 0;
@@ -220,7 +242,7 @@ SystemStats run_all(const std::vector<LoadedScene>& scenes, const BuildConfig& b
                     int setup_ii) {
   const auto t0 = std::chrono::steady_clock::now();
   const device::DeviceModel dm = load_device_model(bc.f, bc.coef_hex(), bc.cos_hex());
-  Bench<V> b(bc, dm);
+  Bench<V> b(bc, dm, setup_ii == 0);
   SystemStats out;
   out.setup_ii = setup_ii;
   const uint32_t tag_mask = (1u << geo_cases::kGeo.tag_bits) - 1;
@@ -250,26 +272,29 @@ SystemStats run_all(const std::vector<LoadedScene>& scenes, const BuildConfig& b
 }  // namespace
 
 bool system_setup_ii_built(int setup_ii) {
-  return setup_ii == 1 || (SPECULAR_SYSTEM_SETUP_II && (setup_ii == 2 || setup_ii == 4 || setup_ii == 8));
+  return setup_ii == 0 || (SPECULAR_SYSTEM_SETUP_II && (setup_ii == 1 || setup_ii == 2 || setup_ii == 4 || setup_ii == 8));
 }
 
 SystemStats run_system_stage(const std::vector<LoadedScene>& scenes, const BuildConfig& bc, uint64_t seed,
                              uint64_t random_spans, int setup_ii) {
 #if SPECULAR_SYSTEM_SETUP_II
+  if (setup_ii == 1) return run_all<Vspecular_system_ii1>(scenes, bc, seed, random_spans, setup_ii);
   if (setup_ii == 2) return run_all<Vspecular_system_ii2>(scenes, bc, seed, random_spans, setup_ii);
   if (setup_ii == 4) return run_all<Vspecular_system_ii4>(scenes, bc, seed, random_spans, setup_ii);
   if (setup_ii == 8) return run_all<Vspecular_system_ii8>(scenes, bc, seed, random_spans, setup_ii);
 #endif
-  if (setup_ii != 1) throw std::invalid_argument("SetupII " + std::to_string(setup_ii) + " is not built");
+  if (setup_ii != 0)
+    throw std::invalid_argument("the system with the Q44 setup at SetupII " + std::to_string(setup_ii) + " is not built");
   return run_all<Vspecular_system>(scenes, bc, seed, random_spans, setup_ii);
 }
 
 void print_system_summary(const SystemStats& s) {
-  std::printf("\nSystem stage: specular_system, SetupII %d (setup in hardware -> specular_stream), geometry spans to pixels, %.1f s\n"
-              "  bit-exact against setup_fixed + DeviceModel::stream; setup error = fixed-point setup against the scalar\n"
-              "  double setup (0.01 %% + 1 LSB); end to end = RTL pixels against C cos^n(psi_i) of the scalar double setup\n"
+  std::printf("\nSystem stage: specular_system, %s (setup in hardware -> specular_stream), geometry spans to pixels, %.1f s\n"
+              "  bit-exact against %s + DeviceModel::stream; setup error = fixed-point setup against the scalar\n"
+              "  double setup%s (0.01 %% + 1 LSB); end to end = RTL pixels against C cos^n(psi_i) of that setup\n"
               "  (device budget + 1 LSB); px/clock with px_ready_i high (fill: from the first accept; steady: first to last pixel)\n",
-              s.setup_ii, s.seconds);
+              s.name().c_str(), s.seconds, s.setup_ii == 0 ? "setup_lean" : "setup_fixed",
+              s.setup_ii == 0 ? " under the lean rule (host::check_contract)" : "");
   std::printf("  %-14s %8s %9s %5s %5s %9s %9s %10s %8s %10s %8s %6s\n", "run", "spans", "pixels", "mism", "prot",
               "px/clk", "px/clk", "setup rel", "setup", "e2e rel", "e2e", "e2e");
   std::printf("  %-14s %8s %9s %5s %5s %9s %9s %10s %8s %10s %8s %6s\n", "", "", "", "", "", "fill", "steady",

@@ -2,22 +2,25 @@
 // Copyright (c) the specular_device authors.
 //
 // specular_system: a complete specular shading system in hardware, geometry in, pixels out
-// (docs/setup_hw.md#the-system): specular_setup turns each geometry span
+// (docs/setup_hw.md#the-system): the setup (specular_setup_lean by default, LeanSetup = 1;
+// specular_setup, the Q44 formulation, with LeanSetup = 0) turns each geometry span
 // (docs/interfaces.md#geometry-span-interface) into a span descriptor, specular_stream
 // shades its l + 1 pixels. The pixel side is exactly specular_stream's (px_valid_o,
 // px_ready_i, px_intensity_o, px_last_o, px_tag_o, same rules); the geometry side follows
 // the same AXI4-Stream rules, geo_ready_o a function of registers only (specular_setup's).
 //
 // The setup takes a span per clock (SetupII = 1; at most one every SetupII clocks otherwise,
-// docs/setup_hw.md#sharing-over-setupii-clocks) and the stream a pixel per clock, so with
+// docs/setup_hw.md#sharing-over-setupii-clocks; the lean setup only at SetupII = 1) and the
+// stream a pixel per clock, so with
 // px_ready_i high and SetupII = 1 the system shades one pixel per clock, one-pixel spans back
 // to back included; the setup's two-entry output buffer holds the descriptors while the
 // stream works on a long span. The setup's status is not on the pixel side: a span it resolves to C = 0 gives l + 1
 // pixels of 0.
 //
 // Parameters: the core's list (rtl/core/specular_params.svh) with the register formats the setup
-// produces (device::Format's defaults), VecBits, TagBits, the setup's HeEqH1 and SetupII and
-// its ROM files.
+// produces (device::Format's defaults), VecBits, TagBits, LeanSetup, the Q44 setup's HeEqH1 and
+// SetupII, the setups' ROM files. The lean setup's multipliers take the core's MulTileBits (one
+// multiplier style for the whole system: DSP tiles or LUT trees, docs/pipeline.md#multiplier-styles).
 
 `include "specular_assert.svh"
 `include "specular_params.svh"
@@ -28,9 +31,11 @@ module specular_system #(
   `SPECULAR_CORE_PARAMS,
   parameter int TagBits       = 16,
   parameter int VecBits       = 18,
+  parameter bit LeanSetup     = 1'b1,  // 1: specular_setup_lean; 0: specular_setup (Q44)
   parameter bit HeEqH1        = 1'b0,  // specular_setup's: geo_he_i ignored, He = H1
   parameter int SetupII       = 1,     // specular_setup's: at most one span every SetupII clocks
   parameter     RsqrtSeedFile = "roms/setup/rsqrt_seed.hex",
+  parameter     LeanSeedFile  = "roms/setup/rsqrt_seed_lean.hex",
   parameter     LogRecipFile  = "roms/setup/log_recip.hex",
   parameter     LogValueFile  = "roms/setup/log_value.hex",
   parameter     Exp2File      = "roms/setup/exp2.hex",
@@ -50,6 +55,9 @@ module specular_system #(
   if (SetupII != 1 && SetupII != 2 && SetupII != 4 && SetupII != 8) begin : gen_ii_check
     `SPEC_PARAM_ERROR("specular_system: SetupII must be 1, 2, 4 or 8")
   end
+  if (LeanSetup && (SetupII != 1 || HeEqH1)) begin : gen_lean_check
+    `SPEC_PARAM_ERROR("specular_system: the lean setup (LeanSetup = 1) is built with SetupII = 1 and HeEqH1 = 0 only")
+  end
 
   logic                 span_valid, span_ready;
   logic [CBits-1:0]     span_c;
@@ -59,23 +67,42 @@ module specular_system #(
   logic [TagBits-1:0]   span_tag;
   logic [2:0]           span_status;
 
-  specular_setup #(
-    .VecBits       (VecBits),
-    .TagBits       (TagBits),
-    .HeEqH1        (HeEqH1),
-    .SetupII       (SetupII),
-    .RsqrtSeedFile (RsqrtSeedFile),
-    .LogRecipFile  (LogRecipFile),
-    .LogValueFile  (LogValueFile),
-    .Exp2File      (Exp2File),
-    .RecipLenFile  (RecipLenFile)
-  ) u_setup (
-    .clk_i         (clk_i),
-    .rst_ni        (rst_ni),
-    `SPECULAR_GEO_PORT_MAP,
-    `SPECULAR_SPAN_MAP(_o, _i, span_, , ),
-    .span_status_o (span_status)
-  );
+  if (LeanSetup) begin : gen_lean
+    specular_setup_lean #(
+      .VecBits      (VecBits),
+      .TagBits      (TagBits),
+      .TileBits     (MulTileBits),
+      .SeedFile     (LeanSeedFile),
+      .LogRecipFile (LogRecipFile),
+      .LogValueFile (LogValueFile),
+      .Exp2File     (Exp2File),
+      .RecipLenFile (RecipLenFile)
+    ) u_setup (
+      .clk_i         (clk_i),
+      .rst_ni        (rst_ni),
+      `SPECULAR_GEO_PORT_MAP,
+      `SPECULAR_SPAN_MAP(_o, _i, span_, , ),
+      .span_status_o (span_status)
+    );
+  end else begin : gen_q44
+    specular_setup #(
+      .VecBits       (VecBits),
+      .TagBits       (TagBits),
+      .HeEqH1        (HeEqH1),
+      .SetupII       (SetupII),
+      .RsqrtSeedFile (RsqrtSeedFile),
+      .LogRecipFile  (LogRecipFile),
+      .LogValueFile  (LogValueFile),
+      .Exp2File      (Exp2File),
+      .RecipLenFile  (RecipLenFile)
+    ) u_setup (
+      .clk_i         (clk_i),
+      .rst_ni        (rst_ni),
+      `SPECULAR_GEO_PORT_MAP,
+      `SPECULAR_SPAN_MAP(_o, _i, span_, , ),
+      .span_status_o (span_status)
+    );
+  end
 
   specular_stream #(
     `SPECULAR_CORE_PARAM_MAP,
