@@ -135,8 +135,10 @@ def section_sim(sim, rel):
     out += table(["configuration", "scene", "spans", "pixels", "mismatches", "budget violations", "max abs. error",
                   "max rel. epicenter error", "cycles"], rows)
     out += ["", "### The system (`specular_system`)", "",
-            "Geometry spans through the setup and the stream in hardware at `SetupII = 1` (same run; "
-            "[setup_hw.md](setup_hw.md#the-system)).", ""]
+            "Geometry spans through the default system, the lean setup and the stream in hardware (same run; "
+            "[setup_hw.md](setup_hw.md#the-system)): bit-exact against `setup_lean` and the device model; the setup "
+            "error is against the reference of the lean setup's contract "
+            "([setup_hw.md](setup_hw.md#the-contract)), the end-to-end error against `C cos^n(psi_i)` of that reference.", ""]
     out += system_rows(sim["system"])
     return out
 
@@ -152,9 +154,9 @@ def system_rows(sys_):
 def section_setup_ii(d, rel):
     p = provenance(d, rel)
     out = ["## The system per `SetupII`", "", run_line(p, rel),
-           "Deterministic like the regression. Pixels per clock (steady state) of `specular_system` per scene "
-           "and initiation interval of the setup ([setup_hw.md](setup_hw.md#the-system-per-setupii)); "
-           "mismatches summed over the scenes.", ""]
+           "Deterministic like the regression. Pixels per clock (steady state) of `specular_system` with the Q44 "
+           "setup (`LeanSetup = 0`) per scene and initiation interval of the setup "
+           "([setup_hw.md](setup_hw.md#the-system-per-setupii)); mismatches summed over the scenes.", ""]
     iis = list(d["system_setup_ii"])
     scenes = list(d["system_setup_ii"][iis[0]])
     rows = [[f"`{s}`", num(d["system_setup_ii"][iis[0]][s]["spans"])] +
