@@ -74,10 +74,11 @@
 #                 and (exit 2) when --param or FPGA_PARAMS sets a core parameter other than
 #                 MulTileBits, TileBits or SetupII without --label or --phong-config: such a
 #                 run would replace the default configuration's entry
-#   --setup-ii    with --top setup or system: the setup's initiation interval SetupII (1, 2,
+#   --setup-ii    with --top setup or system: the Q44 setup's initiation interval SetupII (1, 2,
 #                 4 or 8: at most one span every K clocks, the hardware shared over them,
-#                 docs/setup_hw.md#sharing-over-setupii-clocks), as --param SetupII=K; the
-#                 run's folder is TOP_iiK_DEVICE/
+#                 docs/setup_hw.md#sharing-over-setupii-clocks), as --param SetupII=K (and
+#                 LeanSetup=0 on the system, whose default setup is the lean one); the run's
+#                 folder is TOP_iiK_DEVICE/
 #
 # A design that does not fit is a result, reported as fit = no with the reason, not an
 # error: when Yosys' counts already exceed the iCE40 part (logic cells needed, at least the
@@ -204,6 +205,9 @@ fi
 # --setup-ii: specular_setup's SetupII (rtl/setup/specular_setup.sv), on the setup or the system.
 if [ -n "$setup_ii" ]; then
   case "$top_arg" in setup|system) ;; *) die_usage "--setup-ii needs --top setup or system (got --top $top_arg)" ;; esac
+  # specular_system's default setup is the lean one, built at SetupII 1 only: SetupII is the Q44
+  # setup's (set first: each parameter is elaborated as it is set).
+  [ "$top_arg" = system ] && params+=("LeanSetup=0")
   case "$setup_ii" in 1|2|4|8) params+=("SetupII=$setup_ii") ;;
     *) die_usage "--setup-ii must be 1, 2, 4 or 8 (got '$setup_ii')" ;; esac
 fi
@@ -241,6 +245,9 @@ if [ "$record" = 1 ] && [ -z "$label" ] && [ -z "$phong_cfg" ]; then
   for p in "${params[@]+"${params[@]}"}"; do
     case "${p%%=*}" in
       MulTileBits|TileBits|SetupII) ;;  # keyed by the multiplier style and by SetupII
+      LeanSetup)  # the system's Q44 setup, keyed by SetupII; at SetupII 1 it would replace the default (lean) system's entry
+        [ -n "$setup_ii" ] && [ "$setup_ii" != 1 ] ||
+          die_usage "--record of the system with the Q44 setup at SetupII 1 needs --label NAME (without it the run would replace the default system's entry)" ;;
       *) die_usage "--record with --param ${p%%=*} needs --label NAME, the configuration's name in docs/fpga_figures.json (without it the run would replace the default configuration's entry)" ;;
     esac
   done
