@@ -147,7 +147,7 @@ module specular_setup_lean_norm #(
   end
   specular_setup_smul #(.ABits(IBits + 1), .BBits(SW), .TileBits(TileBits)) u_dt (
     .clk_i (clk_i), .en_i (en_i), .a_i ($signed({1'b0, t_d})), .b_i (d_q), .p_o (dt));
-  specular_delay #(.Width(SW), .Depth(TRd - TRom), .Reset(1'b0)) u_dly_y0 (
+  specular_delay #(.Width(SW), .Depth(TRd - TRom), .Reset(1'b0), .Ram(1'b1)) u_dly_y0 (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (SW'(y0)), .q_o (y0_rd));
   always_ff @(posedge clk_i) begin
     if (en_i) begin
@@ -167,7 +167,7 @@ module specular_setup_lean_norm #(
     end
   end
   logic [B-1:0] m_s2;
-  specular_delay #(.Width(B), .Depth(TS2 - TM), .Reset(1'b0)) u_dly_m (
+  specular_delay #(.Width(B), .Depth(TS2 - TM), .Reset(1'b0), .Ram(1'b1)) u_dly_m (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (m_q), .q_o (m_s2));
   logic signed [XW+S2W-1:0] ms;
   specular_setup_smul #(.ABits(XW), .BBits(S2W), .TileBits(TileBits)) u_ms (
@@ -180,7 +180,7 @@ module specular_setup_lean_norm #(
     end
   end
   logic signed [SW-1:0] seed_e;
-  specular_delay #(.Width(SW), .Depth(TE - TSeed), .Reset(1'b0)) u_dly_seed (
+  specular_delay #(.Width(SW), .Depth(TE - TSeed), .Reset(1'b0), .Ram(1'b1)) u_dly_seed (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (seed_q), .q_o (seed_e));
   logic signed [SW+EW-1:0] se;
   specular_setup_smul #(.ABits(SW), .BBits(EW), .TileBits(TileBits)) u_se (
@@ -194,10 +194,10 @@ module specular_setup_lean_norm #(
 
   // ---- u_i = rshift_round(v_i r, 17 - k) ----
   logic [3*InW-1:0] v_r;
-  specular_delay #(.Width(3 * InW), .Depth(TR), .Reset(1'b0)) u_dly_v (
+  specular_delay #(.Width(3 * InW), .Depth(TR), .Reset(1'b0), .Ram(1'b1)) u_dly_v (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i ({z_i, y_i, x_i}), .q_o (v_r));
   logic signed [7:0] k_u;
-  specular_delay #(.Width(8), .Depth(TR + LVr - TK), .Reset(1'b0)) u_dly_k (
+  specular_delay #(.Width(8), .Depth(TR + LVr - TK), .Reset(1'b0), .Ram(1'b1)) u_dly_k (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (k_q), .q_o (k_u));
   logic signed [UnitW-1:0] u [3];
   for (genvar i = 0; i < 3; i++) begin : gen_scale
