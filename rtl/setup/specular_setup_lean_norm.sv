@@ -10,7 +10,7 @@
 //
 //   S1              sq_i = v_i^2 (three multipliers)
 //   +1, +2          sq = sq_x + sq_y, + sq_z
-//   +3              k = floor((30 - bit width(sq)) / 2) (a priority encoder)
+//   +3              k = floor((30 - bit width(sq)) / 2), as the shifts it sets (a priority encoder)
 //   +4              m = sq 4^k in [2^28, 2^30) (a shifter)
 //   +5              the two seed words y0 = word j - 128, y1 = word j - 127, j = m >> 21 (ROMs)
 //   +6              d = y0 - y1                  then S(d t): t = the next 9 bits of m
