@@ -7,13 +7,26 @@
 // Reset = 1: asynchronous reset to 0 (values that must read 0 before the first pixel).
 // Reset = 0: no reset, for datapath values whose validity travels in reset valid bits
 // elsewhere (block RAM and multiplier outputs have no reset either); rst_ni is unused.
+//
+// Ram = 1 lets a long, wide line of Reset = 0 sit in block RAM instead of Width * Depth
+// flip-flops: a ring of 2^clog2(Depth) words, written at a free-running pointer on every
+// enabled edge, read (registered, same enable) at the word written Depth - 1 enabled edges
+// earlier, so q_o is the register chain's clock for clock, stalls included. The pointer
+// needs no reset (every value of it is a valid ring position), so rst_ni stays unused.
+// The style applies from RamMinDepth and RamMinBits on: a 36-bit-wide ECP5 DP16KD port
+// replaces about 36 * Depth flip-flops, so short lines stay in registers, and narrow ones
+// do not spend a block RAM on a few hundred bits. Opt-in (Ram defaults to 0): every other
+// user keeps its register netlist, and iCE40 parts keep their few RAMs for the ROMs.
 
 `include "specular_assert.svh"
 
 module specular_delay #(
   parameter int Width = 1,
   parameter int Depth = 1,
-  parameter bit Reset = 1'b1
+  parameter bit Reset = 1'b1,
+  parameter bit Ram   = 1'b0,   // may use the RAM style (Reset = 0 lines only)
+  parameter int RamMinDepth = 8,
+  parameter int RamMinBits  = 512
 ) (
   input  logic             clk_i,
   input  logic             rst_ni,
@@ -30,6 +43,32 @@ module specular_delay #(
     logic unused_clk;
     assign unused_clk = clk_i ^ rst_ni ^ en_i;
     assign q_o = d_i;
+  end else if (Ram && !Reset && Depth >= RamMinDepth && Depth >= 2
+               && Width * Depth >= RamMinBits) begin : gen_ram
+    localparam int AW    = $clog2(Depth);
+    localparam int Words = 1 << AW;
+    // The word read is never the word written in the same clock (Depth - 1 < Words):
+    // no_rw_check spares Yosys the logic that resolves such a collision.
+    (* no_rw_check *) logic [Width-1:0] mem [Words];
+    logic [AW-1:0]    wp_q, rp_q;
+    logic [Width-1:0] q_q;
+    logic             unused_rst;
+    assign unused_rst = rst_ni;
+    // rp_q follows wp_q after the first enabled edge: the word written Depth - 1 edges before
+    // the next write (Depth - 1 < Words, so it never is the word being written).
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        wp_q <= wp_q + AW'(1);
+        rp_q <= wp_q + AW'(Words + 2 - Depth);
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        mem[wp_q] <= d_i;
+        q_q       <= mem[rp_q];
+      end
+    end
+    assign q_o = q_q;
   end else begin : gen_regs
     // Stage j (1 .. Depth) is line_q[j*Width-1 -: Width]; d_i enters at the bottom.
     logic [Depth*Width-1:0] line_d, line_q;

@@ -21,7 +21,7 @@
 // MULT18X18D) cut a and b into TileBits-wide tiles, register the tiles and each tile product
 // (one DSP with its input and output registers), add the products in a registered binary tree
 // and delay the sum to the same pipe_mul_stages(BBits) clocks, so both styles are bit-exact
-// and interchangeable. a3_i is unused there (synthesis drops the caller's 3a register). The
+// and interchangeable. a3_i is unused there (a caller may tie it to 0). The
 // tiles must be few enough that 2 + clog2(tiles) <= pipe_mul_stages(BBits); the block refuses
 // otherwise.
 
@@ -146,12 +146,14 @@ module specular_pipe_mul #(
   // Assertions (rtl/prim/specular_assert.svh): the caller's 3a matches a (it registers both,
   // from the same a, on the same enable). No reset here: checked from the first enabled edge
   // on (before it the caller's registers hold power-up values) and on known operands (a
-  // bubble's may be X).
+  // bubble's may be X). The DSP style reads no 3a, so a caller may tie it off there.
 `ifndef SYNTHESIS
-  `SPEC_PRIMED(primed_q, clk_i, en_i)
-  logic a_known;
-  assign a_known = `SPEC_KNOWN({a_i, a3_i});
-  `SPEC_ASSERT_IF(A3IsThreeA_A, en_i && a_known, a3_i == (ABits + 2)'(a_i) * (ABits + 2)'(3), clk_i, primed_q)
+  if (Tree) begin : gen_a3_check
+    `SPEC_PRIMED(primed_q, clk_i, en_i)
+    logic a_known;
+    assign a_known = `SPEC_KNOWN({a_i, a3_i});
+    `SPEC_ASSERT_IF(A3IsThreeA_A, en_i && a_known, a3_i == (ABits + 2)'(a_i) * (ABits + 2)'(3), clk_i, primed_q)
+  end
 `endif
 
 endmodule

@@ -7,8 +7,9 @@
 // steps 3 and 4). One vector per clock.
 //
 //   stage 1  |x_i|
-//   stage 2  s = bit width(OR of the |x_i|) - Bits (the OR has the bit width of the largest)
-//   stage 3  y_i = x_i >> (s - 1), or x_i << (1 - s) when s <= 0 (a shifter, no adder)
+//   stage 2  t = the top set bit of (OR of the |x_i|) (the OR has the bit width of the largest)
+//   stage 3  y_i = (x_i 2^Bits) >> t: x_i >> (s - 1) for s = t + 1 - Bits > 0, x_i << (1 - s)
+//            otherwise, exact either way; one right shifter, no adder
 //   stage 4  (y_i + 1) >> 1: the rounding of s > 0; exact for s <= 0 (y_i even)
 // Stages: specular_setup_lean_pkg::BlockStages. en_i freezes every stage. No reset.
 
@@ -38,32 +39,28 @@ module specular_setup_lean_block #(
 
   logic [N*InW-1:0] x1_q, x2_q, mag_q;
   logic [InW-1:0]   all_d;
-  logic signed [7:0] sh_d, sh_q;
+  logic [7:0]       top_d, top_q;
   always_comb begin
     all_d = '0;
     for (int i = 0; i < N; i++) begin
       all_d = all_d | mag_q[i*InW +: InW];
     end
-    sh_d = '0;
+    top_d = '0;
     for (int b = 0; b < InW; b++) begin
-      if (all_d[b]) sh_d = 8'(b + 1 - Bits);
+      if (all_d[b]) top_d = 8'(b);
     end
   end
 
   for (genvar i = 0; i < N; i++) begin : gen_comp
-    logic signed [InW-1:0] x2;
-    logic signed [YW-1:0]  y_q;
-    assign x2 = x2_q[i*InW +: InW];
+    logic signed [InW+Bits-1:0] x2;
+    logic signed [YW-1:0]       y_q;
+    assign x2 = {x2_q[i*InW +: InW], Bits'(0)};
     always_ff @(posedge clk_i) begin
       if (en_i) begin
         // stage 1
         mag_q[i*InW +: InW] <= x_i[i*InW + InW - 1] ? InW'(-$signed(x_i[i*InW +: InW])) : x_i[i*InW +: InW];
-        // stage 3 (the true value fits YW bits, so the truncation of a left shift is exact)
-        if (sh_q >= 8'sd1) begin
-          y_q <= YW'(x2 >>> (sh_q - 8'sd1));
-        end else begin
-          y_q <= YW'({{YW{x2[InW-1]}}, x2} << (8'sd1 - sh_q));
-        end
+        // stage 3 (the true value fits YW bits, so the truncation is exact)
+        y_q <= YW'(x2 >>> top_q);
         // stage 4
         x_o[i*OutW +: OutW] <= OutW'((y_q + YW'(1)) >>> 1);
       end
@@ -74,7 +71,7 @@ module specular_setup_lean_block #(
     if (en_i) begin
       x1_q <= x_i;
       x2_q <= x1_q;
-      sh_q <= sh_d;
+      top_q <= top_d;
     end
   end
 

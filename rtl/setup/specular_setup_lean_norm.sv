@@ -10,7 +10,7 @@
 //
 //   S1              sq_i = v_i^2 (three multipliers)
 //   +1, +2          sq = sq_x + sq_y, + sq_z
-//   +3              k = floor((30 - bit width(sq)) / 2) (a priority encoder)
+//   +3              k = floor((30 - bit width(sq)) / 2), as the shifts it sets (a priority encoder)
 //   +4              m = sq 4^k in [2^28, 2^30) (a shifter)
 //   +5              the two seed words y0 = word j - 128, y1 = word j - 127, j = m >> 21 (ROMs)
 //   +6              d = y0 - y1                  then S(d t): t = the next 9 bits of m
@@ -96,26 +96,37 @@ module specular_setup_lean_norm #(
   end
 
   // ---- +3, +4: k and m ----
-  logic signed [7:0] k_d, k_q, k_m;
+  // k for the top set bit b of sq.
+  function automatic int k_of(input int b);
+    k_of = (B - b - 1) >= 0 ? (B - b - 1) / 2 : -((b + 2 - B) / 2);
+  endfunction
+  // The encoder gives the two shift amounts k sets rather than k, so neither shifter has a
+  // subtraction in front of it: m = (sq 2^KZ) >> (KZ - 2k) (one right shifter for both signs
+  // of k, exact) and s - 1 = RFrac + B/2 - Frac - 1 - k for u_i below.
+  localparam int KZ = 2 * (B / 2);
+  logic [7:0] msh_d, msh_q, ush_d;
   always_comb begin
-    k_d = 8'(B / 2);  // sq = 0: any k (m = 0 and the output 0)
+    // sq = 0: k = B/2 (any k: m = 0 and the output 0)
+    msh_d = 8'(KZ - 2 * (B / 2));
+    ush_d = 8'(RFrac + B / 2 - Frac - 1 - B / 2);
     for (int b = 0; b < SqW; b++) begin
-      if (sq_q[b]) k_d = 8'((B - b - 1) >= 0 ? (B - b - 1) / 2 : -((b + 2 - B) / 2));
+      if (sq_q[b]) begin
+        msh_d = 8'(KZ - 2 * k_of(b));
+        ush_d = 8'(RFrac + B / 2 - Frac - 1 - k_of(b));
+      end
     end
   end
-  logic [SqW-1:0] sq_k;
-  logic [B-1:0]   m_q;
-  localparam int ShW = SqW > B ? SqW : B;
+  logic [SqW-1:0]    sq_k;
+  logic [SqW+KZ-1:0] sq_z;
+  logic [B-1:0]      m_q;
+  logic [7:0]        ush_q;
+  assign sq_z = {sq_k, KZ'(0)};
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      k_q  <= k_d;
-      sq_k <= sq_q;
-      k_m  <= k_q;
-      if (k_q >= 0) begin
-        m_q <= B'(ShW'(sq_k) << (2 * k_q));
-      end else begin
-        m_q <= B'(ShW'(sq_k) >> (-2 * k_q));
-      end
+      msh_q <= msh_d;
+      ush_q <= ush_d;
+      sq_k  <= sq_q;
+      m_q   <= B'(sq_z >> msh_q);
     end
   end
 
@@ -147,7 +158,7 @@ module specular_setup_lean_norm #(
   end
   specular_setup_smul #(.ABits(IBits + 1), .BBits(SW), .TileBits(TileBits)) u_dt (
     .clk_i (clk_i), .en_i (en_i), .a_i ($signed({1'b0, t_d})), .b_i (d_q), .p_o (dt));
-  specular_delay #(.Width(SW), .Depth(TRd - TRom), .Reset(1'b0)) u_dly_y0 (
+  specular_delay #(.Width(SW), .Depth(TRd - TRom), .Reset(1'b0), .Ram(1'b1)) u_dly_y0 (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (SW'(y0)), .q_o (y0_rd));
   always_ff @(posedge clk_i) begin
     if (en_i) begin
@@ -167,7 +178,7 @@ module specular_setup_lean_norm #(
     end
   end
   logic [B-1:0] m_s2;
-  specular_delay #(.Width(B), .Depth(TS2 - TM), .Reset(1'b0)) u_dly_m (
+  specular_delay #(.Width(B), .Depth(TS2 - TM), .Reset(1'b0), .Ram(1'b1)) u_dly_m (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (m_q), .q_o (m_s2));
   logic signed [XW+S2W-1:0] ms;
   specular_setup_smul #(.ABits(XW), .BBits(S2W), .TileBits(TileBits)) u_ms (
@@ -180,7 +191,7 @@ module specular_setup_lean_norm #(
     end
   end
   logic signed [SW-1:0] seed_e;
-  specular_delay #(.Width(SW), .Depth(TE - TSeed), .Reset(1'b0)) u_dly_seed (
+  specular_delay #(.Width(SW), .Depth(TE - TSeed), .Reset(1'b0), .Ram(1'b1)) u_dly_seed (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (seed_q), .q_o (seed_e));
   logic signed [SW+EW-1:0] se;
   specular_setup_smul #(.ABits(SW), .BBits(EW), .TileBits(TileBits)) u_se (
@@ -194,11 +205,11 @@ module specular_setup_lean_norm #(
 
   // ---- u_i = rshift_round(v_i r, 17 - k) ----
   logic [3*InW-1:0] v_r;
-  specular_delay #(.Width(3 * InW), .Depth(TR), .Reset(1'b0)) u_dly_v (
+  specular_delay #(.Width(3 * InW), .Depth(TR), .Reset(1'b0), .Ram(1'b1)) u_dly_v (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i ({z_i, y_i, x_i}), .q_o (v_r));
-  logic signed [7:0] k_u;
-  specular_delay #(.Width(8), .Depth(TR + LVr - TK), .Reset(1'b0)) u_dly_k (
-    .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (k_q), .q_o (k_u));
+  logic [7:0] ush_u;
+  specular_delay #(.Width(8), .Depth(TR + LVr - TK), .Reset(1'b0), .Ram(1'b1)) u_dly_k (
+    .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (ush_q), .q_o (ush_u));
   logic signed [UnitW-1:0] u [3];
   for (genvar i = 0; i < 3; i++) begin : gen_scale
     logic signed [PW-1:0]      vr;
@@ -208,7 +219,7 @@ module specular_setup_lean_norm #(
     always_ff @(posedge clk_i) begin
       if (en_i) begin
         // s = RFrac + B/2 - Frac - k >= 3: the shift by s - 1, then the rounding.
-        y_q  <= (UnitW + 2)'(vr >>> (8'(RFrac + B / 2 - Frac - 1) - k_u));
+        y_q  <= (UnitW + 2)'(vr >>> ush_u);
         u[i] <= UnitW'((y_q + (UnitW + 2)'(1)) >>> 1);
       end
     end
@@ -216,8 +227,5 @@ module specular_setup_lean_norm #(
   assign x_o = u[0];
   assign y_o = u[1];
   assign z_o = u[2];
-
-  logic unused;
-  assign unused = ^{k_m, sq_k[0]};
 
 endmodule

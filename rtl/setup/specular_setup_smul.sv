@@ -7,7 +7,7 @@
 // after it, so the multiplier stays unsigned and its stages keep one carry chain each.
 //
 //   first stage   |a|, |b|, the sign of the product
-//   second stage  3|a| (the LUT tree's digit row; dropped by synthesis with DSP tiles)
+//   second stage  3|a| (the LUT tree's digit row; not built with DSP tiles)
 //   then          specular_pipe_mul (specular_pkg::pipe_mul_stages(BBits))
 //   last stage    the sign put back (negate or not)
 // Stages: specular_setup_lean_pkg::smul_stages(BBits). en_i freezes every stage. No reset.
@@ -39,10 +39,18 @@ module specular_setup_smul #(
       neg_q  <= a_i[ABits-1] ^ b_i[BBits-1];
       // stage 2
       a2_q   <= ma_q;
-      a3_q   <= (ABits + 2)'(ma_q) + ((ABits + 2)'(ma_q) << 1);
       b2_q   <= mb_q;
       neg2_q <= neg_q;
     end
+  end
+  // 3|a| only for the LUT tree: the DSP style never reads it, and a hierarchical synthesis
+  // (synth_ecp5 -noflatten) keeps a register that feeds another module's unread port.
+  if (TileBits == 0) begin : gen_a3
+    always_ff @(posedge clk_i) begin
+      if (en_i) a3_q <= (ABits + 2)'(ma_q) + ((ABits + 2)'(ma_q) << 1);
+    end
+  end else begin : gen_no_a3
+    assign a3_q = '0;
   end
 
   logic [PBits-1:0] mag;
