@@ -39,12 +39,16 @@ module specular_delay #(
     `SPEC_PARAM_ERROR("specular_delay: Width must be >= 1 and Depth >= 0")
   end
 
+  localparam bit InRam = Ram && !Reset && Depth >= RamMinDepth && Depth >= 2 && Width * Depth >= RamMinBits;
+
+  // Three generate blocks of their own, not an else-if chain: the register style keeps its
+  // hierarchical name gen_regs.line_q, which the formal harnesses read (scripts/formal.sh).
   if (Depth == 0) begin : gen_wire
     logic unused_clk;
     assign unused_clk = clk_i ^ rst_ni ^ en_i;
     assign q_o = d_i;
-  end else if (Ram && !Reset && Depth >= RamMinDepth && Depth >= 2
-               && Width * Depth >= RamMinBits) begin : gen_ram
+  end
+  if (Depth > 0 && InRam) begin : gen_ram
     localparam int AW    = $clog2(Depth);
     localparam int Words = 1 << AW;
     // The word read is never the word written in the same clock (Depth - 1 < Words):
@@ -69,7 +73,8 @@ module specular_delay #(
       end
     end
     assign q_o = q_q;
-  end else begin : gen_regs
+  end
+  if (Depth > 0 && !InRam) begin : gen_regs
     // Stage j (1 .. Depth) is line_q[j*Width-1 -: Width]; d_i enters at the bottom.
     logic [Depth*Width-1:0] line_d, line_q;
     if (Depth == 1) begin : gen_one
