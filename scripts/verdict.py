@@ -125,6 +125,32 @@ def verdict(points, spans):
     return res
 
 
+def break_even(points, budget):
+    """The mean span length from which the device with its setup in hardware gives as many pixels
+    per clock per part as the best Phong core meeting `budget` (docs/phong_hw.md#verdict). With
+    SetupII = k and share s_k it gives min(1, m / k) pixels per clock from s_k, a Phong core 1 from
+    s_P: it ties at m = k s_k / s_P, and only where s_k <= s_P (from m >= k its figure is 1 / s_k).
+    Returns {"span": m or None, "design": name, "phong": name, "ratio_at_long_spans": s_P / s_k of
+    the design with the best long-span figure}, None when a side has no design."""
+    cand = candidates(points, budget)
+    hw = [p for p in cand if p["kind"] == "device" and p.get("setup_ii") is not None]
+    ph = [p for p in cand if p["kind"] == "phong"]
+    if not hw or not ph:
+        return None
+    best_p = min(ph, key=lambda p: (share(p["ecp5"])[0], p["name"]))
+    s_p = share(best_p["ecp5"])[0]
+    ties = [(p["setup_ii"] * share(p["ecp5"])[0] / s_p, p["name"]) for p in hw if share(p["ecp5"])[0] <= s_p]
+    long_best = min(hw, key=lambda p: (share(p["ecp5"])[0], p["name"]))
+    out = {"phong": best_p["name"], "ratio_at_long_spans": s_p / share(long_best["ecp5"])[0],
+           "long_span_design": long_best["name"]}
+    if ties:
+        m, name = min(ties)
+        out.update(span=m, design=name)
+    else:
+        out.update(span=None, design=None)
+    return out
+
+
 def ecp5_entry(figs, core, config=None, setup_ii=None):
     """The docs/fpga_figures.json ECP5 entry of a core with MULT18X18D tiles: a placed and routed run
     (ecp5_runs) first, else the synthesis counts (synthesis_runs, part ECP5)."""
@@ -272,6 +298,15 @@ def write(w, res, points):
             w(f"| {r['span']} | {cell(r['host'])} | {cell(r['hw'])} | {cell(r['phong'])} | "
               f"{fmt_ratio(r['host_ratio'])} | {fmt_ratio(r['hw_ratio'])} | {fmt_ratio(r['host_ratio_at_clock'])} |")
         w("")
+        be = break_even(points, b)
+        if be is None:
+            w("Break-even span length: no design on one side.\n")
+        elif be["span"] is None:
+            w(f"Break-even span length: none. Even on spans long enough for one pixel per clock the best device with "
+              f"its setup in hardware ({be['long_span_design']}) gives {be['ratio_at_long_spans']:.2f} times the "
+              f"pixels per clock per part of {be['phong']}.\n")
+        else:
+            w(f"Break-even span length: {be['span']:.1f} pixels ({be['design']} against {be['phong']}).\n")
 
 
 def budget_text(b):

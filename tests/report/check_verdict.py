@@ -56,6 +56,21 @@ close(verdict.pixels_per_clock(4, 2), 0.5, "ppc m=2 k=4")
 close(verdict.pixels_per_clock(4, 8), 1.0, "ppc m=8 k=4")
 close(verdict.pixels_per_clock(None, 1), 1.0, "ppc host setup")
 
+# Break-even: system4 (share 0.5, SetupII 4) against phong (0.5): m = 4 * 0.5 / 0.5 = 4 at B1; a
+# system twice Phong's share never ties (ratio 0.5 on long spans).
+be = verdict.break_even(pts, "b1")
+close(be["span"], 4.0, "break-even span, equal shares")
+check(be["design"] == "system4" and be["phong"] == "phong", f"break-even designs {be}")
+close(be["ratio_at_long_spans"], 1.0, "long-span ratio, equal shares")
+big = dict(pts[1], name="system4 big", ecp5=entry(20000, 1000, 83640, 39, 10, None))  # FF 83,640: share 1
+be = verdict.break_even([big, pts[2]], "b1")
+check(be["span"] is None, f"a system of twice Phong's share has no break-even: {be}")
+close(be["ratio_at_long_spans"], 0.5, "long-span ratio, twice the share")
+small = dict(pts[1], name="system8 small", setup_ii=8, ecp5=entry(20000, 1000, 10455, 39, 10, None))  # share 0.25
+be = verdict.break_even([pts[1], small, pts[2]], "b1")
+close(be["span"], 4.0, "the smaller of 4 * 0.5 / 0.5 and 8 * 0.25 / 0.5")
+check(verdict.break_even([pts[2]], "b1") is None, "no hardware-setup design: no break-even")
+
 # Only the system and the Phong core: at m = 2 the system gives 0.5 / 0.5 = 1 px/clock per part
 # against Phong's 2 (ratio 0.5); at m = 8, 2 against 2 (ratio 1). A measured 0.25 at m = 2 gives 0.25.
 res = verdict.verdict(pts[1:], [("2", 2, None), ("8", 8, None), ("scene", 2, {4: 0.25})])
