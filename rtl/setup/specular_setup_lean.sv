@@ -42,6 +42,9 @@ module specular_setup_lean #(
   parameter int TagBits      = 16,
   // specular_pipe_mul's resources: 18 the ECP5's MULT18X18D tiles, 0 a LUT tree (iCE40).
   parameter int TileBits     = 18,
+  // Clocks per span: 1 fully pipelined; K >= 5 the folded setup, whose stages advance once
+  // per slot of K clocks and whose products share a few tile multipliers (specular_setup_fmul).
+  parameter int SetupII      = 1,
   parameter     SeedFile     = "roms/setup/rsqrt_seed_lean.hex",
   parameter     LogRecipFile = "roms/setup/log_recip.hex",
   parameter     LogValueFile = "roms/setup/log_value.hex",
@@ -89,20 +92,20 @@ module specular_setup_lean #(
   localparam logic signed [CW-1:0] Pi = CW'(specular_setup_lean_pkg::Pi);
 
   // The schedule.
-  localparam int NS18  = specular_setup_lean_pkg::norm_stages(VecBits);
-  localparam int NS30  = specular_setup_lean_pkg::norm_stages(BlkW);
+  localparam int NS18  = specular_setup_lean_pkg::norm_stages(VecBits, SetupII);
+  localparam int NS30  = specular_setup_lean_pkg::norm_stages(BlkW, SetupII);
   localparam int BS    = specular_setup_lean_pkg::BlockStages;
   localparam int CS    = specular_setup_lean_pkg::CordicStages;
-  localparam int LMM   = specular_setup_lean_pkg::smul_stages(MW);
-  localparam int LQ    = specular_setup_lean_pkg::smul_stages(QW);
-  localparam int LH    = specular_setup_lean_pkg::smul_stages(HW);
-  localparam int LS    = specular_setup_lean_pkg::smul_stages(BlkW);
-  localparam int LSN   = specular_setup_lean_pkg::smul_stages(SW);
-  localparam int LX    = specular_setup_lean_pkg::smul_stages(BlkW);
-  localparam int LP    = specular_setup_lean_pkg::smul_stages(U);
-  localparam int LA    = specular_setup_lean_pkg::smul_stages(VW);
-  localparam int LNL   = specular_setup_lean_pkg::smul_stages(LogW);
-  localparam int LDP   = specular_setup_lean_pkg::smul_stages(RLW);
+  localparam int LMM   = specular_setup_lean_pkg::smul_stages(MW, SetupII);
+  localparam int LQ    = specular_setup_lean_pkg::smul_stages(QW, SetupII);
+  localparam int LH    = specular_setup_lean_pkg::smul_stages(HW, SetupII);
+  localparam int LS    = specular_setup_lean_pkg::smul_stages(BlkW, SetupII);
+  localparam int LSN   = specular_setup_lean_pkg::smul_stages(SW, SetupII);
+  localparam int LX    = specular_setup_lean_pkg::smul_stages(BlkW, SetupII);
+  localparam int LP    = specular_setup_lean_pkg::smul_stages(U, SetupII);
+  localparam int LA    = specular_setup_lean_pkg::smul_stages(VW, SetupII);
+  localparam int LNL   = specular_setup_lean_pkg::smul_stages(LogW, SetupII);
+  localparam int LDP   = specular_setup_lean_pkg::smul_stages(RLW, SetupII);
   localparam int TN    = NS18;
   localparam int TM    = TN + 1;
   localparam int TQ    = TM + LMM + 2;
@@ -139,7 +142,31 @@ module specular_setup_lean #(
     `SPEC_PARAM_ERROR("specular_setup_lean: the schedule's parallel multipliers disagree in latency")
   end
 
-  logic adv;
+  if (SetupII < 1 || (SetupII > 1 && SetupII < specular_setup_lean_pkg::FmulOverhead + 1)) begin : gen_ii_check
+    `SPEC_PARAM_ERROR("specular_setup_lean: SetupII must be 1 or >= FmulOverhead + 1 (5)")
+  end
+
+  // The advance: the output buffer's room (a register) and, folded, the slot's last clock
+  // (slot_last_q, a register), so geo_ready_o stays a function of registers and at most one
+  // span enters per slot; every stage moves on it.
+  logic adv, buf_adv, slot_last;
+  if (SetupII > 1) begin : gen_slot
+    localparam int SlotW = $clog2(SetupII);
+    logic [SlotW-1:0] slot_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        slot_q <= '0;
+      end else if (adv) begin
+        slot_q <= '0;
+      end else if (slot_q != SlotW'(SetupII - 1)) begin
+        slot_q <= slot_q + SlotW'(1);
+      end
+    end
+    assign slot_last = slot_q == SlotW'(SetupII - 1);
+  end else begin : gen_no_slot
+    assign slot_last = 1'b1;
+  end
+  assign adv         = buf_adv & slot_last;
   assign geo_ready_o = adv;
 
   // ---- tau 0: the input register; step 1 ----
@@ -174,15 +201,15 @@ module specular_setup_lean #(
 
   // ---- step 2: N1, N2, H1 (tau 0 -> TN) ----
   logic [3*U-1:0] n1u, n2u, h1u;
-  specular_setup_lean_norm #(.InW(VecBits), .TileBits(TileBits), .SeedFile(SeedFile)) u_norm_n1 (
+  specular_setup_lean_norm #(.InW(VecBits), .TileBits(TileBits), .SetupII(SetupII), .SeedFile(SeedFile)) u_norm_n1 (
     .clk_i (clk_i), .en_i (adv),
     .x_i (n1_q[0 +: VecBits]), .y_i (n1_q[VecBits +: VecBits]), .z_i (n1_q[2*VecBits +: VecBits]),
     .x_o (n1u[0 +: U]), .y_o (n1u[U +: U]), .z_o (n1u[2*U +: U]));
-  specular_setup_lean_norm #(.InW(VecBits), .TileBits(TileBits), .SeedFile(SeedFile)) u_norm_n2 (
+  specular_setup_lean_norm #(.InW(VecBits), .TileBits(TileBits), .SetupII(SetupII), .SeedFile(SeedFile)) u_norm_n2 (
     .clk_i (clk_i), .en_i (adv),
     .x_i (n2_q[0 +: VecBits]), .y_i (n2_q[VecBits +: VecBits]), .z_i (n2_q[2*VecBits +: VecBits]),
     .x_o (n2u[0 +: U]), .y_o (n2u[U +: U]), .z_o (n2u[2*U +: U]));
-  specular_setup_lean_norm #(.InW(VecBits), .TileBits(TileBits), .SeedFile(SeedFile)) u_norm_h1 (
+  specular_setup_lean_norm #(.InW(VecBits), .TileBits(TileBits), .SetupII(SetupII), .SeedFile(SeedFile)) u_norm_h1 (
     .clk_i (clk_i), .en_i (adv),
     .x_i (h1_q[0 +: VecBits]), .y_i (h1_q[VecBits +: VecBits]), .z_i (h1_q[2*VecBits +: VecBits]),
     .x_o (h1u[0 +: U]), .y_o (h1u[U +: U]), .z_o (h1u[2*U +: U]));
@@ -202,9 +229,9 @@ module specular_setup_lean #(
     always_ff @(posedge clk_i) begin
       if (adv) m_q[i*MW +: MW] <= MW'($signed(n1u[i*U +: U])) + MW'($signed(n2u[i*U +: U]));
     end
-    specular_setup_smul #(.ABits(MW), .BBits(MW), .TileBits(TileBits)) u_mm (
+    specular_setup_smul #(.ABits(MW), .BBits(MW), .TileBits(TileBits), .SetupII(SetupII)) u_mm (
       .clk_i (clk_i), .en_i (adv), .a_i (m_q[i*MW +: MW]), .b_i (m_q[i*MW +: MW]), .p_o (mm[i]));
-    specular_setup_smul #(.ABits(VecBits), .BBits(MW), .TileBits(TileBits)) u_hem (
+    specular_setup_smul #(.ABits(VecBits), .BBits(MW), .TileBits(TileBits), .SetupII(SetupII)) u_hem (
       .clk_i (clk_i), .en_i (adv), .a_i (he_m[i*VecBits +: VecBits]), .b_i (m_q[i*MW +: MW]), .p_o (hem[i]));
   end
   logic signed [QW-1:0] q01_q, q2_q, q_q;
@@ -235,9 +262,9 @@ module specular_setup_lean #(
   for (genvar i = 0; i < 3; i++) begin : gen_gp
     logic signed [VecBits+QW-1:0] qhe;
     logic signed [MW+HW-1:0]      hmm;
-    specular_setup_smul #(.ABits(VecBits), .BBits(QW), .TileBits(TileBits)) u_qhe (
+    specular_setup_smul #(.ABits(VecBits), .BBits(QW), .TileBits(TileBits), .SetupII(SetupII)) u_qhe (
       .clk_i (clk_i), .en_i (adv), .a_i (he_q2[i*VecBits +: VecBits]), .b_i (q_q), .p_o (qhe));
-    specular_setup_smul #(.ABits(MW), .BBits(HW), .TileBits(TileBits)) u_hmm (
+    specular_setup_smul #(.ABits(MW), .BBits(HW), .TileBits(TileBits), .SetupII(SetupII)) u_hmm (
       .clk_i (clk_i), .en_i (adv), .a_i (m_gq[i*MW +: MW]), .b_i (hm_q), .p_o (hmm));
     always_ff @(posedge clk_i) begin
       if (adv) begin
@@ -264,7 +291,7 @@ module specular_setup_lean #(
   // ---- s = rshift_round(G'.N1, 26) (TG1 -> TS) ----
   logic signed [U+BlkW-1:0] sp [3];
   for (genvar i = 0; i < 3; i++) begin : gen_s
-    specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits)) u_sp (
+    specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits), .SetupII(SetupII)) u_sp (
       .clk_i (clk_i), .en_i (adv), .a_i (n1_g1[i*U +: U]), .b_i (gpn[i*BlkW +: BlkW]), .p_o (sp[i]));
   end
   logic signed [U+BlkW+1:0] s01_q, s2_q, ssum_q;
@@ -286,7 +313,7 @@ module specular_setup_lean #(
   for (genvar i = 0; i < 3; i++) begin : gen_gv
     logic signed [U+SW-1:0] sn;
     logic signed [GVW-1:0]  t_q;
-    specular_setup_smul #(.ABits(U), .BBits(SW), .TileBits(TileBits)) u_sn (
+    specular_setup_smul #(.ABits(U), .BBits(SW), .TileBits(TileBits), .SetupII(SetupII)) u_sn (
       .clk_i (clk_i), .en_i (adv), .a_i (n1_s[i*U +: U]), .b_i (s_q), .p_o (sn));
     always_ff @(posedge clk_i) begin
       if (adv) begin
@@ -305,9 +332,9 @@ module specular_setup_lean #(
   logic signed [2*U-1:0]    hn [9];
   for (genvar j = 0; j < 3; j++) begin : gen_hj
     for (genvar k = 0; k < 3; k++) begin : gen_k
-      specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits)) u_hg (
+      specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits), .SetupII(SetupII)) u_hg (
         .clk_i (clk_i), .en_i (adv), .a_i (h1_g[j*U +: U]), .b_i (g[k*BlkW +: BlkW]), .p_o (hg[3*j+k]));
-      specular_setup_smul #(.ABits(U), .BBits(U), .TileBits(TileBits)) u_hn (
+      specular_setup_smul #(.ABits(U), .BBits(U), .TileBits(TileBits), .SetupII(SetupII)) u_hn (
         .clk_i (clk_i), .en_i (adv), .a_i (h1_g[j*U +: U]), .b_i (n1_g[k*U +: U]), .p_o (hn[3*j+k]));
     end
   end
@@ -354,10 +381,10 @@ module specular_setup_lean #(
   logic signed [2*BlkW-1:0] ccp [3];
   logic signed [2*BlkW-1:0] xxp;
   for (genvar i = 0; i < 3; i++) begin : gen_cc
-    specular_setup_smul #(.ABits(BlkW), .BBits(BlkW), .TileBits(TileBits)) u_cc (
+    specular_setup_smul #(.ABits(BlkW), .BBits(BlkW), .TileBits(TileBits), .SetupII(SetupII)) u_cc (
       .clk_i (clk_i), .en_i (adv), .a_i (cb[i*BlkW +: BlkW]), .b_i (cb[i*BlkW +: BlkW]), .p_o (ccp[i]));
   end
-  specular_setup_smul #(.ABits(BlkW), .BBits(BlkW), .TileBits(TileBits)) u_xx (
+  specular_setup_smul #(.ABits(BlkW), .BBits(BlkW), .TileBits(TileBits), .SetupII(SetupII)) u_xx (
     .clk_i (clk_i), .en_i (adv), .a_i (xb), .b_i (xb), .p_o (xxp));
   logic signed [BlkW-1:0] x_d;  // x at TXC + LX
   specular_delay #(.Width(BlkW), .Depth(LX), .Reset(1'b0), .Ram(1'b1)) u_dly_x_d (
@@ -403,7 +430,7 @@ module specular_setup_lean #(
     if (adv) csel_q <= opposite_halfway_q ? p_td : c_td;
   end
   logic [3*U-1:0] ch;
-  specular_setup_lean_norm #(.InW(BlkW), .TileBits(TileBits), .SeedFile(SeedFile)) u_norm_c (
+  specular_setup_lean_norm #(.InW(BlkW), .TileBits(TileBits), .SetupII(SetupII), .SeedFile(SeedFile)) u_norm_c (
     .clk_i (clk_i), .en_i (adv),
     .x_i (csel_q[0 +: BlkW]), .y_i (csel_q[BlkW +: BlkW]), .z_i (csel_q[2*BlkW +: BlkW]),
     .x_o (ch[0 +: U]), .y_o (ch[U +: U]), .z_o (ch[2*U +: U]));
@@ -413,9 +440,9 @@ module specular_setup_lean #(
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (p_td), .q_o (p_nu));
   logic signed [U+BlkW-1:0] chp [3], chc [3];
   for (genvar i = 0; i < 3; i++) begin : gen_nu
-    specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits)) u_chp (
+    specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits), .SetupII(SetupII)) u_chp (
       .clk_i (clk_i), .en_i (adv), .a_i (ch[i*U +: U]), .b_i (p_nu[i*BlkW +: BlkW]), .p_o (chp[i]));
-    specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits)) u_chc (
+    specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits), .SetupII(SetupII)) u_chc (
       .clk_i (clk_i), .en_i (adv), .a_i (ch[i*U +: U]), .b_i (c_nu[i*BlkW +: BlkW]), .p_o (chc[i]));
   end
   logic flat_nu;
@@ -451,9 +478,9 @@ module specular_setup_lean #(
 
   // ---- step 7: A^2 and C beside the CORDICs (TNU -> TCC) ----
   logic signed [2*VW-1:0] cos2, nu2;
-  specular_setup_smul #(.ABits(VW), .BBits(VW), .TileBits(TileBits)) u_cos2 (
+  specular_setup_smul #(.ABits(VW), .BBits(VW), .TileBits(TileBits), .SetupII(SetupII)) u_cos2 (
     .clk_i (clk_i), .en_i (adv), .a_i (VW'(cos_nu)), .b_i (VW'(cos_nu)), .p_o (cos2));
-  specular_setup_smul #(.ABits(VW), .BBits(VW), .TileBits(TileBits)) u_nu2 (
+  specular_setup_smul #(.ABits(VW), .BBits(VW), .TileBits(TileBits), .SetupII(SetupII)) u_nu2 (
     .clk_i (clk_i), .en_i (adv), .a_i (nu_q), .b_i (nu_q), .p_o (nu2));
   logic signed [A2W-1:0] a2_q;
   always_ff @(posedge clk_i) begin
@@ -470,7 +497,7 @@ module specular_setup_lean #(
   specular_delay #(.Width(NBits), .Depth(TL + 1), .Reset(1'b0), .Ram(1'b1)) u_dly_n_l (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n_q), .q_o (n_l));
   logic signed [NBits+LogW:0] nl;
-  specular_setup_smul #(.ABits(NBits + 1), .BBits(LogW), .TileBits(TileBits)) u_nl (
+  specular_setup_smul #(.ABits(NBits + 1), .BBits(LogW), .TileBits(TileBits), .SetupII(SetupII)) u_nl (
     .clk_i (clk_i), .en_i (adv), .a_i ($signed({1'b0, n_l})), .b_i (log2_a2_q), .p_o (nl));
   logic signed [ExpW-1:0] e_q;
   always_ff @(posedge clk_i) begin
@@ -518,7 +545,7 @@ module specular_setup_lean #(
   logic signed [GW+RLW-1:0] gr;
   logic signed [GW-1:0]     gamma2;  // rshift_round(gamma, CFrac - GammaFrac): gamma 2^1
   assign gamma2 = GW'(gamma_q) <<< (GammaFrac - CFrac);
-  specular_setup_smul #(.ABits(GW), .BBits(RLW), .TileBits(TileBits)) u_gr (
+  specular_setup_smul #(.ABits(GW), .BBits(RLW), .TileBits(TileBits), .SetupII(SetupII)) u_gr (
     .clk_i (clk_i), .en_i (adv), .a_i (gamma2), .b_i ($signed({1'b0, recip})), .p_o (gr));
   specular_delay #(.Width(4), .Depth(LDP), .Reset(1'b0), .Ram(1'b1)) u_dly_lshift (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (lshift_q), .q_o (lshift_dp));
@@ -568,8 +595,8 @@ module specular_setup_lean #(
   specular_out_buf #(.Width(OutBits)) u_out_buf (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
-    .adv_o      (adv),
-    .in_valid_i (valid_out),
+    .adv_o      (buf_adv),
+    .in_valid_i (valid_out & slot_last),
     .in_data_i  (out_d),
     .px_valid_o (span_valid_o),
     .px_ready_i (span_ready_i),

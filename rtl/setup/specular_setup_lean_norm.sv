@@ -27,6 +27,7 @@
 module specular_setup_lean_norm #(
   parameter int InW      = 18,   // input components, signed, any common scale
   parameter int TileBits = 18,
+  parameter int SetupII  = 1,    // > 1: the folded setup (one stage per slot of SetupII clocks)
   parameter     SeedFile = "roms/setup/rsqrt_seed_lean.hex"
 ) (
   input  logic                                             clk_i,
@@ -56,12 +57,12 @@ module specular_setup_lean_norm #(
   localparam int PW       = InW + RW;     // v_i r
 
   // The schedule: each value's stage.
-  localparam int LSq   = specular_setup_lean_pkg::smul_stages(InW);
-  localparam int LDt   = specular_setup_lean_pkg::smul_stages(SW);
-  localparam int LSs   = specular_setup_lean_pkg::smul_stages(SW);
-  localparam int LMs   = specular_setup_lean_pkg::smul_stages(S2W);
-  localparam int LSe   = specular_setup_lean_pkg::smul_stages(EW);
-  localparam int LVr   = specular_setup_lean_pkg::smul_stages(RW);
+  localparam int LSq   = specular_setup_lean_pkg::smul_stages(InW, SetupII);
+  localparam int LDt   = specular_setup_lean_pkg::smul_stages(SW, SetupII);
+  localparam int LSs   = specular_setup_lean_pkg::smul_stages(SW, SetupII);
+  localparam int LMs   = specular_setup_lean_pkg::smul_stages(S2W, SetupII);
+  localparam int LSe   = specular_setup_lean_pkg::smul_stages(EW, SetupII);
+  localparam int LVr   = specular_setup_lean_pkg::smul_stages(RW, SetupII);
   localparam int TSq   = LSq + 2;      // sq
   localparam int TK    = TSq + 1;      // k
   localparam int TM    = TK + 1;       // m
@@ -74,17 +75,17 @@ module specular_setup_lean_norm #(
   localparam int TR    = TE + LSe + 1;
   localparam int Stages = TR + LVr + 2;
 
-  if (Stages != specular_setup_lean_pkg::norm_stages(InW)) begin : gen_stage_check
+  if (Stages != specular_setup_lean_pkg::norm_stages(InW, SetupII)) begin : gen_stage_check
     `SPEC_PARAM_ERROR("specular_setup_lean_norm: specular_setup_lean_pkg::norm_stages disagrees with the stages built here")
   end
 
   // ---- S1 .. +2: the squared length ----
   logic signed [2*InW-1:0] sqx, sqy, sqz;
-  specular_setup_smul #(.ABits(InW), .BBits(InW), .TileBits(TileBits)) u_sqx (
+  specular_setup_smul #(.ABits(InW), .BBits(InW), .TileBits(TileBits), .SetupII(SetupII)) u_sqx (
     .clk_i (clk_i), .en_i (en_i), .a_i (x_i), .b_i (x_i), .p_o (sqx));
-  specular_setup_smul #(.ABits(InW), .BBits(InW), .TileBits(TileBits)) u_sqy (
+  specular_setup_smul #(.ABits(InW), .BBits(InW), .TileBits(TileBits), .SetupII(SetupII)) u_sqy (
     .clk_i (clk_i), .en_i (en_i), .a_i (y_i), .b_i (y_i), .p_o (sqy));
-  specular_setup_smul #(.ABits(InW), .BBits(InW), .TileBits(TileBits)) u_sqz (
+  specular_setup_smul #(.ABits(InW), .BBits(InW), .TileBits(TileBits), .SetupII(SetupII)) u_sqz (
     .clk_i (clk_i), .en_i (en_i), .a_i (z_i), .b_i (z_i), .p_o (sqz));
   logic [SqW-1:0] sq01_q, sqz_q, sq_q;
   always_ff @(posedge clk_i) begin
@@ -156,7 +157,7 @@ module specular_setup_lean_norm #(
       d_q <= SW'(y0) - SW'(y1);
     end
   end
-  specular_setup_smul #(.ABits(IBits + 1), .BBits(SW), .TileBits(TileBits)) u_dt (
+  specular_setup_smul #(.ABits(IBits + 1), .BBits(SW), .TileBits(TileBits), .SetupII(SetupII)) u_dt (
     .clk_i (clk_i), .en_i (en_i), .a_i ($signed({1'b0, t_d})), .b_i (d_q), .p_o (dt));
   specular_delay #(.Width(SW), .Depth(TRd - TRom), .Reset(1'b0), .Ram(1'b1)) u_dly_y0 (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (SW'(y0)), .q_o (y0_rd));
@@ -170,7 +171,7 @@ module specular_setup_lean_norm #(
   // ---- s2 = seed^2, xs2 = m s2, e, r ----
   logic signed [2*SW-1:0] ss;
   logic signed [S2W-1:0]  s2_q;
-  specular_setup_smul #(.ABits(SW), .BBits(SW), .TileBits(TileBits)) u_ss (
+  specular_setup_smul #(.ABits(SW), .BBits(SW), .TileBits(TileBits), .SetupII(SetupII)) u_ss (
     .clk_i (clk_i), .en_i (en_i), .a_i (seed_q), .b_i (seed_q), .p_o (ss));
   always_ff @(posedge clk_i) begin
     if (en_i) begin
@@ -181,7 +182,7 @@ module specular_setup_lean_norm #(
   specular_delay #(.Width(B), .Depth(TS2 - TM), .Reset(1'b0), .Ram(1'b1)) u_dly_m (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (m_q), .q_o (m_s2));
   logic signed [XW+S2W-1:0] ms;
-  specular_setup_smul #(.ABits(XW), .BBits(S2W), .TileBits(TileBits)) u_ms (
+  specular_setup_smul #(.ABits(XW), .BBits(S2W), .TileBits(TileBits), .SetupII(SetupII)) u_ms (
     .clk_i (clk_i), .en_i (en_i), .a_i ($signed({1'b0, m_s2})), .b_i (s2_q), .p_o (ms));
   logic signed [EW-1:0] xs2_q, e_q;
   always_ff @(posedge clk_i) begin
@@ -194,7 +195,7 @@ module specular_setup_lean_norm #(
   specular_delay #(.Width(SW), .Depth(TE - TSeed), .Reset(1'b0), .Ram(1'b1)) u_dly_seed (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (seed_q), .q_o (seed_e));
   logic signed [SW+EW-1:0] se;
-  specular_setup_smul #(.ABits(SW), .BBits(EW), .TileBits(TileBits)) u_se (
+  specular_setup_smul #(.ABits(SW), .BBits(EW), .TileBits(TileBits), .SetupII(SetupII)) u_se (
     .clk_i (clk_i), .en_i (en_i), .a_i (seed_e), .b_i (e_q), .p_o (se));
   logic signed [RW-1:0] r_q;
   always_ff @(posedge clk_i) begin
@@ -214,7 +215,7 @@ module specular_setup_lean_norm #(
   for (genvar i = 0; i < 3; i++) begin : gen_scale
     logic signed [PW-1:0]      vr;
     logic signed [UnitW+1:0]   y_q;
-    specular_setup_smul #(.ABits(InW), .BBits(RW), .TileBits(TileBits)) u_vr (
+    specular_setup_smul #(.ABits(InW), .BBits(RW), .TileBits(TileBits), .SetupII(SetupII)) u_vr (
       .clk_i (clk_i), .en_i (en_i), .a_i (v_r[i*InW +: InW]), .b_i (r_q), .p_o (vr));
     always_ff @(posedge clk_i) begin
       if (en_i) begin
