@@ -169,6 +169,37 @@ module specular_setup_lean #(
   assign adv         = buf_adv & slot_last;
   assign geo_ready_o = adv;
 
+  // Folded, every product is a lane of one of three shared units (specular_setup_fmul), sized
+  // by its widths' tiles: 2 x 2 (F44), 1 x 4 (F18) and 2 x 3 (F6). Every operand holds still
+  // for the slot, so one unit serves products of different stages; the lanes are numbered at
+  // the sites below. Operands are sign-extended, products cut back to their own widths.
+  localparam int F44A = 36, F44B = 36, N44 = 40;
+  localparam int F18A = 18, F18B = 72, N18 = 7;
+  localparam int F6A  = 36, F6B  = 54, N6  = 3;
+  logic [N44*F44A-1:0] f44_a;
+  logic [N44*F44B-1:0] f44_b;
+  logic [N44*(F44A+F44B)-1:0] f44_p;
+  logic [N18*F18A-1:0] f18_a;
+  logic [N18*F18B-1:0] f18_b;
+  logic [N18*(F18A+F18B)-1:0] f18_p;
+  logic [N6*F6A-1:0] f6_a;
+  logic [N6*F6B-1:0] f6_b;
+  logic [N6*(F6A+F6B)-1:0] f6_p;
+  logic unused_fold;
+  if (SetupII > 1) begin : gen_fold_units
+    specular_setup_fmul #(.N(N44), .ABits(F44A), .BBits(F44B), .TileBits(TileBits), .SetupII(SetupII)) u_f44 (
+      .clk_i (clk_i), .en_i (adv), .a_i (f44_a), .b_i (f44_b), .p_o (f44_p));
+    specular_setup_fmul #(.N(N18), .ABits(F18A), .BBits(F18B), .TileBits(TileBits), .SetupII(SetupII)) u_f18 (
+      .clk_i (clk_i), .en_i (adv), .a_i (f18_a), .b_i (f18_b), .p_o (f18_p));
+    specular_setup_fmul #(.N(N6), .ABits(F6A), .BBits(F6B), .TileBits(TileBits), .SetupII(SetupII)) u_f6 (
+      .clk_i (clk_i), .en_i (adv), .a_i (f6_a), .b_i (f6_b), .p_o (f6_p));
+    // Each lane reads only its own product's width.
+    assign unused_fold = ^{f44_p, f18_p, f6_p};
+  end else begin : gen_no_fold_units
+    assign {f44_a, f44_b, f44_p, f18_a, f18_b, f18_p, f6_a, f6_b, f6_p} = '0;
+    assign unused_fold = ^{f44_a, f44_b, f44_p, f18_a, f18_b, f18_p, f6_a, f6_b, f6_p};
+  end
+
   // ---- tau 0: the input register; step 1 ----
   logic                 in_valid_q;
   logic [3*VecBits-1:0] n1_q, n2_q, h1_q, he_q;
@@ -229,10 +260,22 @@ module specular_setup_lean #(
     always_ff @(posedge clk_i) begin
       if (adv) m_q[i*MW +: MW] <= MW'($signed(n1u[i*U +: U])) + MW'($signed(n2u[i*U +: U]));
     end
-    specular_setup_smul #(.ABits(MW), .BBits(MW), .TileBits(TileBits), .SetupII(SetupII)) u_mm (
-      .clk_i (clk_i), .en_i (adv), .a_i (m_q[i*MW +: MW]), .b_i (m_q[i*MW +: MW]), .p_o (mm[i]));
-    specular_setup_smul #(.ABits(VecBits), .BBits(MW), .TileBits(TileBits), .SetupII(SetupII)) u_hem (
-      .clk_i (clk_i), .en_i (adv), .a_i (he_m[i*VecBits +: VecBits]), .b_i (m_q[i*MW +: MW]), .p_o (hem[i]));
+    if (SetupII > 1) begin : gen_mm_fold
+      assign f44_a[(0 + i)*F44A +: F44A] = F44A'($signed(m_q[i*MW +: MW]));
+      assign f44_b[(0 + i)*F44B +: F44B] = F44B'($signed(m_q[i*MW +: MW]));
+      assign mm[i] = (MW + MW)'(f44_p[(0 + i)*(F44A + F44B) +: F44A + F44B]);
+    end else begin : gen_mm_pipe
+      specular_setup_smul #(.ABits(MW), .BBits(MW), .TileBits(TileBits)) u_mm (
+        .clk_i (clk_i), .en_i (adv), .a_i (m_q[i*MW +: MW]), .b_i (m_q[i*MW +: MW]), .p_o (mm[i]));
+    end
+    if (SetupII > 1) begin : gen_hem_fold
+      assign f18_a[(0 + i)*F18A +: F18A] = F18A'($signed(he_m[i*VecBits +: VecBits]));
+      assign f18_b[(0 + i)*F18B +: F18B] = F18B'($signed(m_q[i*MW +: MW]));
+      assign hem[i] = (VecBits + MW)'(f18_p[(0 + i)*(F18A + F18B) +: F18A + F18B]);
+    end else begin : gen_hem_pipe
+      specular_setup_smul #(.ABits(VecBits), .BBits(MW), .TileBits(TileBits)) u_hem (
+        .clk_i (clk_i), .en_i (adv), .a_i (he_m[i*VecBits +: VecBits]), .b_i (m_q[i*MW +: MW]), .p_o (hem[i]));
+    end
   end
   logic signed [QW-1:0] q01_q, q2_q, q_q;
   logic signed [HW-1:0] hm01_q, hm2_q, hm_q;
@@ -262,10 +305,22 @@ module specular_setup_lean #(
   for (genvar i = 0; i < 3; i++) begin : gen_gp
     logic signed [VecBits+QW-1:0] qhe;
     logic signed [MW+HW-1:0]      hmm;
-    specular_setup_smul #(.ABits(VecBits), .BBits(QW), .TileBits(TileBits), .SetupII(SetupII)) u_qhe (
-      .clk_i (clk_i), .en_i (adv), .a_i (he_q2[i*VecBits +: VecBits]), .b_i (q_q), .p_o (qhe));
-    specular_setup_smul #(.ABits(MW), .BBits(HW), .TileBits(TileBits), .SetupII(SetupII)) u_hmm (
-      .clk_i (clk_i), .en_i (adv), .a_i (m_gq[i*MW +: MW]), .b_i (hm_q), .p_o (hmm));
+    if (SetupII > 1) begin : gen_qhe_fold
+      assign f18_a[(3 + i)*F18A +: F18A] = F18A'($signed(he_q2[i*VecBits +: VecBits]));
+      assign f18_b[(3 + i)*F18B +: F18B] = F18B'($signed(q_q));
+      assign qhe = (VecBits + QW)'(f18_p[(3 + i)*(F18A + F18B) +: F18A + F18B]);
+    end else begin : gen_qhe_pipe
+      specular_setup_smul #(.ABits(VecBits), .BBits(QW), .TileBits(TileBits)) u_qhe (
+        .clk_i (clk_i), .en_i (adv), .a_i (he_q2[i*VecBits +: VecBits]), .b_i (q_q), .p_o (qhe));
+    end
+    if (SetupII > 1) begin : gen_hmm_fold
+      assign f6_a[(0 + i)*F6A +: F6A] = F6A'($signed(m_gq[i*MW +: MW]));
+      assign f6_b[(0 + i)*F6B +: F6B] = F6B'($signed(hm_q));
+      assign hmm = (MW + HW)'(f6_p[(0 + i)*(F6A + F6B) +: F6A + F6B]);
+    end else begin : gen_hmm_pipe
+      specular_setup_smul #(.ABits(MW), .BBits(HW), .TileBits(TileBits)) u_hmm (
+        .clk_i (clk_i), .en_i (adv), .a_i (m_gq[i*MW +: MW]), .b_i (hm_q), .p_o (hmm));
+    end
     always_ff @(posedge clk_i) begin
       if (adv) begin
         gp_q[i*GPW +: GPW] <= opp_n_gp ? GPW'($signed(he_gp[i*VecBits +: VecBits]))
@@ -291,8 +346,14 @@ module specular_setup_lean #(
   // ---- s = rshift_round(G'.N1, 26) (TG1 -> TS) ----
   logic signed [U+BlkW-1:0] sp [3];
   for (genvar i = 0; i < 3; i++) begin : gen_s
-    specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits), .SetupII(SetupII)) u_sp (
-      .clk_i (clk_i), .en_i (adv), .a_i (n1_g1[i*U +: U]), .b_i (gpn[i*BlkW +: BlkW]), .p_o (sp[i]));
+    if (SetupII > 1) begin : gen_sp_fold
+      assign f44_a[(3 + i)*F44A +: F44A] = F44A'($signed(n1_g1[i*U +: U]));
+      assign f44_b[(3 + i)*F44B +: F44B] = F44B'($signed(gpn[i*BlkW +: BlkW]));
+      assign sp[i] = (U + BlkW)'(f44_p[(3 + i)*(F44A + F44B) +: F44A + F44B]);
+    end else begin : gen_sp_pipe
+      specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits)) u_sp (
+        .clk_i (clk_i), .en_i (adv), .a_i (n1_g1[i*U +: U]), .b_i (gpn[i*BlkW +: BlkW]), .p_o (sp[i]));
+    end
   end
   logic signed [U+BlkW+1:0] s01_q, s2_q, ssum_q;
   logic signed [SW-1:0]     s_q;
@@ -313,8 +374,14 @@ module specular_setup_lean #(
   for (genvar i = 0; i < 3; i++) begin : gen_gv
     logic signed [U+SW-1:0] sn;
     logic signed [GVW-1:0]  t_q;
-    specular_setup_smul #(.ABits(U), .BBits(SW), .TileBits(TileBits), .SetupII(SetupII)) u_sn (
-      .clk_i (clk_i), .en_i (adv), .a_i (n1_s[i*U +: U]), .b_i (s_q), .p_o (sn));
+    if (SetupII > 1) begin : gen_sn_fold
+      assign f44_a[(6 + i)*F44A +: F44A] = F44A'($signed(n1_s[i*U +: U]));
+      assign f44_b[(6 + i)*F44B +: F44B] = F44B'($signed(s_q));
+      assign sn = (U + SW)'(f44_p[(6 + i)*(F44A + F44B) +: F44A + F44B]);
+    end else begin : gen_sn_pipe
+      specular_setup_smul #(.ABits(U), .BBits(SW), .TileBits(TileBits)) u_sn (
+        .clk_i (clk_i), .en_i (adv), .a_i (n1_s[i*U +: U]), .b_i (s_q), .p_o (sn));
+    end
     always_ff @(posedge clk_i) begin
       if (adv) begin
         t_q                <= GVW'((sn + (U + SW)'(64'sd1 <<< (F - 2))) >>> (F - 1));
@@ -332,10 +399,22 @@ module specular_setup_lean #(
   logic signed [2*U-1:0]    hn [9];
   for (genvar j = 0; j < 3; j++) begin : gen_hj
     for (genvar k = 0; k < 3; k++) begin : gen_k
-      specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits), .SetupII(SetupII)) u_hg (
-        .clk_i (clk_i), .en_i (adv), .a_i (h1_g[j*U +: U]), .b_i (g[k*BlkW +: BlkW]), .p_o (hg[3*j+k]));
-      specular_setup_smul #(.ABits(U), .BBits(U), .TileBits(TileBits), .SetupII(SetupII)) u_hn (
-        .clk_i (clk_i), .en_i (adv), .a_i (h1_g[j*U +: U]), .b_i (n1_g[k*U +: U]), .p_o (hn[3*j+k]));
+      if (SetupII > 1) begin : gen_hg_fold
+        assign f44_a[(9 + 3 * j + k)*F44A +: F44A] = F44A'($signed(h1_g[j*U +: U]));
+        assign f44_b[(9 + 3 * j + k)*F44B +: F44B] = F44B'($signed(g[k*BlkW +: BlkW]));
+        assign hg[3*j+k] = (U + BlkW)'(f44_p[(9 + 3 * j + k)*(F44A + F44B) +: F44A + F44B]);
+      end else begin : gen_hg_pipe
+        specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits)) u_hg (
+          .clk_i (clk_i), .en_i (adv), .a_i (h1_g[j*U +: U]), .b_i (g[k*BlkW +: BlkW]), .p_o (hg[3*j+k]));
+      end
+      if (SetupII > 1) begin : gen_hn_fold
+        assign f44_a[(18 + 3 * j + k)*F44A +: F44A] = F44A'($signed(h1_g[j*U +: U]));
+        assign f44_b[(18 + 3 * j + k)*F44B +: F44B] = F44B'($signed(n1_g[k*U +: U]));
+        assign hn[3*j+k] = (U + U)'(f44_p[(18 + 3 * j + k)*(F44A + F44B) +: F44A + F44B]);
+      end else begin : gen_hn_pipe
+        specular_setup_smul #(.ABits(U), .BBits(U), .TileBits(TileBits)) u_hn (
+          .clk_i (clk_i), .en_i (adv), .a_i (h1_g[j*U +: U]), .b_i (n1_g[k*U +: U]), .p_o (hn[3*j+k]));
+      end
     end
   end
   logic signed [XW-1:0] x01_q, xz_q, x_q;
@@ -381,11 +460,23 @@ module specular_setup_lean #(
   logic signed [2*BlkW-1:0] ccp [3];
   logic signed [2*BlkW-1:0] xxp;
   for (genvar i = 0; i < 3; i++) begin : gen_cc
-    specular_setup_smul #(.ABits(BlkW), .BBits(BlkW), .TileBits(TileBits), .SetupII(SetupII)) u_cc (
-      .clk_i (clk_i), .en_i (adv), .a_i (cb[i*BlkW +: BlkW]), .b_i (cb[i*BlkW +: BlkW]), .p_o (ccp[i]));
+    if (SetupII > 1) begin : gen_cc_fold
+      assign f44_a[(27 + i)*F44A +: F44A] = F44A'($signed(cb[i*BlkW +: BlkW]));
+      assign f44_b[(27 + i)*F44B +: F44B] = F44B'($signed(cb[i*BlkW +: BlkW]));
+      assign ccp[i] = (BlkW + BlkW)'(f44_p[(27 + i)*(F44A + F44B) +: F44A + F44B]);
+    end else begin : gen_cc_pipe
+      specular_setup_smul #(.ABits(BlkW), .BBits(BlkW), .TileBits(TileBits)) u_cc (
+        .clk_i (clk_i), .en_i (adv), .a_i (cb[i*BlkW +: BlkW]), .b_i (cb[i*BlkW +: BlkW]), .p_o (ccp[i]));
+    end
   end
-  specular_setup_smul #(.ABits(BlkW), .BBits(BlkW), .TileBits(TileBits), .SetupII(SetupII)) u_xx (
-    .clk_i (clk_i), .en_i (adv), .a_i (xb), .b_i (xb), .p_o (xxp));
+  if (SetupII > 1) begin : gen_xx_fold
+    assign f44_a[(30)*F44A +: F44A] = F44A'($signed(xb));
+    assign f44_b[(30)*F44B +: F44B] = F44B'($signed(xb));
+    assign xxp = (BlkW + BlkW)'(f44_p[(30)*(F44A + F44B) +: F44A + F44B]);
+  end else begin : gen_xx_pipe
+    specular_setup_smul #(.ABits(BlkW), .BBits(BlkW), .TileBits(TileBits)) u_xx (
+      .clk_i (clk_i), .en_i (adv), .a_i (xb), .b_i (xb), .p_o (xxp));
+  end
   logic signed [BlkW-1:0] x_d;  // x at TXC + LX
   specular_delay #(.Width(BlkW), .Depth(LX), .Reset(1'b0), .Ram(1'b1)) u_dly_x_d (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (xb), .q_o (x_d));
@@ -440,10 +531,22 @@ module specular_setup_lean #(
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (p_td), .q_o (p_nu));
   logic signed [U+BlkW-1:0] chp [3], chc [3];
   for (genvar i = 0; i < 3; i++) begin : gen_nu
-    specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits), .SetupII(SetupII)) u_chp (
-      .clk_i (clk_i), .en_i (adv), .a_i (ch[i*U +: U]), .b_i (p_nu[i*BlkW +: BlkW]), .p_o (chp[i]));
-    specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits), .SetupII(SetupII)) u_chc (
-      .clk_i (clk_i), .en_i (adv), .a_i (ch[i*U +: U]), .b_i (c_nu[i*BlkW +: BlkW]), .p_o (chc[i]));
+    if (SetupII > 1) begin : gen_chp_fold
+      assign f44_a[(31 + i)*F44A +: F44A] = F44A'($signed(ch[i*U +: U]));
+      assign f44_b[(31 + i)*F44B +: F44B] = F44B'($signed(p_nu[i*BlkW +: BlkW]));
+      assign chp[i] = (U + BlkW)'(f44_p[(31 + i)*(F44A + F44B) +: F44A + F44B]);
+    end else begin : gen_chp_pipe
+      specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits)) u_chp (
+        .clk_i (clk_i), .en_i (adv), .a_i (ch[i*U +: U]), .b_i (p_nu[i*BlkW +: BlkW]), .p_o (chp[i]));
+    end
+    if (SetupII > 1) begin : gen_chc_fold
+      assign f44_a[(34 + i)*F44A +: F44A] = F44A'($signed(ch[i*U +: U]));
+      assign f44_b[(34 + i)*F44B +: F44B] = F44B'($signed(c_nu[i*BlkW +: BlkW]));
+      assign chc[i] = (U + BlkW)'(f44_p[(34 + i)*(F44A + F44B) +: F44A + F44B]);
+    end else begin : gen_chc_pipe
+      specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits)) u_chc (
+        .clk_i (clk_i), .en_i (adv), .a_i (ch[i*U +: U]), .b_i (c_nu[i*BlkW +: BlkW]), .p_o (chc[i]));
+    end
   end
   logic flat_nu;
   specular_delay #(.Width(1), .Depth(TNU - 1 - TD), .Reset(1'b0), .Ram(1'b1)) u_dly_flat_nu (
@@ -478,10 +581,22 @@ module specular_setup_lean #(
 
   // ---- step 7: A^2 and C beside the CORDICs (TNU -> TCC) ----
   logic signed [2*VW-1:0] cos2, nu2;
-  specular_setup_smul #(.ABits(VW), .BBits(VW), .TileBits(TileBits), .SetupII(SetupII)) u_cos2 (
-    .clk_i (clk_i), .en_i (adv), .a_i (VW'(cos_nu)), .b_i (VW'(cos_nu)), .p_o (cos2));
-  specular_setup_smul #(.ABits(VW), .BBits(VW), .TileBits(TileBits), .SetupII(SetupII)) u_nu2 (
-    .clk_i (clk_i), .en_i (adv), .a_i (nu_q), .b_i (nu_q), .p_o (nu2));
+  if (SetupII > 1) begin : gen_cos2_fold
+    assign f44_a[(37)*F44A +: F44A] = F44A'($signed(VW'(cos_nu)));
+    assign f44_b[(37)*F44B +: F44B] = F44B'($signed(VW'(cos_nu)));
+    assign cos2 = (VW + VW)'(f44_p[(37)*(F44A + F44B) +: F44A + F44B]);
+  end else begin : gen_cos2_pipe
+    specular_setup_smul #(.ABits(VW), .BBits(VW), .TileBits(TileBits)) u_cos2 (
+      .clk_i (clk_i), .en_i (adv), .a_i (VW'(cos_nu)), .b_i (VW'(cos_nu)), .p_o (cos2));
+  end
+  if (SetupII > 1) begin : gen_nu2_fold
+    assign f44_a[(38)*F44A +: F44A] = F44A'($signed(nu_q));
+    assign f44_b[(38)*F44B +: F44B] = F44B'($signed(nu_q));
+    assign nu2 = (VW + VW)'(f44_p[(38)*(F44A + F44B) +: F44A + F44B]);
+  end else begin : gen_nu2_pipe
+    specular_setup_smul #(.ABits(VW), .BBits(VW), .TileBits(TileBits)) u_nu2 (
+      .clk_i (clk_i), .en_i (adv), .a_i (nu_q), .b_i (nu_q), .p_o (nu2));
+  end
   logic signed [A2W-1:0] a2_q;
   always_ff @(posedge clk_i) begin
     if (adv) a2_q <= A2W'(cos2) + A2W'(nu2);
@@ -497,8 +612,14 @@ module specular_setup_lean #(
   specular_delay #(.Width(NBits), .Depth(TL + 1), .Reset(1'b0), .Ram(1'b1)) u_dly_n_l (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n_q), .q_o (n_l));
   logic signed [NBits+LogW:0] nl;
-  specular_setup_smul #(.ABits(NBits + 1), .BBits(LogW), .TileBits(TileBits), .SetupII(SetupII)) u_nl (
-    .clk_i (clk_i), .en_i (adv), .a_i ($signed({1'b0, n_l})), .b_i (log2_a2_q), .p_o (nl));
+  if (SetupII > 1) begin : gen_nl_fold
+    assign f18_a[(6)*F18A +: F18A] = F18A'($signed($signed({1'b0, n_l})));
+    assign f18_b[(6)*F18B +: F18B] = F18B'($signed(log2_a2_q));
+    assign nl = (NBits + 1 + LogW)'(f18_p[(6)*(F18A + F18B) +: F18A + F18B]);
+  end else begin : gen_nl_pipe
+    specular_setup_smul #(.ABits(NBits + 1), .BBits(LogW), .TileBits(TileBits)) u_nl (
+      .clk_i (clk_i), .en_i (adv), .a_i ($signed({1'b0, n_l})), .b_i (log2_a2_q), .p_o (nl));
+  end
   logic signed [ExpW-1:0] e_q;
   always_ff @(posedge clk_i) begin
     if (adv) e_q <= ExpW'((nl + (NBits + LogW + 1)'(1)) >>> 1);
@@ -545,8 +666,14 @@ module specular_setup_lean #(
   logic signed [GW+RLW-1:0] gr;
   logic signed [GW-1:0]     gamma2;  // rshift_round(gamma, CFrac - GammaFrac): gamma 2^1
   assign gamma2 = GW'(gamma_q) <<< (GammaFrac - CFrac);
-  specular_setup_smul #(.ABits(GW), .BBits(RLW), .TileBits(TileBits), .SetupII(SetupII)) u_gr (
-    .clk_i (clk_i), .en_i (adv), .a_i (gamma2), .b_i ($signed({1'b0, recip})), .p_o (gr));
+  if (SetupII > 1) begin : gen_gr_fold
+    assign f44_a[(39)*F44A +: F44A] = F44A'($signed(gamma2));
+    assign f44_b[(39)*F44B +: F44B] = F44B'($signed($signed({1'b0, recip})));
+    assign gr = (GW + RLW)'(f44_p[(39)*(F44A + F44B) +: F44A + F44B]);
+  end else begin : gen_gr_pipe
+    specular_setup_smul #(.ABits(GW), .BBits(RLW), .TileBits(TileBits)) u_gr (
+      .clk_i (clk_i), .en_i (adv), .a_i (gamma2), .b_i ($signed({1'b0, recip})), .p_o (gr));
+  end
   specular_delay #(.Width(4), .Depth(LDP), .Reset(1'b0), .Ram(1'b1)) u_dly_lshift (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (lshift_q), .q_o (lshift_dp));
   logic len_zero_dp, len_zero_q;
