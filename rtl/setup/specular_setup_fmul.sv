@@ -35,7 +35,10 @@ module specular_setup_fmul #(
   input  logic                          en_i,   // the stage advance: the slot's last clock
   input  logic [N*ABits-1:0]            a_i,    // N signed operands
   input  logic [N*BBits-1:0]            b_i,
-  output logic [N*(ABits+BBits)-1:0]    p_o     // N signed products
+  output logic [N*(ABits+BBits)-1:0]    p_o,    // N signed products (registered on en_i)
+  // The same before the register, final from clock SetupII - 2 of the slot on: a caller that
+  // rounds or adds a product in its own stage (log2, exp2) reads it there.
+  output logic [N*(ABits+BBits)-1:0]    pc_o
 );
 
   localparam int T     = specular_setup_lean_pkg::fmul_tile(TileBits);
@@ -157,6 +160,7 @@ module specular_setup_fmul #(
     end
   end
 
+  assign pc_o = p_d;
   always_ff @(posedge clk_i) begin
     if (en_i) p_o <= p_d;
   end

@@ -187,14 +187,17 @@ module specular_setup_lean #(
   logic [N6*(F6A+F6B)-1:0] f6_p;
   logic unused_fold;
   if (SetupII > 1) begin : gen_fold_units
+    logic [N44*(F44A+F44B)-1:0] f44_pc;
+    logic [N18*(F18A+F18B)-1:0] f18_pc;
+    logic [N6*(F6A+F6B)-1:0]    f6_pc;
     specular_setup_fmul #(.N(N44), .ABits(F44A), .BBits(F44B), .TileBits(TileBits), .SetupII(SetupII)) u_f44 (
-      .clk_i (clk_i), .en_i (adv), .a_i (f44_a), .b_i (f44_b), .p_o (f44_p));
+      .clk_i (clk_i), .en_i (adv), .a_i (f44_a), .b_i (f44_b), .p_o (f44_p), .pc_o (f44_pc));
     specular_setup_fmul #(.N(N18), .ABits(F18A), .BBits(F18B), .TileBits(TileBits), .SetupII(SetupII)) u_f18 (
-      .clk_i (clk_i), .en_i (adv), .a_i (f18_a), .b_i (f18_b), .p_o (f18_p));
+      .clk_i (clk_i), .en_i (adv), .a_i (f18_a), .b_i (f18_b), .p_o (f18_p), .pc_o (f18_pc));
     specular_setup_fmul #(.N(N6), .ABits(F6A), .BBits(F6B), .TileBits(TileBits), .SetupII(SetupII)) u_f6 (
-      .clk_i (clk_i), .en_i (adv), .a_i (f6_a), .b_i (f6_b), .p_o (f6_p));
+      .clk_i (clk_i), .en_i (adv), .a_i (f6_a), .b_i (f6_b), .p_o (f6_p), .pc_o (f6_pc));
     // Each lane reads only its own product's width.
-    assign unused_fold = ^{f44_p, f18_p, f6_p};
+    assign unused_fold = ^{f44_p, f18_p, f6_p, f44_pc, f18_pc, f6_pc};
   end else begin : gen_no_fold_units
     assign {f44_a, f44_b, f44_p, f18_a, f18_b, f18_p, f6_a, f6_b, f6_p} = '0;
     assign unused_fold = ^{f44_a, f44_b, f44_p, f18_a, f18_b, f18_p, f6_a, f6_b, f6_p};

@@ -28,8 +28,9 @@ module specular_setup_smul #(
 );
 
   if (SetupII > 1) begin : gen_fold
+    logic [ABits+BBits-1:0] pc_unused;  // p_o is the registered product
     specular_setup_fmul #(.N(1), .ABits(ABits), .BBits(BBits), .TileBits(TileBits), .SetupII(SetupII)) u_fmul (
-      .clk_i (clk_i), .en_i (en_i), .a_i (a_i), .b_i (b_i), .p_o (p_o));
+      .clk_i (clk_i), .en_i (en_i), .a_i (a_i), .b_i (b_i), .p_o (p_o), .pc_o (pc_unused));
   end else begin : gen_pipe
     localparam int PBits  = ABits + BBits;
     localparam int Levels = specular_setup_lean_pkg::pipe_mul_stages(BBits);
