@@ -605,7 +605,7 @@ module specular_setup_lean #(
     if (adv) a2_q <= A2W'(cos2) + A2W'(nu2);
   end
   logic signed [LogW-1:0] log2_a, log2_a2_q;
-  specular_setup_log2 #(.AmpW(A2W), .LogRecipFile(LogRecipFile), .LogValueFile(LogValueFile)) u_log2 (
+  specular_setup_log2 #(.AmpW(A2W), .SetupII(SetupII), .TileBits(TileBits), .LogRecipFile(LogRecipFile), .LogValueFile(LogValueFile)) u_log2 (
     .clk_i (clk_i), .en_i (adv), .a_i (a2_q), .log2_o (log2_a));
   always_ff @(posedge clk_i) begin
     // log2_unit reads A^2 (Q52) as Q44.
@@ -631,7 +631,7 @@ module specular_setup_lean #(
   specular_delay #(.Width(CBits), .Depth(TE), .Reset(1'b0), .Ram(1'b1)) u_dly_scale (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (scale_q), .q_o (scale_e));
   logic sat_unused;
-  specular_setup_exp2 #(.CBits(CBits), .Exp2File(Exp2File)) u_exp2 (
+  specular_setup_exp2 #(.CBits(CBits), .SetupII(SetupII), .TileBits(TileBits), .Exp2File(Exp2File)) u_exp2 (
     .clk_i (clk_i), .en_i (adv), .e_i (e_q), .scale_i (scale_e), .c_o (c_cc), .sat_o (sat_unused));
   specular_delay #(.Width(CBits), .Depth(TOUT - TCC), .Reset(1'b0), .Ram(1'b1)) u_dly_c (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (c_cc), .q_o (c_out));
