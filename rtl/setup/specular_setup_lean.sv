@@ -95,7 +95,7 @@ module specular_setup_lean #(
   localparam int NS18  = specular_setup_lean_pkg::norm_stages(VecBits, SetupII);
   localparam int NS30  = specular_setup_lean_pkg::norm_stages(BlkW, SetupII);
   localparam int BS    = specular_setup_lean_pkg::BlockStages;
-  localparam int CS    = specular_setup_lean_pkg::CordicStages;
+  localparam int CS    = specular_setup_lean_pkg::cordic_stages(SetupII);
   localparam int LMM   = specular_setup_lean_pkg::smul_stages(MW, SetupII);
   localparam int LQ    = specular_setup_lean_pkg::smul_stages(QW, SetupII);
   localparam int LH    = specular_setup_lean_pkg::smul_stages(HW, SetupII);
@@ -126,7 +126,9 @@ module specular_setup_lean #(
   localparam int TL    = TA + specular_setup_pkg::LogStages;
   localparam int TE    = TL + 1 + LNL + 1;
   localparam int TCC   = TE + specular_setup_pkg::ExpStages;
-  localparam int TOUT  = TCOR + 1 + LDP + 2;
+  localparam int TDP   = TCOR + 1 + LDP + 2;  // dpsi
+  // Folded, the CORDICs take one stage and C (log2, exp2) is the later one.
+  localparam int TOUT  = (TCC > TDP) ? TCC : TDP;
   localparam int OutBits = CBits + 2 * AngleBits + NBits + LenBits + TagBits + 3;
 
   if (VecBits < 2 || VecBits > 24 || TagBits < 1) begin : gen_param_check
@@ -138,7 +140,7 @@ module specular_setup_lean #(
     `SPEC_PARAM_ERROR("specular_setup_lean: psi0's rounding and the decisions' guards assume CordicFrac = AngleFrac + 1 and BlockBits = 28")
   end
   // Products started together must finish together.
-  if (LQ != LH || LP != LX || TCC > TOUT) begin : gen_sched_check
+  if (LQ != LH || LP != LX || (SetupII == 1 && TCC > TDP)) begin : gen_sched_check
     `SPEC_PARAM_ERROR("specular_setup_lean: the schedule's parallel multipliers disagree in latency")
   end
 
@@ -149,7 +151,7 @@ module specular_setup_lean #(
   // The advance: the output buffer's room (a register) and, folded, the slot's last clock
   // (slot_last_q, a register), so geo_ready_o stays a function of registers and at most one
   // span enters per slot; every stage moves on it.
-  logic adv, buf_adv, slot_last;
+  logic adv, buf_adv, slot_last, slot_first;
   if (SetupII > 1) begin : gen_slot
     localparam int SlotW = $clog2(SetupII);
     logic [SlotW-1:0] slot_q;
@@ -162,9 +164,11 @@ module specular_setup_lean #(
         slot_q <= slot_q + SlotW'(1);
       end
     end
-    assign slot_last = slot_q == SlotW'(SetupII - 1);
+    assign slot_last  = slot_q == SlotW'(SetupII - 1);
+    assign slot_first = slot_q == '0;
   end else begin : gen_no_slot
-    assign slot_last = 1'b1;
+    assign slot_last  = 1'b1;
+    assign slot_first = 1'b1;
   end
   assign adv         = buf_adv & slot_last;
   assign geo_ready_o = adv;
@@ -577,10 +581,42 @@ module specular_setup_lean #(
   specular_delay #(.Width(BlkW), .Depth(TNU - (TX2 + 1)), .Reset(1'b0), .Ram(1'b1)) u_dly_cos_nu (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (cos_x3), .q_o (cos_nu));
   logic signed [CW-1:0] gamma_raw, lambda;
-  specular_setup_lean_cordic u_cordic_gamma (
-    .clk_i (clk_i), .en_i (adv), .x_i (CW'(x_nu) <<< Up), .y_i (CW'(cl_q) <<< Up), .angle_o (gamma_raw));
-  specular_setup_lean_cordic u_cordic_lambda (
-    .clk_i (clk_i), .en_i (adv), .x_i (CW'(cos_nu) <<< Up), .y_i (CW'(nu_q) <<< Up), .angle_o (lambda));
+  if (SetupII > 1) begin : gen_cordic_fold
+    // Started at the slot's first clock (the operands hold still for the slot), done by its
+    // last (cordic_per_clock), the angles registered on the advance, which also takes them.
+    localparam int PerClock = specular_setup_lean_pkg::cordic_per_clock(SetupII);
+    logic                 g_in_ready, g_valid, l_in_ready, l_valid;
+    logic signed [CW-1:0] g_angle, l_angle;
+    specular_setup_cordic_iter #(.W(CW), .Frac(CFrac), .Iters(specular_setup_lean_pkg::CordicIters),
+                                 .PerClock(PerClock)) u_cordic_gamma (
+      .clk_i (clk_i), .rst_ni (rst_ni), .in_valid_i (slot_first), .in_ready_o (g_in_ready),
+      .x_i (CW'(x_nu) <<< Up), .y_i (CW'(cl_q) <<< Up),
+      .out_valid_o (g_valid), .out_ready_i (adv), .angle_o (g_angle));
+    specular_setup_cordic_iter #(.W(CW), .Frac(CFrac), .Iters(specular_setup_lean_pkg::CordicIters),
+                                 .PerClock(PerClock)) u_cordic_lambda (
+      .clk_i (clk_i), .rst_ni (rst_ni), .in_valid_i (slot_first), .in_ready_o (l_in_ready),
+      .x_i (CW'(cos_nu) <<< Up), .y_i (CW'(nu_q) <<< Up),
+      .out_valid_o (l_valid), .out_ready_i (adv), .angle_o (l_angle));
+    always_ff @(posedge clk_i) begin
+      if (adv) begin
+        gamma_raw <= g_angle;
+        lambda    <= l_angle;
+      end
+    end
+    logic unused_cordic;
+    assign unused_cordic = ^{g_in_ready, g_valid, l_in_ready, l_valid};
+    // The schedule's premise: each slot's vector is accepted at its first clock and its angle
+    // is there at the advance.
+    `SPEC_ASSERT(CordicStarts_A, !slot_first || (g_in_ready && l_in_ready), clk_i, rst_ni)
+    `SPEC_ASSERT(CordicDone_A, !adv || (g_valid && l_valid), clk_i, rst_ni)
+  end else begin : gen_cordic_pipe
+    logic unused_first;
+    assign unused_first = slot_first;
+    specular_setup_lean_cordic u_cordic_gamma (
+      .clk_i (clk_i), .en_i (adv), .x_i (CW'(x_nu) <<< Up), .y_i (CW'(cl_q) <<< Up), .angle_o (gamma_raw));
+    specular_setup_lean_cordic u_cordic_lambda (
+      .clk_i (clk_i), .en_i (adv), .x_i (CW'(cos_nu) <<< Up), .y_i (CW'(nu_q) <<< Up), .angle_o (lambda));
+  end
 
   // ---- step 7: A^2 and C beside the CORDICs (TNU -> TCC) ----
   logic signed [2*VW-1:0] cos2, nu2;
@@ -694,6 +730,9 @@ module specular_setup_lean #(
       dpsi_q     <= len_zero_q ? '0 : AngleBits'((dy_q + (AngleBits + 4)'(1)) >>> 1);
     end
   end
+  logic [AngleBits-1:0] dpsi_out;
+  specular_delay #(.Width(AngleBits), .Depth(TOUT - TDP), .Reset(1'b0), .Ram(1'b1)) u_dly_dpsi (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (dpsi_q), .q_o (dpsi_out));
   specular_delay #(.Width(AngleBits), .Depth(TOUT - TCOR - 1), .Reset(1'b0), .Ram(1'b1)) u_dly_psi0 (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (psi0_q), .q_o (psi0_out));
 
@@ -719,7 +758,7 @@ module specular_setup_lean #(
     status_out = invalid_out ? 3'd1 : undefined_out ? 3'd2 : opph_out ? 3'd4 : oppn_out ? 3'd3 : 3'd0;
     out_d = {zero_out || !a_pos_out ? CBits'(0) : c_out,
              zero_out ? AngleBits'(0) : psi0_out,
-             zero_out ? AngleBits'(0) : dpsi_q,
+             zero_out ? AngleBits'(0) : dpsi_out,
              n_out, len_out, tag_out, status_out};
   end
   specular_out_buf #(.Width(OutBits)) u_out_buf (

@@ -142,6 +142,15 @@ package specular_setup_lean_pkg;
 
   localparam int BlockStages  = 4;                // specular_setup_lean_block
   localparam int CordicStages = 1 + CordicIters;  // specular_setup_lean_cordic
+  // Folded (SetupII > 1) a CORDIC is a specular_setup_cordic_iter started at the slot's first
+  // clock, its angle registered on the advance: one stage. Its result comes Rounds + 1 clocks
+  // after the start, so Rounds <= setup_ii - 2.
+  function automatic int cordic_stages(input int setup_ii);
+    cordic_stages = (setup_ii > 1) ? 1 : CordicStages;
+  endfunction
+  function automatic int cordic_per_clock(input int setup_ii);
+    cordic_per_clock = (CordicIters + setup_ii - 3) / (setup_ii - 2);
+  endfunction
 
 endpackage
 /* verilator lint_on UNUSEDPARAM */
