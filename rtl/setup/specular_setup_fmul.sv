@@ -16,8 +16,8 @@
 //   c = 0               |a_j|, |b_j| and the signs registered
 //   c = 1 + s           tile step s into the multiplier's input registers
 //   c = 2 + s           its tile product registered
-//   c = 3 + s           accumulated; a product's sum starts at -1 for a negative product so
-//                       that the sign is put back by inverting the bits (no carry chain)
+//   c = 3 + s           accumulated, subtracted for a negative product (inverted tile and a
+//                       carry in, one carry chain), so the sum is the signed product
 //   advance edge        p_o registered
 // s < P * H <= SetupII - specular_setup_lean_pkg::FmulOverhead. Exact, so bit-exact
 // with specular_setup_smul. No reset: the counter realigns at the first advance.
@@ -90,52 +90,90 @@ module specular_setup_fmul #(
   end
 
   // Chunk k is part k % Q of product k / Q: tiles (k % Q) H .. (k % Q) H + H - 1 (a tile
-  // index from TP on is a zero tile).
+  // index from TP on is a zero tile). Tile t is (t / TB, t % TB), weight 2^(T (t / TB + t % TB)).
+  localparam int DW = $clog2(TA + TB - 1 + 1);  // the tile's diagonal t / TB + t % TB
   logic [N*Q*PBits-1:0] csum;
   for (genvar m = 0; m < M; m++) begin : gen_mult
     localparam int K0    = m * P;                              // its first chunk
     localparam int Pm    = (N * Q - K0 < P) ? N * Q - K0 : P;  // its chunks
     localparam int Steps = Pm * H;
-    // c = 1 + s: the tiles of step s.
+    localparam int IAW   = $clog2(Pm * TA + 1);
+    localparam int IBW   = $clog2(Pm * TB + 1);
+    // Its tiles: chunk l's a tiles at l TA + i, b tiles at l TB + i (a narrow multiplexer
+    // per multiplier, addressed by a small step decode).
+    logic [Pm*TA*T-1:0] asrc;
+    logic [Pm*TB*T-1:0] bsrc;
+    for (genvar l = 0; l < Pm; l++) begin : gen_src
+      assign asrc[l*TA*T +: TA*T] = ma_q[((K0 + l) / Q)*TA*T +: TA*T];
+      assign bsrc[l*TB*T +: TB*T] = mb_q[((K0 + l) / Q)*TB*T +: TB*T];
+    end
+    // c = 1 + s: decode step s (narrow signals), load its tiles.
+    logic [IAW-1:0] ia;
+    logic [IBW-1:0] ib;
+    logic [DW-1:0]  dg;
+    logic           zero, first, neg;
+    always_comb begin
+      ia    = '0;
+      ib    = '0;
+      dg    = '0;
+      zero  = 1'b1;
+      first = 1'b0;
+      neg   = 1'b0;
+      for (int s = 0; s < Steps; s++) begin
+        if (32'(cnt_q) == s + 1) begin
+          ia    = IAW'((s / H) * TA + ((((K0 + s / H) % Q) * H + s % H) % TP) / TB);
+          ib    = IBW'((s / H) * TB + ((((K0 + s / H) % Q) * H + s % H) % TP) % TB);
+          dg    = DW'(((((K0 + s / H) % Q) * H + s % H) % TP) / TB + ((((K0 + s / H) % Q) * H + s % H) % TP) % TB);
+          zero  = (((K0 + s / H) % Q) * H + s % H) >= TP;
+          first = s % H == 0;
+          neg   = neg_q[(K0 + s / H) / Q];
+        end
+      end
+    end
     logic [T-1:0]   ta_d, tb_d, ta_q, tb_q;
-    logic [2*T-1:0] pp_q;
     always_comb begin
       ta_d = '0;
       tb_d = '0;
-      for (int s = 0; s < Steps; s++) begin
-        if (32'(cnt_q) == s + 1 && ((K0 + s / H) % Q) * H + s % H < TP) begin
-          ta_d = ma_q[((K0 + s / H) / Q * TA + (((K0 + s / H) % Q) * H + s % H) / TB) * T +: T];
-          tb_d = mb_q[((K0 + s / H) / Q * TB + (((K0 + s / H) % Q) * H + s % H) % TB) * T +: T];
-        end
+      for (int i = 0; i < Pm * TA; i++) begin
+        if (ia == IAW'(i)) ta_d = asrc[i*T +: T];
       end
+      for (int i = 0; i < Pm * TB; i++) begin
+        if (ib == IBW'(i)) tb_d = bsrc[i*T +: T];
+      end
+      if (zero) ta_d = '0;
     end
+    logic [2*T-1:0] pp_q;
+    logic [DW-1:0]  dg1_q, dg2_q;
+    logic           first1_q, first2_q, neg1_q, neg2_q;
     always_ff @(posedge clk_i) begin
-      ta_q <= ta_d;
-      tb_q <= tb_d;
-      pp_q <= (2 * T)'(ta_q) * (2 * T)'(tb_q);
+      ta_q     <= ta_d;
+      tb_q     <= tb_d;
+      dg1_q    <= dg;
+      first1_q <= first;
+      neg1_q   <= neg;
+      // c = 2 + s
+      pp_q     <= (2 * T)'(ta_q) * (2 * T)'(tb_q);
+      dg2_q    <= dg1_q;
+      first2_q <= first1_q;
+      neg2_q   <= neg1_q;
     end
-    // c = 3 + s: accumulate step s; a chunk's first step restarts the sum (at -1 for the first
-    // chunk of a negative product), and the sum before it moves to that chunk's register.
-    logic [PBits-1:0] sh, acc_d, acc_q;
-    logic             first, init;
+    // c = 3 + s: accumulate step s, subtracted for a negative product (the tile inverted, a
+    // carry in: one carry chain); a chunk's first step restarts the sum, and the sum before it
+    // moves to that chunk's register.
+    logic [PBits-1:0] sh, acc_q;
+    logic [PBits:0]   acc_d;
     always_comb begin
-      sh    = '0;
-      first = 1'b0;
-      init  = 1'b0;
-      for (int s = 0; s < Steps; s++) begin
-        if (32'(cnt_q) == s + 3) begin
-          sh    = PBits'({{PBits{1'b0}}, pp_q}
-                         << ((((((K0 + s / H) % Q) * H + s % H) % TP) / TB
-                              + ((((K0 + s / H) % Q) * H + s % H) % TP) % TB) * T));
-          first = s % H == 0;
-          init  = (K0 + s / H) % Q == 0 && neg_q[(K0 + s / H) / Q];
-        end
+      sh = '0;
+      for (int d = 0; d < TA + TB - 1; d++) begin
+        if (dg2_q == DW'(d)) sh = PBits'({{PBits{1'b0}}, pp_q} << (d * T));
       end
-      acc_d = (first ? {PBits{init}} : acc_q) + sh;
+      acc_d = {first2_q ? PBits'(0) : acc_q, 1'b1} + {sh ^ {PBits{neg2_q}}, neg2_q};
     end
     always_ff @(posedge clk_i) begin
-      if (cnt_q >= CW'(3) && cnt_q < CW'(Steps + 3)) acc_q <= acc_d;
+      if (cnt_q >= CW'(3) && cnt_q < CW'(Steps + 3)) acc_q <= acc_d[PBits:1];
     end
+    logic unused_cin;
+    assign unused_cin = acc_d[0];  // the carry-in position
     for (genvar l = 0; l < Pm; l++) begin : gen_chunk
       if (l == Pm - 1) begin : gen_last
         assign csum[(K0 + l)*PBits +: PBits] = acc_q;
@@ -149,14 +187,13 @@ module specular_setup_fmul #(
     end
   end
 
-  // The product: its chunks summed (one carry chain), the sign put back by inversion.
+  // The product: its chunks summed (one carry chain), already signed.
   logic [N*PBits-1:0] p_d;
   for (genvar j = 0; j < N; j++) begin : gen_prod
     if (Q == 1) begin : gen_one
-      assign p_d[j*PBits +: PBits] = csum[j*PBits +: PBits] ^ {PBits{neg_q[j]}};
+      assign p_d[j*PBits +: PBits] = csum[j*PBits +: PBits];
     end else begin : gen_two
-      assign p_d[j*PBits +: PBits] = (csum[2*j*PBits +: PBits] + csum[(2*j+1)*PBits +: PBits])
-                                     ^ {PBits{neg_q[j]}};
+      assign p_d[j*PBits +: PBits] = csum[2*j*PBits +: PBits] + csum[(2*j+1)*PBits +: PBits];
     end
   end
 
