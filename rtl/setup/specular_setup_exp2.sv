@@ -68,7 +68,7 @@ module specular_setup_exp2 #(
   // The five products: g E3, g t2, g t3, 2^(j/1024) p4, mant scale.
   logic signed [63:0] pm [5];
   if (SetupII > 1) begin : gen_fold
-    localparam int FA = 36, FB = 36, FN = 5;  // 2 x 2 tiles
+    localparam int FA = 35, FB = 35, FN = 5;  // 2 x 2 tiles
     if (LoBits + 1 > FA || LogFrac + 2 > FA || CBits + 1 > FA || TW > FB) begin : gen_fold_width_check
       `SPEC_PARAM_ERROR("specular_setup_exp2: the folded unit's lanes are too narrow")
     end

@@ -177,9 +177,9 @@ module specular_setup_lean #(
   // by its widths' tiles: 2 x 2 (F44), 1 x 4 (F18) and 2 x 3 (F6). Every operand holds still
   // for the slot, so one unit serves products of different stages; the lanes are numbered at
   // the sites below. Operands are sign-extended, products cut back to their own widths.
-  localparam int F44A = 36, F44B = 36, N44 = 40;
-  localparam int F18A = 18, F18B = 72, N18 = 7;
-  localparam int F6A  = 36, F6B  = 54, N6  = 3;
+  localparam int F44A = 35, F44B = 35, N44 = 40;
+  localparam int F18A = 18, F18B = 69, N18 = 7;
+  localparam int F6A  = 35, F6B  = 52, N6  = 3;
   logic [N44*F44A-1:0] f44_a;
   logic [N44*F44B-1:0] f44_b;
   logic [N44*(F44A+F44B)-1:0] f44_p;

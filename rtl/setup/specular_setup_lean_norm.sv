@@ -81,7 +81,7 @@ module specular_setup_lean_norm #(
 
   // Folded (SetupII > 1): the ten products are lanes of one specular_setup_fmul (every
   // operand holds still for the slot, so it serves all the stages); 2 x 2 tiles fit them all.
-  localparam int FA = 36, FB = 36, FN = 10;
+  localparam int FA = 35, FB = 35, FN = 10;
   if (InW > FA || RW > FB || XW > FA || S2W > FB) begin : gen_fold_width_check
     `SPEC_PARAM_ERROR("specular_setup_lean_norm: the folded unit's lanes are too narrow")
   end

@@ -99,17 +99,22 @@ package specular_setup_lean_pkg;
   endfunction
 
   // ---- The folded products (SetupII > 1, specular_setup_fmul) ----
-  // Clocks of a slot that are not tile steps: the magnitudes, the tile registers, the tile
-  // product register, the last accumulation (the product register takes the advance edge).
-  localparam int FmulOverhead = 4;
-  // The tile width of a folded product: the DSP's (18) or, for the LUT style, the same 18.
+  // Clocks of a slot that are not tile steps: the tile product register, the last
+  // accumulation and the advance edge (p_o).
+  localparam int FmulOverhead = 3;
+  // The signed tile width: the DSP's (18) or, for the LUT style, the same 18. An operand is
+  // cut into unsigned low tiles of fmul_tile - 1 bits and a signed top tile.
   function automatic int fmul_tile(input int tile_bits);
     fmul_tile = (tile_bits == 0) ? 18 : tile_bits;
   endfunction
+  // Tiles of a w-bit signed operand.
+  function automatic int fmul_tiles_of(input int w, input int tile_bits);
+    fmul_tiles_of = (w <= fmul_tile(tile_bits)) ? 1
+                  : 1 + (w - fmul_tile(tile_bits) + fmul_tile(tile_bits) - 2) / (fmul_tile(tile_bits) - 1);
+  endfunction
   // Tile products of one a_bits x b_bits product.
   function automatic int fmul_tiles(input int a_bits, input int b_bits, input int tile_bits);
-    fmul_tiles = ((a_bits + fmul_tile(tile_bits) - 1) / fmul_tile(tile_bits))
-               * ((b_bits + fmul_tile(tile_bits) - 1) / fmul_tile(tile_bits));
+    fmul_tiles = fmul_tiles_of(a_bits, tile_bits) * fmul_tiles_of(b_bits, tile_bits);
   endfunction
   // Tile steps of a multiplier in a slot of setup_ii clocks.
   function automatic int fmul_steps(input int setup_ii);

@@ -81,7 +81,7 @@ module specular_setup_log2 #(
   // The four products: mant recip, e L3, e t3, e t4.
   logic signed [63:0] pm [4];
   if (SetupII > 1) begin : gen_fold
-    localparam int FA = 36, FB = 54, FN = 4;  // recip or e (A) times mant, L3 or t (B): 2 x 3 tiles
+    localparam int FA = 35, FB = 52, FN = 4;  // recip or e (A) times mant, L3 or t (B): 2 x 3 tiles
     if (RecipFrac + 1 > FA || EW > FA || UnitFrac + 2 > FB || TW > FB) begin : gen_fold_width_check
       `SPEC_PARAM_ERROR("specular_setup_log2: the folded unit's lanes are too narrow")
     end
