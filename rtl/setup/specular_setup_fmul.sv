@@ -18,7 +18,7 @@
 // SetupII - 1 while the stage waits):
 //   c = s       tile step s into its multiplier's input registers
 //   c = 1 + s   its tile product registered
-//   c = 2 + s   accumulated (a chunk's first step restarts the sum)
+//   c = 2 + s   accumulated (a chunk's last step moves the sum out and clears the sum)
 //   advance     p_o registered
 // s < P * H <= SetupII - specular_setup_lean_pkg::FmulOverhead. Exact, so bit-exact with
 // specular_setup_smul. No reset: the counter realigns at the first advance.
@@ -117,20 +117,18 @@ module specular_setup_fmul #(
     logic [IAW-1:0] ia;
     logic [IBW-1:0] ib;
     logic [DW-1:0]  dg;
-    logic           zero, first;
+    logic           zero;
     always_comb begin
       ia    = '0;
       ib    = '0;
       dg    = '0;
       zero  = 1'b1;
-      first = 1'b0;
       for (int s = 0; s < Steps; s++) begin
         if (32'(cnt_q) == s) begin
           ia    = IAW'((s / H) * TA + ((((K0 + s / H) % Q) * H + s % H) % TP) / TB);
           ib    = IBW'((s / H) * TB + ((((K0 + s / H) % Q) * H + s % H) % TP) % TB);
           dg    = DW'(((((K0 + s / H) % Q) * H + s % H) % TP) / TB + ((((K0 + s / H) % Q) * H + s % H) % TP) % TB);
           zero  = (((K0 + s / H) % Q) * H + s % H) >= TP;
-          first = s % H == 0;
         end
       end
     end
@@ -148,28 +146,39 @@ module specular_setup_fmul #(
     end
     logic signed [2*T-1:0] pp_q;
     logic [DW-1:0]         dg1_q, dg2_q;
-    logic                  first1_q, first2_q;
     always_ff @(posedge clk_i) begin
       ta_q     <= ta_d;
       tb_q     <= tb_d;
       dg1_q    <= dg;
-      first1_q <= first;
       // c = 1 + s
       pp_q     <= ta_q * tb_q;
       dg2_q    <= dg1_q;
-      first2_q <= first1_q;
     end
-    // c = 2 + s: accumulate step s; a chunk's first step restarts the sum, and the sum before
-    // it moves to that chunk's register.
-    logic [PBits-1:0] sh, acc_q;
+    // c = 2 + s: accumulate step s. A chunk's last step writes the finished sum into the
+    // chunk's register and clears the accumulator (a synchronous reset, no multiplexer in
+    // front of the adder); the last chunk's sum stays in the accumulator until the slot's
+    // first clock clears it.
+    logic [PBits-1:0] sh, acc_q, acc_d;
     always_comb begin
       sh = '0;
       for (int d = 0; d < TA + TB - 1; d++) begin
         if (dg2_q == DW'(d)) sh = PBits'(PBits'(pp_q) << (d * (T - 1)));
       end
+      acc_d = acc_q + sh;
+    end
+    logic acc_clr;
+    always_comb begin
+      acc_clr = cnt_q == '0;
+      for (int l = 0; l < Pm - 1; l++) begin
+        if (32'(cnt_q) == (l + 1) * H + 1) acc_clr = 1'b1;
+      end
     end
     always_ff @(posedge clk_i) begin
-      if (cnt_q >= CW'(2) && cnt_q < CW'(Steps + 2)) acc_q <= (first2_q ? PBits'(0) : acc_q) + sh;
+      if (acc_clr) begin
+        acc_q <= '0;
+      end else if (cnt_q >= CW'(2) && cnt_q < CW'(Steps + 2)) begin
+        acc_q <= acc_d;
+      end
     end
     for (genvar l = 0; l < Pm; l++) begin : gen_chunk
       if (l == Pm - 1) begin : gen_last
@@ -177,7 +186,7 @@ module specular_setup_fmul #(
       end else begin : gen_res
         logic [PBits-1:0] res_q;
         always_ff @(posedge clk_i) begin
-          if (32'(cnt_q) == (l + 1) * H + 2) res_q <= acc_q;
+          if (32'(cnt_q) == (l + 1) * H + 1) res_q <= acc_d;
         end
         assign csum[(K0 + l)*PBits +: PBits] = res_q;
       end
