@@ -8,6 +8,7 @@
 // SPECULAR_SETUP_RTL_SPANS=N runs N random spans instead of 20,000; the LUT-tree variant
 // (TileBits = 0) is built and tested with -DSPECULAR_SETUP_VARIANTS=ON.
 #include "Vsetup_lean.h"
+#include "Vsetup_lean_ii16.h"
 #include "Vsetup_lean_ii32.h"
 #include "Vsetup_lean_ii8.h"
 #if SPECULAR_SETUP_VARIANTS
@@ -134,11 +135,15 @@ struct FoldII8 {
   using Model = Vsetup_lean_ii8;
   static constexpr long kII = 8;
 };
+struct FoldII16 {
+  using Model = Vsetup_lean_ii16;
+  static constexpr long kII = 16;
+};
 struct FoldII32 {
   using Model = Vsetup_lean_ii32;
   static constexpr long kII = 32;
 };
-using FoldModels = std::tuple<FoldII8, FoldII32>;
+using FoldModels = std::tuple<FoldII8, FoldII16, FoldII32>;
 
 size_t fold_spans() {
   const char* e = std::getenv("SPECULAR_SETUP_RTL_SPANS");
