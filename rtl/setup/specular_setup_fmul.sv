@@ -96,29 +96,20 @@ module specular_setup_fmul #(
     localparam int K0    = m * P;                              // its first chunk
     localparam int Pm    = (N * Q - K0 < P) ? N * Q - K0 : P;  // its chunks
     localparam int LW    = $clog2(Pm + 1);
-    localparam int IAW   = (Pm * TA > 1) ? $clog2(Pm * TA) : 1;
-    localparam int IBW   = (Pm * TB > 1) ? $clog2(Pm * TB) : 1;
-    // Its tiles: chunk l's a tiles at l TA + i, b tiles at l TB + j (padded with zero words
-    // to the index's range).
-    logic [T-1:0] asrc [2**IAW];
-    logic [T-1:0] bsrc [2**IBW];
-    for (genvar i = Pm * TA; i < 2**IAW; i++) begin : gen_pad_a
-      assign asrc[i] = '0;
-    end
-    for (genvar i = Pm * TB; i < 2**IBW; i++) begin : gen_pad_b
-      assign bsrc[i] = '0;
-    end
+    localparam int IAW   = $clog2(Pm * TA + TA + 1);
+    localparam int IBW   = $clog2(Pm * TB + TB + 1);
+    // Its tiles: chunk l's a tiles at l TA + i, b tiles at l TB + j.
+    logic [Pm*TA*T-1:0] asrc;
+    logic [Pm*TB*T-1:0] bsrc;
     for (genvar l = 0; l < Pm; l++) begin : gen_src
-      for (genvar i = 0; i < TA; i++) begin : gen_a
-        assign asrc[l*TA+i] = atile[(((K0 + l) / Q)*TA + i)*T +: T];
-      end
-      for (genvar i = 0; i < TB; i++) begin : gen_b
-        assign bsrc[l*TB+i] = btile[(((K0 + l) / Q)*TB + i)*T +: T];
-      end
+      assign asrc[l*TA*T +: TA*T] = atile[((K0 + l) / Q)*TA*T +: TA*T];
+      assign bsrc[l*TB*T +: TB*T] = btile[((K0 + l) / Q)*TB*T +: TB*T];
     end
     // The sequencer, restarted by the advance: chunk l_q, its step t_q, the tile (ia_q, ib_q);
     // a step per clock while l_q < Pm (c = s for step s).
     logic [LW-1:0]  l_q, l_n;
+    logic [IAW-1:0] la_q;  // l_q TA and l_q TB, kept beside l_q (no multiplier)
+    logic [IBW-1:0] lb_q;
     logic [HW-1:0]  t_q;
     logic [TAW-1:0] ta_q, ta_s;
     logic [TBW-1:0] tb_q, tb_s;
@@ -133,11 +124,15 @@ module specular_setup_fmul #(
     always_ff @(posedge clk_i) begin
       if (en_i) begin
         l_q  <= '0;
+        la_q <= '0;
+        lb_q <= '0;
         t_q  <= '0;
         ta_q <= (Q == 2 && K0 % 2 == 1) ? TAW'(HA0) : '0;
         tb_q <= (Q == 2 && K0 % 2 == 1) ? TBW'(HB0) : '0;
       end else if (last) begin
         l_q  <= l_n;
+        la_q <= la_q + IAW'(TA);
+        lb_q <= lb_q + IBW'(TB);
         t_q  <= '0;
         ta_q <= ta_s;
         tb_q <= tb_s;
@@ -156,16 +151,27 @@ module specular_setup_fmul #(
     logic [IBW-1:0] ib;
     logic           zero;
     assign zero = !valid || ta_q >= TAW'(TA);
-    assign ia   = IAW'(l_q) * IAW'(TA) + IAW'(ta_q);
-    assign ib   = IBW'(l_q) * IBW'(TB) + IBW'(tb_q);
-    logic signed [T-1:0]   ta_r, tb_r;
+    assign ia   = la_q + IAW'(ta_q);
+    assign ib   = lb_q + IBW'(tb_q);
+    logic signed [T-1:0]   ta_d, tb_d, ta_r, tb_r;
+    always_comb begin
+      ta_d = '0;
+      tb_d = '0;
+      for (int i = 0; i < Pm * TA; i++) begin
+        if (ia == IAW'(i)) ta_d = asrc[i*T +: T];
+      end
+      for (int i = 0; i < Pm * TB; i++) begin
+        if (ib == IBW'(i)) tb_d = bsrc[i*T +: T];
+      end
+      if (zero) ta_d = '0;
+    end
     logic signed [2*T-1:0] pp_q;
     logic [DW-1:0]         dg1_q, dg2_q;
     logic [LW-1:0]         l1_q, l2_q;
     logic                  v1_q, v2_q, last1_q, last2_q;
     always_ff @(posedge clk_i) begin
-      ta_r    <= zero ? '0 : asrc[ia];
-      tb_r    <= bsrc[ib];
+      ta_r    <= ta_d;
+      tb_r    <= tb_d;
       dg1_q   <= DW'(ta_q) + DW'(tb_q);
       l1_q    <= l_q;
       v1_q    <= valid;
