@@ -14,14 +14,14 @@
 // tile products shifted. A product is one chunk, or two (Q = 2, summed before p_o) when its
 // tiles exceed a slot's steps; a multiplier owns whole chunks, P of them per slot, so the
 // unit has M = ceil(N Q / P) multipliers (specular_setup_lean_pkg::fmul_mults): the tile
-// count falls as SetupII grows. The clock of a slot (c, from the advance on; a sequencer per
-// multiplier, restarted by en_i, idles once its steps are done, while the stage waits):
+// count falls as SetupII grows. The clock of a slot (count c, restarted by en_i, held at
+// SetupII - 1 while the stage waits):
 //   c = s       tile step s into its multiplier's input registers
 //   c = 1 + s   its tile product registered
 //   c = 2 + s   accumulated (a chunk's last step moves the sum out and clears the sum)
 //   advance     p_o registered
 // s < P * H <= SetupII - specular_setup_lean_pkg::FmulOverhead. Exact, so bit-exact with
-// specular_setup_smul. No reset: the sequencers align at the first advance.
+// specular_setup_smul. No reset: the counter realigns at the first advance.
 
 `include "specular_assert.svh"
 
@@ -46,10 +46,12 @@ module specular_setup_fmul #(
   localparam int PBits = ABits + BBits;
   localparam int TA    = specular_setup_lean_pkg::fmul_tiles_of(ABits, TileBits);
   localparam int TB    = specular_setup_lean_pkg::fmul_tiles_of(BBits, TileBits);
+  localparam int TP    = TA * TB;
   localparam int Q     = specular_setup_lean_pkg::fmul_split(ABits, BBits, TileBits, SetupII);
   localparam int H     = specular_setup_lean_pkg::fmul_chunk(ABits, BBits, TileBits, SetupII);
   localparam int P     = specular_setup_lean_pkg::fmul_per_mult(ABits, BBits, TileBits, SetupII);
   localparam int M     = specular_setup_lean_pkg::fmul_mults(N, ABits, BBits, TileBits, SetupII);
+  localparam int CW    = $clog2(SetupII);
   localparam int DW    = $clog2(TA + TB);  // a tile's diagonal i + j, 0 .. TA + TB - 2
 
   if (N < 1 || ABits < 2 || BBits < 2 || SetupII < 2) begin : gen_param_check
@@ -57,6 +59,16 @@ module specular_setup_fmul #(
   end
   if (P < 1) begin : gen_slot_check
     `SPEC_PARAM_ERROR("specular_setup_fmul: half a product's tiles must fit the slot (TA TB <= 2 (SetupII - FmulOverhead))")
+  end
+
+  // The slot's clock count.
+  logic [CW-1:0] cnt_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      cnt_q <= '0;
+    end else if (cnt_q < CW'(SetupII - 1)) begin
+      cnt_q <= cnt_q + CW'(1);
+    end
   end
 
   // The operands' tiles, each T bits signed: tile i of a is bits (T-1) i .. (T-1) i + T - 2
@@ -84,76 +96,43 @@ module specular_setup_fmul #(
     end
   end
 
-  // Chunk k is part k % Q of product k / Q: tiles (k % Q) H .. (k % Q) H + H - 1 in the order
-  // (i, j) = (t / TB, t % TB) (from TA TB on, zero tiles); tile (i, j) weighs 2^((T-1)(i + j)).
-  localparam int HA0  = H / TB;  // the second part's first tile
-  localparam int HB0  = H % TB;
-  localparam int TAW  = $clog2(TA + 1);
-  localparam int TBW  = (TB > 1) ? $clog2(TB) : 1;
-  localparam int HW   = (H > 1) ? $clog2(H) : 1;
+  // Chunk k is part k % Q of product k / Q: tiles (k % Q) H .. (k % Q) H + H - 1 (a tile
+  // index from TP on is a zero tile). Tile t is (t / TB, t % TB), weight 2^((T-1)(t / TB + t % TB)).
   logic [N*Q*PBits-1:0] csum;
   for (genvar m = 0; m < M; m++) begin : gen_mult
     localparam int K0    = m * P;                              // its first chunk
     localparam int Pm    = (N * Q - K0 < P) ? N * Q - K0 : P;  // its chunks
-    localparam int LW    = $clog2(Pm + 1);
-    localparam int IAW   = $clog2(Pm * TA + TA + 1);
-    localparam int IBW   = $clog2(Pm * TB + TB + 1);
-    // Its tiles: chunk l's a tiles at l TA + i, b tiles at l TB + j.
+    localparam int Steps = Pm * H;
+    localparam int IAW   = $clog2(Pm * TA + 1);
+    localparam int IBW   = $clog2(Pm * TB + 1);
+    // Its tiles: chunk l's a tiles at l TA + i, b tiles at l TB + i (a narrow multiplexer
+    // per multiplier, addressed by a small step decode).
     logic [Pm*TA*T-1:0] asrc;
     logic [Pm*TB*T-1:0] bsrc;
     for (genvar l = 0; l < Pm; l++) begin : gen_src
       assign asrc[l*TA*T +: TA*T] = atile[((K0 + l) / Q)*TA*T +: TA*T];
       assign bsrc[l*TB*T +: TB*T] = btile[((K0 + l) / Q)*TB*T +: TB*T];
     end
-    // The sequencer, restarted by the advance: chunk l_q, its step t_q, the tile (ia_q, ib_q);
-    // a step per clock while l_q < Pm (c = s for step s).
-    logic [LW-1:0]  l_q, l_n;
-    logic [IAW-1:0] la_q;  // l_q TA and l_q TB, kept beside l_q (no multiplier)
-    logic [IBW-1:0] lb_q;
-    logic [HW-1:0]  t_q;
-    logic [TAW-1:0] ta_q, ta_s;
-    logic [TBW-1:0] tb_q, tb_s;
-    logic           valid, last, part_n;
-    assign valid  = l_q < LW'(Pm);
-    assign last   = valid && t_q == HW'(H - 1);
-    assign l_n    = l_q + LW'(1);
-    // The part of the next chunk, K0 + l_n: its first tile.
-    assign part_n = (Q == 2) && ((K0 % 2 == 1) ^ l_n[0]);
-    assign ta_s   = part_n ? TAW'(HA0) : '0;
-    assign tb_s   = part_n ? TBW'(HB0) : '0;
-    always_ff @(posedge clk_i) begin
-      if (en_i) begin
-        l_q  <= '0;
-        la_q <= '0;
-        lb_q <= '0;
-        t_q  <= '0;
-        ta_q <= (Q == 2 && K0 % 2 == 1) ? TAW'(HA0) : '0;
-        tb_q <= (Q == 2 && K0 % 2 == 1) ? TBW'(HB0) : '0;
-      end else if (last) begin
-        l_q  <= l_n;
-        la_q <= la_q + IAW'(TA);
-        lb_q <= lb_q + IBW'(TB);
-        t_q  <= '0;
-        ta_q <= ta_s;
-        tb_q <= tb_s;
-      end else if (valid) begin
-        t_q <= t_q + HW'(1);
-        if (tb_q == TBW'(TB - 1)) begin
-          tb_q <= '0;
-          ta_q <= ta_q + TAW'(1);
-        end else begin
-          tb_q <= tb_q + TBW'(1);
+    // c = s: decode step s (narrow signals), load its tiles.
+    logic [IAW-1:0] ia;
+    logic [IBW-1:0] ib;
+    logic [DW-1:0]  dg;
+    logic           zero;
+    always_comb begin
+      ia    = '0;
+      ib    = '0;
+      dg    = '0;
+      zero  = 1'b1;
+      for (int s = 0; s < Steps; s++) begin
+        if (32'(cnt_q) == s) begin
+          ia    = IAW'((s / H) * TA + ((((K0 + s / H) % Q) * H + s % H) % TP) / TB);
+          ib    = IBW'((s / H) * TB + ((((K0 + s / H) % Q) * H + s % H) % TP) % TB);
+          dg    = DW'(((((K0 + s / H) % Q) * H + s % H) % TP) / TB + ((((K0 + s / H) % Q) * H + s % H) % TP) % TB);
+          zero  = (((K0 + s / H) % Q) * H + s % H) >= TP;
         end
       end
     end
-    // c = s: the tiles of step s into the multiplier's registers.
-    logic [IAW-1:0] ia;
-    logic [IBW-1:0] ib;
-    logic           zero;
-    assign zero = !valid || ta_q >= TAW'(TA);
-    assign ia   = la_q + IAW'(ta_q);
-    assign ib   = lb_q + IBW'(tb_q);
-    logic signed [T-1:0]   ta_d, tb_d, ta_r, tb_r;
+    logic signed [T-1:0] ta_d, tb_d, ta_q, tb_q;
     always_comb begin
       ta_d = '0;
       tb_d = '0;
@@ -167,26 +146,18 @@ module specular_setup_fmul #(
     end
     logic signed [2*T-1:0] pp_q;
     logic [DW-1:0]         dg1_q, dg2_q;
-    logic [LW-1:0]         l1_q, l2_q;
-    logic                  v1_q, v2_q, last1_q, last2_q;
     always_ff @(posedge clk_i) begin
-      ta_r    <= ta_d;
-      tb_r    <= tb_d;
-      dg1_q   <= DW'(ta_q) + DW'(tb_q);
-      l1_q    <= l_q;
-      v1_q    <= valid;
-      last1_q <= last;
+      ta_q     <= ta_d;
+      tb_q     <= tb_d;
+      dg1_q    <= dg;
       // c = 1 + s
-      pp_q    <= ta_r * tb_r;
-      dg2_q   <= dg1_q;
-      l2_q    <= l1_q;
-      v2_q    <= v1_q;
-      last2_q <= last1_q;
+      pp_q     <= ta_q * tb_q;
+      dg2_q    <= dg1_q;
     end
     // c = 2 + s: accumulate step s. A chunk's last step writes the finished sum into the
     // chunk's register and clears the accumulator (a synchronous reset, no multiplexer in
-    // front of the adder); the last chunk's sum stays in the accumulator until the advance
-    // (which reads it) clears it.
+    // front of the adder); the last chunk's sum stays in the accumulator until the slot's
+    // first clock clears it.
     logic [PBits-1:0] sh, acc_q, acc_d;
     always_comb begin
       sh = '0;
@@ -195,10 +166,17 @@ module specular_setup_fmul #(
       end
       acc_d = acc_q + sh;
     end
+    logic acc_clr;
+    always_comb begin
+      acc_clr = cnt_q == '0;
+      for (int l = 0; l < Pm - 1; l++) begin
+        if (32'(cnt_q) == (l + 1) * H + 1) acc_clr = 1'b1;
+      end
+    end
     always_ff @(posedge clk_i) begin
-      if (en_i || (last2_q && l2_q != LW'(Pm - 1))) begin
+      if (acc_clr) begin
         acc_q <= '0;
-      end else if (v2_q) begin
+      end else if (cnt_q >= CW'(2) && cnt_q < CW'(Steps + 2)) begin
         acc_q <= acc_d;
       end
     end
@@ -208,7 +186,7 @@ module specular_setup_fmul #(
       end else begin : gen_res
         logic [PBits-1:0] res_q;
         always_ff @(posedge clk_i) begin
-          if (last2_q && l2_q == LW'(l)) res_q <= acc_d;
+          if (32'(cnt_q) == (l + 1) * H + 1) res_q <= acc_d;
         end
         assign csum[(K0 + l)*PBits +: PBits] = res_q;
       end
