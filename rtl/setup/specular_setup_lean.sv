@@ -32,6 +32,15 @@
 //   then     the output buffer
 // The three decisions are the signals opposite_normals_q (tau TON), flat_q and
 // opposite_halfway_q (tau TD), for a test to peek at.
+//
+// SetupII = K >= 5 folds it in time (docs/setup_hw.md#the-lean-datapath): the same stages
+// advance once per slot of K clocks (a slot counter; the advance is the slot's last clock
+// with room in the output buffer, so geo_ready_o stays a register function and one span
+// enters per slot). A product then takes one stage: every product is a lane of a shared
+// specular_setup_fmul (three here, one per normalizer, one each in log2 and exp2) whose
+// tile multipliers, ceil(lanes / per-multiplier lanes) of them, fall as K grows; the CORDICs
+// are specular_setup_cordic_iter instances run within the slot. The stage counts are the
+// package's functions of K, so the T* below and every delay line follow.
 
 `include "specular_assert.svh"
 `include "specular_geo_ports.svh"

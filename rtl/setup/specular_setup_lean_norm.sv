@@ -19,7 +19,8 @@
 //   S, +1, +2       xs2 = rshift_round(m s2, 30); e = 3 2^28 - xs2
 //   S, +1           r = rshift_round(seed e, 19) (Q28)
 //   S, +1, +2       u_i = rshift_round(v_i r, 17 - k): a shift by 16 - k, then (y + 1) >> 1
-// (S: a specular_setup_smul.) Stages: the localparam Stages (specular_setup_lean_pkg::norm_stages).
+// (S: a specular_setup_smul; with SetupII > 1 a lane of the block's specular_setup_fmul, one
+// stage.) Stages: the localparam Stages (specular_setup_lean_pkg::norm_stages).
 // en_i freezes every stage. No reset.
 
 `include "specular_assert.svh"
