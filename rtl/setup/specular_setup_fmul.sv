@@ -53,6 +53,7 @@ module specular_setup_fmul #(
   localparam int M     = specular_setup_lean_pkg::fmul_mults(N, ABits, BBits, TileBits, SetupII);
   localparam int CW    = $clog2(SetupII);
   localparam int DW    = $clog2(TA + TB);  // a tile's diagonal i + j, 0 .. TA + TB - 2
+  localparam int TokenMinSteps = 12;
 
   if (N < 1 || ABits < 2 || BBits < 2 || SetupII < 2) begin : gen_param_check
     `SPEC_PARAM_ERROR("specular_setup_fmul: N >= 1, ABits and BBits >= 2 and SetupII >= 2")
@@ -110,39 +111,75 @@ module specular_setup_fmul #(
       assign asrc[l*TA*T +: TA*T] = atile[((K0 + l) / Q)*TA*T +: TA*T];
       assign bsrc[l*TB*T +: TB*T] = btile[((K0 + l) / Q)*TB*T +: TB*T];
     end
-    // c = s: a one-hot token marks step s (set by the advance, shifted out after the last
-    // step); each tile's select is the OR of its steps' token bits, and the tile registers
-    // take the AND-OR of the selected tiles (no decode of the count, no priority chain).
-    logic [Steps-1:0]  tok_q;
-    always_ff @(posedge clk_i) begin
-      if (en_i) tok_q <= Steps'(1);
-      else      tok_q <= tok_q << 1;
-    end
-    logic [Pm*TA-1:0] sel_a;
-    logic [Pm*TB-1:0] sel_b;
-    logic [DW-1:0]    dg;
-    always_comb begin
-      sel_a = '0;
-      sel_b = '0;
-      dg    = '0;
-      for (int s = 0; s < Steps; s++) begin
-        // Step s: tile t = ((K0 + s / H) % Q) H + s % H of chunk s / H (a zero tile from TP on).
-        if ((((K0 + s / H) % Q) * H + s % H) < TP) begin
-          sel_a[(s / H) * TA + ((((K0 + s / H) % Q) * H + s % H) / TB)] |= tok_q[s];
-          sel_b[(s / H) * TB + ((((K0 + s / H) % Q) * H + s % H) % TB)] |= tok_q[s];
-          dg |= {DW{tok_q[s]}} & DW'((((K0 + s / H) % Q) * H + s % H) / TB + (((K0 + s / H) % Q) * H + s % H) % TB);
+    // The tile selects: a decode of the slot count for a few steps, a one-hot token for many
+    // (each is the smaller there in the ECP5 synthesis).
+    logic signed [T-1:0] ta_d, tb_d, ta_q, tb_q;
+    logic [DW-1:0]       dg;
+    if (Steps > TokenMinSteps) begin : gen_token
+      // c = s: a one-hot token marks step s (set by the advance, shifted out after the last
+      // step); each tile's select is the OR of its steps' token bits, and the tile registers
+      // take the AND-OR of the selected tiles (no decode of the count, no priority chain).
+      logic [Steps-1:0]  tok_q;
+      always_ff @(posedge clk_i) begin
+        if (en_i) tok_q <= Steps'(1);
+        else      tok_q <= tok_q << 1;
+      end
+      logic [Pm*TA-1:0] sel_a;
+      logic [Pm*TB-1:0] sel_b;
+      always_comb begin
+        sel_a = '0;
+        sel_b = '0;
+        dg    = '0;
+        for (int s = 0; s < Steps; s++) begin
+          // Step s: tile t = ((K0 + s / H) % Q) H + s % H of chunk s / H (a zero tile from TP on).
+          if ((((K0 + s / H) % Q) * H + s % H) < TP) begin
+            sel_a[(s / H) * TA + ((((K0 + s / H) % Q) * H + s % H) / TB)] |= tok_q[s];
+            sel_b[(s / H) * TB + ((((K0 + s / H) % Q) * H + s % H) % TB)] |= tok_q[s];
+            dg |= {DW{tok_q[s]}} & DW'((((K0 + s / H) % Q) * H + s % H) / TB + (((K0 + s / H) % Q) * H + s % H) % TB);
+          end
         end
       end
-    end
-    logic signed [T-1:0] ta_d, tb_d, ta_q, tb_q;
-    always_comb begin
-      ta_d = '0;
-      tb_d = '0;
-      for (int i = 0; i < Pm * TA; i++) begin
-        ta_d = ta_d | ({T{sel_a[i]}} & asrc[i*T +: T]);
+      always_comb begin
+        ta_d = '0;
+        tb_d = '0;
+        for (int i = 0; i < Pm * TA; i++) begin
+          ta_d = ta_d | ({T{sel_a[i]}} & asrc[i*T +: T]);
+        end
+        for (int i = 0; i < Pm * TB; i++) begin
+          tb_d = tb_d | ({T{sel_b[i]}} & bsrc[i*T +: T]);
+        end
       end
-      for (int i = 0; i < Pm * TB; i++) begin
-        tb_d = tb_d | ({T{sel_b[i]}} & bsrc[i*T +: T]);
+    end else begin : gen_decode
+      localparam int IAW = $clog2(Pm * TA + 1);
+      localparam int IBW = $clog2(Pm * TB + 1);
+      // c = s: decode step s (narrow signals), load its tiles.
+      logic [IAW-1:0] ia;
+      logic [IBW-1:0] ib;
+      logic           zero;
+      always_comb begin
+        ia    = '0;
+        ib    = '0;
+        dg    = '0;
+        zero  = 1'b1;
+        for (int s = 0; s < Steps; s++) begin
+          if (32'(cnt_q) == s) begin
+            ia    = IAW'((s / H) * TA + ((((K0 + s / H) % Q) * H + s % H) % TP) / TB);
+            ib    = IBW'((s / H) * TB + ((((K0 + s / H) % Q) * H + s % H) % TP) % TB);
+            dg    = DW'(((((K0 + s / H) % Q) * H + s % H) % TP) / TB + ((((K0 + s / H) % Q) * H + s % H) % TP) % TB);
+            zero  = (((K0 + s / H) % Q) * H + s % H) >= TP;
+          end
+        end
+      end
+      always_comb begin
+        ta_d = '0;
+        tb_d = '0;
+        for (int i = 0; i < Pm * TA; i++) begin
+          if (ia == IAW'(i)) ta_d = asrc[i*T +: T];
+        end
+        for (int i = 0; i < Pm * TB; i++) begin
+          if (ib == IBW'(i)) tb_d = bsrc[i*T +: T];
+        end
+        if (zero) ta_d = '0;
       end
     end
     logic signed [2*T-1:0] pp_q;
