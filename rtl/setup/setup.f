@@ -12,6 +12,7 @@ rtl/setup/specular_setup_log2.sv
 rtl/setup/specular_setup_exp2.sv
 rtl/setup/specular_setup.sv
 rtl/setup/specular_setup_lean_pkg.sv
+rtl/setup/specular_setup_fmul.sv
 rtl/setup/specular_setup_smul.sv
 rtl/setup/specular_setup_lean_block.sv
 rtl/setup/specular_setup_lean_norm.sv

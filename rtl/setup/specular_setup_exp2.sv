@@ -15,7 +15,11 @@
 
 module specular_setup_exp2 #(
   parameter int CBits   = 16,
-  parameter     Exp2File = "roms/setup/exp2.hex"
+  parameter     Exp2File = "roms/setup/exp2.hex",
+  // The lean setup's folding (as specular_setup_log2's): the five products share a
+  // specular_setup_fmul, each read before its unit's register. 1: the inline products.
+  parameter int SetupII  = 1,
+  parameter int TileBits = 18
 ) (
   input  logic               clk_i,
   input  logic               en_i,
@@ -61,6 +65,33 @@ module specular_setup_exp2 #(
   logic [CBits-1:0]      scale_q [1:5];
   logic [LogFrac:0]      pow_q [2:4];
   logic signed [TW-1:0]  t2_q, t3_q, p4_q, mant_q;
+  // The five products: g E3, g t2, g t3, 2^(j/1024) p4, mant scale.
+  logic signed [63:0] pm [5];
+  if (SetupII > 1) begin : gen_fold
+    localparam int FA = 35, FB = 35, FN = 5;  // 2 x 2 tiles
+    if (LoBits + 1 > FA || LogFrac + 2 > FA || CBits + 1 > FA || TW > FB) begin : gen_fold_width_check
+      `SPEC_PARAM_ERROR("specular_setup_exp2: the folded unit's lanes are too narrow")
+    end
+    logic [FN*FA-1:0]      f_a;
+    logic [FN*FB-1:0]      f_b;
+    logic [FN*(FA+FB)-1:0] f_p, f_pc;
+    assign f_a = {FA'({1'b0, scale_q[5]}), FA'({1'b0, pow_q[4]}), FA'({1'b0, g_q[3]}), FA'({1'b0, g_q[2]}),
+                  FA'({1'b0, g_q[1]})};
+    assign f_b = {FB'(mant_q), FB'(p4_q), FB'(t3_q), FB'(t2_q), FB'(specular_setup_pkg::E3)};
+    specular_setup_fmul #(.N(FN), .ABits(FA), .BBits(FB), .TileBits(TileBits), .SetupII(SetupII)) u_fmul (
+      .clk_i (clk_i), .en_i (en_i), .a_i (f_a), .b_i (f_b), .p_o (f_p), .pc_o (f_pc));
+    for (genvar i = 0; i < FN; i++) begin : gen_lane
+      assign pm[i] = f_pc[i*(FA+FB) +: 64];
+    end
+    logic unused_fold;
+    assign unused_fold = ^{f_p, f_pc};  // each lane's low 64 bits: mul64's
+  end else begin : gen_inline
+    assign pm[0] = specular_setup_pkg::mul64(64'(g_q[1]), specular_setup_pkg::E3);
+    assign pm[1] = specular_setup_pkg::mul64(64'(g_q[2]), 64'(t2_q));
+    assign pm[2] = specular_setup_pkg::mul64(64'(g_q[3]), 64'(t3_q));
+    assign pm[3] = specular_setup_pkg::mul64(64'(pow_q[4]), 64'(p4_q));
+    assign pm[4] = specular_setup_pkg::mul64(64'(mant_q), 64'(scale_q[5]));
+  end
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       g_q[1]     <= f_d[LoBits-1:0];
@@ -77,12 +108,12 @@ module specular_setup_exp2 #(
       pow_q[3] <= pow_q[2];
       pow_q[4] <= pow_q[3];
       t2_q   <= TW'(specular_setup_pkg::E2 +
-                specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(g_q[1]), specular_setup_pkg::E3), LogFrac));
+                specular_setup_pkg::rshift_round64(pm[0], LogFrac));
       t3_q   <= TW'(specular_setup_pkg::E1 +
-                specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(g_q[2]), 64'(t2_q)), LogFrac));
+                specular_setup_pkg::rshift_round64(pm[1], LogFrac));
       p4_q   <= TW'((64'sd1 <<< LogFrac) +
-                specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(g_q[3]), 64'(t3_q)), LogFrac));
-      mant_q <= TW'(specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(pow_q[4]), 64'(p4_q)), LogFrac));
+                specular_setup_pkg::rshift_round64(pm[2], LogFrac));
+      mant_q <= TW'(specular_setup_pkg::rshift_round64(pm[3], LogFrac));
     end
   end
 
@@ -91,7 +122,7 @@ module specular_setup_exp2 #(
   // 0 or saturated below).
   logic signed [63:0] ei5, v;
   assign ei5 = 64'(ei_q[5]);
-  assign v = specular_setup_pkg::rshift_round64(specular_setup_pkg::mul64(64'(mant_q), 64'(scale_q[5])),
+  assign v = specular_setup_pkg::rshift_round64(pm[4],
                                                 32'(LogFrac) - 32'(ei5 > 64'sd16 ? 64'sd16 : ei5 < MinEi ? MinEi : ei5));
   always_ff @(posedge clk_i) begin
     if (en_i) begin

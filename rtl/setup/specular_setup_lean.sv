@@ -32,6 +32,15 @@
 //   then     the output buffer
 // The three decisions are the signals opposite_normals_q (tau TON), flat_q and
 // opposite_halfway_q (tau TD), for a test to peek at.
+//
+// SetupII = K >= 5 folds it in time (docs/setup_hw.md#the-lean-datapath): the same stages
+// advance once per slot of K clocks (a slot counter; the advance is the slot's last clock
+// with room in the output buffer, so geo_ready_o stays a register function and one span
+// enters per slot). A product then takes one stage: every product is a lane of a shared
+// specular_setup_fmul (three here, one per normalizer, one each in log2 and exp2) whose
+// tile multipliers, ceil(lanes / per-multiplier lanes) of them, fall as K grows; the CORDICs
+// are specular_setup_cordic_iter instances run within the slot. The stage counts are the
+// package's functions of K, so the T* below and every delay line follow.
 
 `include "specular_assert.svh"
 `include "specular_geo_ports.svh"
@@ -42,6 +51,9 @@ module specular_setup_lean #(
   parameter int TagBits      = 16,
   // specular_pipe_mul's resources: 18 the ECP5's MULT18X18D tiles, 0 a LUT tree (iCE40).
   parameter int TileBits     = 18,
+  // Clocks per span: 1 fully pipelined; K >= 5 the folded setup, whose stages advance once
+  // per slot of K clocks and whose products share a few tile multipliers (specular_setup_fmul).
+  parameter int SetupII      = 1,
   parameter     SeedFile     = "roms/setup/rsqrt_seed_lean.hex",
   parameter     LogRecipFile = "roms/setup/log_recip.hex",
   parameter     LogValueFile = "roms/setup/log_value.hex",
@@ -89,20 +101,20 @@ module specular_setup_lean #(
   localparam logic signed [CW-1:0] Pi = CW'(specular_setup_lean_pkg::Pi);
 
   // The schedule.
-  localparam int NS18  = specular_setup_lean_pkg::norm_stages(VecBits);
-  localparam int NS30  = specular_setup_lean_pkg::norm_stages(BlkW);
+  localparam int NS18  = specular_setup_lean_pkg::norm_stages(VecBits, SetupII);
+  localparam int NS30  = specular_setup_lean_pkg::norm_stages(BlkW, SetupII);
   localparam int BS    = specular_setup_lean_pkg::BlockStages;
-  localparam int CS    = specular_setup_lean_pkg::CordicStages;
-  localparam int LMM   = specular_setup_lean_pkg::smul_stages(MW);
-  localparam int LQ    = specular_setup_lean_pkg::smul_stages(QW);
-  localparam int LH    = specular_setup_lean_pkg::smul_stages(HW);
-  localparam int LS    = specular_setup_lean_pkg::smul_stages(BlkW);
-  localparam int LSN   = specular_setup_lean_pkg::smul_stages(SW);
-  localparam int LX    = specular_setup_lean_pkg::smul_stages(BlkW);
-  localparam int LP    = specular_setup_lean_pkg::smul_stages(U);
-  localparam int LA    = specular_setup_lean_pkg::smul_stages(VW);
-  localparam int LNL   = specular_setup_lean_pkg::smul_stages(LogW);
-  localparam int LDP   = specular_setup_lean_pkg::smul_stages(RLW);
+  localparam int CS    = specular_setup_lean_pkg::cordic_stages(SetupII);
+  localparam int LMM   = specular_setup_lean_pkg::smul_stages(MW, SetupII);
+  localparam int LQ    = specular_setup_lean_pkg::smul_stages(QW, SetupII);
+  localparam int LH    = specular_setup_lean_pkg::smul_stages(HW, SetupII);
+  localparam int LS    = specular_setup_lean_pkg::smul_stages(BlkW, SetupII);
+  localparam int LSN   = specular_setup_lean_pkg::smul_stages(SW, SetupII);
+  localparam int LX    = specular_setup_lean_pkg::smul_stages(BlkW, SetupII);
+  localparam int LP    = specular_setup_lean_pkg::smul_stages(U, SetupII);
+  localparam int LA    = specular_setup_lean_pkg::smul_stages(VW, SetupII);
+  localparam int LNL   = specular_setup_lean_pkg::smul_stages(LogW, SetupII);
+  localparam int LDP   = specular_setup_lean_pkg::smul_stages(RLW, SetupII);
   localparam int TN    = NS18;
   localparam int TM    = TN + 1;
   localparam int TQ    = TM + LMM + 2;
@@ -123,7 +135,9 @@ module specular_setup_lean #(
   localparam int TL    = TA + specular_setup_pkg::LogStages;
   localparam int TE    = TL + 1 + LNL + 1;
   localparam int TCC   = TE + specular_setup_pkg::ExpStages;
-  localparam int TOUT  = TCOR + 1 + LDP + 2;
+  localparam int TDP   = TCOR + 1 + LDP + 2;  // dpsi
+  // Folded, the CORDICs take one stage and C (log2, exp2) is the later one.
+  localparam int TOUT  = (TCC > TDP) ? TCC : TDP;
   localparam int OutBits = CBits + 2 * AngleBits + NBits + LenBits + TagBits + 3;
 
   if (VecBits < 2 || VecBits > 24 || TagBits < 1) begin : gen_param_check
@@ -135,12 +149,72 @@ module specular_setup_lean #(
     `SPEC_PARAM_ERROR("specular_setup_lean: psi0's rounding and the decisions' guards assume CordicFrac = AngleFrac + 1 and BlockBits = 28")
   end
   // Products started together must finish together.
-  if (LQ != LH || LP != LX || TCC > TOUT) begin : gen_sched_check
+  if (LQ != LH || LP != LX || (SetupII == 1 && TCC > TDP)) begin : gen_sched_check
     `SPEC_PARAM_ERROR("specular_setup_lean: the schedule's parallel multipliers disagree in latency")
   end
 
-  logic adv;
+  if (SetupII < 1 || (SetupII > 1 && SetupII < specular_setup_lean_pkg::FmulOverhead + 1)) begin : gen_ii_check
+    `SPEC_PARAM_ERROR("specular_setup_lean: SetupII must be 1 or >= FmulOverhead + 1 (5)")
+  end
+
+  // The advance: the output buffer's room (a register) and, folded, the slot's last clock
+  // (slot_last_q, a register), so geo_ready_o stays a function of registers and at most one
+  // span enters per slot; every stage moves on it.
+  logic adv, buf_adv, slot_last, slot_first;
+  if (SetupII > 1) begin : gen_slot
+    localparam int SlotW = $clog2(SetupII);
+    logic [SlotW-1:0] slot_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        slot_q <= '0;
+      end else if (adv) begin
+        slot_q <= '0;
+      end else if (slot_q != SlotW'(SetupII - 1)) begin
+        slot_q <= slot_q + SlotW'(1);
+      end
+    end
+    assign slot_last  = slot_q == SlotW'(SetupII - 1);
+    assign slot_first = slot_q == '0;
+  end else begin : gen_no_slot
+    assign slot_last  = 1'b1;
+    assign slot_first = 1'b1;
+  end
+  assign adv         = buf_adv & slot_last;
   assign geo_ready_o = adv;
+
+  // Folded, every product is a lane of one of three shared units (specular_setup_fmul), sized
+  // by its widths' tiles: 2 x 2 (F44), 1 x 4 (F18) and 2 x 3 (F6). Every operand holds still
+  // for the slot, so one unit serves products of different stages; the lanes are numbered at
+  // the sites below. Operands are sign-extended, products cut back to their own widths.
+  localparam int F44A = 35, F44B = 35, N44 = 40;
+  localparam int F18A = 18, F18B = 69, N18 = 7;
+  localparam int F6A  = 35, F6B  = 52, N6  = 3;
+  logic [N44*F44A-1:0] f44_a;
+  logic [N44*F44B-1:0] f44_b;
+  logic [N44*(F44A+F44B)-1:0] f44_p;
+  logic [N18*F18A-1:0] f18_a;
+  logic [N18*F18B-1:0] f18_b;
+  logic [N18*(F18A+F18B)-1:0] f18_p;
+  logic [N6*F6A-1:0] f6_a;
+  logic [N6*F6B-1:0] f6_b;
+  logic [N6*(F6A+F6B)-1:0] f6_p;
+  logic unused_fold;
+  if (SetupII > 1) begin : gen_fold_units
+    logic [N44*(F44A+F44B)-1:0] f44_pc;
+    logic [N18*(F18A+F18B)-1:0] f18_pc;
+    logic [N6*(F6A+F6B)-1:0]    f6_pc;
+    specular_setup_fmul #(.N(N44), .ABits(F44A), .BBits(F44B), .TileBits(TileBits), .SetupII(SetupII)) u_f44 (
+      .clk_i (clk_i), .en_i (adv), .a_i (f44_a), .b_i (f44_b), .p_o (f44_p), .pc_o (f44_pc));
+    specular_setup_fmul #(.N(N18), .ABits(F18A), .BBits(F18B), .TileBits(TileBits), .SetupII(SetupII)) u_f18 (
+      .clk_i (clk_i), .en_i (adv), .a_i (f18_a), .b_i (f18_b), .p_o (f18_p), .pc_o (f18_pc));
+    specular_setup_fmul #(.N(N6), .ABits(F6A), .BBits(F6B), .TileBits(TileBits), .SetupII(SetupII)) u_f6 (
+      .clk_i (clk_i), .en_i (adv), .a_i (f6_a), .b_i (f6_b), .p_o (f6_p), .pc_o (f6_pc));
+    // Each lane reads only its own product's width.
+    assign unused_fold = ^{f44_p, f18_p, f6_p, f44_pc, f18_pc, f6_pc};
+  end else begin : gen_no_fold_units
+    assign {f44_a, f44_b, f44_p, f18_a, f18_b, f18_p, f6_a, f6_b, f6_p} = '0;
+    assign unused_fold = ^{f44_a, f44_b, f44_p, f18_a, f18_b, f18_p, f6_a, f6_b, f6_p};
+  end
 
   // ---- tau 0: the input register; step 1 ----
   logic                 in_valid_q;
@@ -174,15 +248,15 @@ module specular_setup_lean #(
 
   // ---- step 2: N1, N2, H1 (tau 0 -> TN) ----
   logic [3*U-1:0] n1u, n2u, h1u;
-  specular_setup_lean_norm #(.InW(VecBits), .TileBits(TileBits), .SeedFile(SeedFile)) u_norm_n1 (
+  specular_setup_lean_norm #(.InW(VecBits), .TileBits(TileBits), .SetupII(SetupII), .SeedFile(SeedFile)) u_norm_n1 (
     .clk_i (clk_i), .en_i (adv),
     .x_i (n1_q[0 +: VecBits]), .y_i (n1_q[VecBits +: VecBits]), .z_i (n1_q[2*VecBits +: VecBits]),
     .x_o (n1u[0 +: U]), .y_o (n1u[U +: U]), .z_o (n1u[2*U +: U]));
-  specular_setup_lean_norm #(.InW(VecBits), .TileBits(TileBits), .SeedFile(SeedFile)) u_norm_n2 (
+  specular_setup_lean_norm #(.InW(VecBits), .TileBits(TileBits), .SetupII(SetupII), .SeedFile(SeedFile)) u_norm_n2 (
     .clk_i (clk_i), .en_i (adv),
     .x_i (n2_q[0 +: VecBits]), .y_i (n2_q[VecBits +: VecBits]), .z_i (n2_q[2*VecBits +: VecBits]),
     .x_o (n2u[0 +: U]), .y_o (n2u[U +: U]), .z_o (n2u[2*U +: U]));
-  specular_setup_lean_norm #(.InW(VecBits), .TileBits(TileBits), .SeedFile(SeedFile)) u_norm_h1 (
+  specular_setup_lean_norm #(.InW(VecBits), .TileBits(TileBits), .SetupII(SetupII), .SeedFile(SeedFile)) u_norm_h1 (
     .clk_i (clk_i), .en_i (adv),
     .x_i (h1_q[0 +: VecBits]), .y_i (h1_q[VecBits +: VecBits]), .z_i (h1_q[2*VecBits +: VecBits]),
     .x_o (h1u[0 +: U]), .y_o (h1u[U +: U]), .z_o (h1u[2*U +: U]));
@@ -202,10 +276,22 @@ module specular_setup_lean #(
     always_ff @(posedge clk_i) begin
       if (adv) m_q[i*MW +: MW] <= MW'($signed(n1u[i*U +: U])) + MW'($signed(n2u[i*U +: U]));
     end
-    specular_setup_smul #(.ABits(MW), .BBits(MW), .TileBits(TileBits)) u_mm (
-      .clk_i (clk_i), .en_i (adv), .a_i (m_q[i*MW +: MW]), .b_i (m_q[i*MW +: MW]), .p_o (mm[i]));
-    specular_setup_smul #(.ABits(VecBits), .BBits(MW), .TileBits(TileBits)) u_hem (
-      .clk_i (clk_i), .en_i (adv), .a_i (he_m[i*VecBits +: VecBits]), .b_i (m_q[i*MW +: MW]), .p_o (hem[i]));
+    if (SetupII > 1) begin : gen_mm_fold
+      assign f44_a[(0 + i)*F44A +: F44A] = F44A'($signed(m_q[i*MW +: MW]));
+      assign f44_b[(0 + i)*F44B +: F44B] = F44B'($signed(m_q[i*MW +: MW]));
+      assign mm[i] = (MW + MW)'(f44_p[(0 + i)*(F44A + F44B) +: F44A + F44B]);
+    end else begin : gen_mm_pipe
+      specular_setup_smul #(.ABits(MW), .BBits(MW), .TileBits(TileBits)) u_mm (
+        .clk_i (clk_i), .en_i (adv), .a_i (m_q[i*MW +: MW]), .b_i (m_q[i*MW +: MW]), .p_o (mm[i]));
+    end
+    if (SetupII > 1) begin : gen_hem_fold
+      assign f18_a[(0 + i)*F18A +: F18A] = F18A'($signed(he_m[i*VecBits +: VecBits]));
+      assign f18_b[(0 + i)*F18B +: F18B] = F18B'($signed(m_q[i*MW +: MW]));
+      assign hem[i] = (VecBits + MW)'(f18_p[(0 + i)*(F18A + F18B) +: F18A + F18B]);
+    end else begin : gen_hem_pipe
+      specular_setup_smul #(.ABits(VecBits), .BBits(MW), .TileBits(TileBits)) u_hem (
+        .clk_i (clk_i), .en_i (adv), .a_i (he_m[i*VecBits +: VecBits]), .b_i (m_q[i*MW +: MW]), .p_o (hem[i]));
+    end
   end
   logic signed [QW-1:0] q01_q, q2_q, q_q;
   logic signed [HW-1:0] hm01_q, hm2_q, hm_q;
@@ -235,10 +321,22 @@ module specular_setup_lean #(
   for (genvar i = 0; i < 3; i++) begin : gen_gp
     logic signed [VecBits+QW-1:0] qhe;
     logic signed [MW+HW-1:0]      hmm;
-    specular_setup_smul #(.ABits(VecBits), .BBits(QW), .TileBits(TileBits)) u_qhe (
-      .clk_i (clk_i), .en_i (adv), .a_i (he_q2[i*VecBits +: VecBits]), .b_i (q_q), .p_o (qhe));
-    specular_setup_smul #(.ABits(MW), .BBits(HW), .TileBits(TileBits)) u_hmm (
-      .clk_i (clk_i), .en_i (adv), .a_i (m_gq[i*MW +: MW]), .b_i (hm_q), .p_o (hmm));
+    if (SetupII > 1) begin : gen_qhe_fold
+      assign f18_a[(3 + i)*F18A +: F18A] = F18A'($signed(he_q2[i*VecBits +: VecBits]));
+      assign f18_b[(3 + i)*F18B +: F18B] = F18B'($signed(q_q));
+      assign qhe = (VecBits + QW)'(f18_p[(3 + i)*(F18A + F18B) +: F18A + F18B]);
+    end else begin : gen_qhe_pipe
+      specular_setup_smul #(.ABits(VecBits), .BBits(QW), .TileBits(TileBits)) u_qhe (
+        .clk_i (clk_i), .en_i (adv), .a_i (he_q2[i*VecBits +: VecBits]), .b_i (q_q), .p_o (qhe));
+    end
+    if (SetupII > 1) begin : gen_hmm_fold
+      assign f6_a[(0 + i)*F6A +: F6A] = F6A'($signed(m_gq[i*MW +: MW]));
+      assign f6_b[(0 + i)*F6B +: F6B] = F6B'($signed(hm_q));
+      assign hmm = (MW + HW)'(f6_p[(0 + i)*(F6A + F6B) +: F6A + F6B]);
+    end else begin : gen_hmm_pipe
+      specular_setup_smul #(.ABits(MW), .BBits(HW), .TileBits(TileBits)) u_hmm (
+        .clk_i (clk_i), .en_i (adv), .a_i (m_gq[i*MW +: MW]), .b_i (hm_q), .p_o (hmm));
+    end
     always_ff @(posedge clk_i) begin
       if (adv) begin
         gp_q[i*GPW +: GPW] <= opp_n_gp ? GPW'($signed(he_gp[i*VecBits +: VecBits]))
@@ -264,8 +362,14 @@ module specular_setup_lean #(
   // ---- s = rshift_round(G'.N1, 26) (TG1 -> TS) ----
   logic signed [U+BlkW-1:0] sp [3];
   for (genvar i = 0; i < 3; i++) begin : gen_s
-    specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits)) u_sp (
-      .clk_i (clk_i), .en_i (adv), .a_i (n1_g1[i*U +: U]), .b_i (gpn[i*BlkW +: BlkW]), .p_o (sp[i]));
+    if (SetupII > 1) begin : gen_sp_fold
+      assign f44_a[(3 + i)*F44A +: F44A] = F44A'($signed(n1_g1[i*U +: U]));
+      assign f44_b[(3 + i)*F44B +: F44B] = F44B'($signed(gpn[i*BlkW +: BlkW]));
+      assign sp[i] = (U + BlkW)'(f44_p[(3 + i)*(F44A + F44B) +: F44A + F44B]);
+    end else begin : gen_sp_pipe
+      specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits)) u_sp (
+        .clk_i (clk_i), .en_i (adv), .a_i (n1_g1[i*U +: U]), .b_i (gpn[i*BlkW +: BlkW]), .p_o (sp[i]));
+    end
   end
   logic signed [U+BlkW+1:0] s01_q, s2_q, ssum_q;
   logic signed [SW-1:0]     s_q;
@@ -286,8 +390,14 @@ module specular_setup_lean #(
   for (genvar i = 0; i < 3; i++) begin : gen_gv
     logic signed [U+SW-1:0] sn;
     logic signed [GVW-1:0]  t_q;
-    specular_setup_smul #(.ABits(U), .BBits(SW), .TileBits(TileBits)) u_sn (
-      .clk_i (clk_i), .en_i (adv), .a_i (n1_s[i*U +: U]), .b_i (s_q), .p_o (sn));
+    if (SetupII > 1) begin : gen_sn_fold
+      assign f44_a[(6 + i)*F44A +: F44A] = F44A'($signed(n1_s[i*U +: U]));
+      assign f44_b[(6 + i)*F44B +: F44B] = F44B'($signed(s_q));
+      assign sn = (U + SW)'(f44_p[(6 + i)*(F44A + F44B) +: F44A + F44B]);
+    end else begin : gen_sn_pipe
+      specular_setup_smul #(.ABits(U), .BBits(SW), .TileBits(TileBits)) u_sn (
+        .clk_i (clk_i), .en_i (adv), .a_i (n1_s[i*U +: U]), .b_i (s_q), .p_o (sn));
+    end
     always_ff @(posedge clk_i) begin
       if (adv) begin
         t_q                <= GVW'((sn + (U + SW)'(64'sd1 <<< (F - 2))) >>> (F - 1));
@@ -305,10 +415,22 @@ module specular_setup_lean #(
   logic signed [2*U-1:0]    hn [9];
   for (genvar j = 0; j < 3; j++) begin : gen_hj
     for (genvar k = 0; k < 3; k++) begin : gen_k
-      specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits)) u_hg (
-        .clk_i (clk_i), .en_i (adv), .a_i (h1_g[j*U +: U]), .b_i (g[k*BlkW +: BlkW]), .p_o (hg[3*j+k]));
-      specular_setup_smul #(.ABits(U), .BBits(U), .TileBits(TileBits)) u_hn (
-        .clk_i (clk_i), .en_i (adv), .a_i (h1_g[j*U +: U]), .b_i (n1_g[k*U +: U]), .p_o (hn[3*j+k]));
+      if (SetupII > 1) begin : gen_hg_fold
+        assign f44_a[(9 + 3 * j + k)*F44A +: F44A] = F44A'($signed(h1_g[j*U +: U]));
+        assign f44_b[(9 + 3 * j + k)*F44B +: F44B] = F44B'($signed(g[k*BlkW +: BlkW]));
+        assign hg[3*j+k] = (U + BlkW)'(f44_p[(9 + 3 * j + k)*(F44A + F44B) +: F44A + F44B]);
+      end else begin : gen_hg_pipe
+        specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits)) u_hg (
+          .clk_i (clk_i), .en_i (adv), .a_i (h1_g[j*U +: U]), .b_i (g[k*BlkW +: BlkW]), .p_o (hg[3*j+k]));
+      end
+      if (SetupII > 1) begin : gen_hn_fold
+        assign f44_a[(18 + 3 * j + k)*F44A +: F44A] = F44A'($signed(h1_g[j*U +: U]));
+        assign f44_b[(18 + 3 * j + k)*F44B +: F44B] = F44B'($signed(n1_g[k*U +: U]));
+        assign hn[3*j+k] = (U + U)'(f44_p[(18 + 3 * j + k)*(F44A + F44B) +: F44A + F44B]);
+      end else begin : gen_hn_pipe
+        specular_setup_smul #(.ABits(U), .BBits(U), .TileBits(TileBits)) u_hn (
+          .clk_i (clk_i), .en_i (adv), .a_i (h1_g[j*U +: U]), .b_i (n1_g[k*U +: U]), .p_o (hn[3*j+k]));
+      end
     end
   end
   logic signed [XW-1:0] x01_q, xz_q, x_q;
@@ -354,11 +476,23 @@ module specular_setup_lean #(
   logic signed [2*BlkW-1:0] ccp [3];
   logic signed [2*BlkW-1:0] xxp;
   for (genvar i = 0; i < 3; i++) begin : gen_cc
-    specular_setup_smul #(.ABits(BlkW), .BBits(BlkW), .TileBits(TileBits)) u_cc (
-      .clk_i (clk_i), .en_i (adv), .a_i (cb[i*BlkW +: BlkW]), .b_i (cb[i*BlkW +: BlkW]), .p_o (ccp[i]));
+    if (SetupII > 1) begin : gen_cc_fold
+      assign f44_a[(27 + i)*F44A +: F44A] = F44A'($signed(cb[i*BlkW +: BlkW]));
+      assign f44_b[(27 + i)*F44B +: F44B] = F44B'($signed(cb[i*BlkW +: BlkW]));
+      assign ccp[i] = (BlkW + BlkW)'(f44_p[(27 + i)*(F44A + F44B) +: F44A + F44B]);
+    end else begin : gen_cc_pipe
+      specular_setup_smul #(.ABits(BlkW), .BBits(BlkW), .TileBits(TileBits)) u_cc (
+        .clk_i (clk_i), .en_i (adv), .a_i (cb[i*BlkW +: BlkW]), .b_i (cb[i*BlkW +: BlkW]), .p_o (ccp[i]));
+    end
   end
-  specular_setup_smul #(.ABits(BlkW), .BBits(BlkW), .TileBits(TileBits)) u_xx (
-    .clk_i (clk_i), .en_i (adv), .a_i (xb), .b_i (xb), .p_o (xxp));
+  if (SetupII > 1) begin : gen_xx_fold
+    assign f44_a[(30)*F44A +: F44A] = F44A'($signed(xb));
+    assign f44_b[(30)*F44B +: F44B] = F44B'($signed(xb));
+    assign xxp = (BlkW + BlkW)'(f44_p[(30)*(F44A + F44B) +: F44A + F44B]);
+  end else begin : gen_xx_pipe
+    specular_setup_smul #(.ABits(BlkW), .BBits(BlkW), .TileBits(TileBits)) u_xx (
+      .clk_i (clk_i), .en_i (adv), .a_i (xb), .b_i (xb), .p_o (xxp));
+  end
   logic signed [BlkW-1:0] x_d;  // x at TXC + LX
   specular_delay #(.Width(BlkW), .Depth(LX), .Reset(1'b0), .Ram(1'b1)) u_dly_x_d (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (xb), .q_o (x_d));
@@ -403,7 +537,7 @@ module specular_setup_lean #(
     if (adv) csel_q <= opposite_halfway_q ? p_td : c_td;
   end
   logic [3*U-1:0] ch;
-  specular_setup_lean_norm #(.InW(BlkW), .TileBits(TileBits), .SeedFile(SeedFile)) u_norm_c (
+  specular_setup_lean_norm #(.InW(BlkW), .TileBits(TileBits), .SetupII(SetupII), .SeedFile(SeedFile)) u_norm_c (
     .clk_i (clk_i), .en_i (adv),
     .x_i (csel_q[0 +: BlkW]), .y_i (csel_q[BlkW +: BlkW]), .z_i (csel_q[2*BlkW +: BlkW]),
     .x_o (ch[0 +: U]), .y_o (ch[U +: U]), .z_o (ch[2*U +: U]));
@@ -413,10 +547,22 @@ module specular_setup_lean #(
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (p_td), .q_o (p_nu));
   logic signed [U+BlkW-1:0] chp [3], chc [3];
   for (genvar i = 0; i < 3; i++) begin : gen_nu
-    specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits)) u_chp (
-      .clk_i (clk_i), .en_i (adv), .a_i (ch[i*U +: U]), .b_i (p_nu[i*BlkW +: BlkW]), .p_o (chp[i]));
-    specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits)) u_chc (
-      .clk_i (clk_i), .en_i (adv), .a_i (ch[i*U +: U]), .b_i (c_nu[i*BlkW +: BlkW]), .p_o (chc[i]));
+    if (SetupII > 1) begin : gen_chp_fold
+      assign f44_a[(31 + i)*F44A +: F44A] = F44A'($signed(ch[i*U +: U]));
+      assign f44_b[(31 + i)*F44B +: F44B] = F44B'($signed(p_nu[i*BlkW +: BlkW]));
+      assign chp[i] = (U + BlkW)'(f44_p[(31 + i)*(F44A + F44B) +: F44A + F44B]);
+    end else begin : gen_chp_pipe
+      specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits)) u_chp (
+        .clk_i (clk_i), .en_i (adv), .a_i (ch[i*U +: U]), .b_i (p_nu[i*BlkW +: BlkW]), .p_o (chp[i]));
+    end
+    if (SetupII > 1) begin : gen_chc_fold
+      assign f44_a[(34 + i)*F44A +: F44A] = F44A'($signed(ch[i*U +: U]));
+      assign f44_b[(34 + i)*F44B +: F44B] = F44B'($signed(c_nu[i*BlkW +: BlkW]));
+      assign chc[i] = (U + BlkW)'(f44_p[(34 + i)*(F44A + F44B) +: F44A + F44B]);
+    end else begin : gen_chc_pipe
+      specular_setup_smul #(.ABits(U), .BBits(BlkW), .TileBits(TileBits)) u_chc (
+        .clk_i (clk_i), .en_i (adv), .a_i (ch[i*U +: U]), .b_i (c_nu[i*BlkW +: BlkW]), .p_o (chc[i]));
+    end
   end
   logic flat_nu;
   specular_delay #(.Width(1), .Depth(TNU - 1 - TD), .Reset(1'b0), .Ram(1'b1)) u_dly_flat_nu (
@@ -444,23 +590,67 @@ module specular_setup_lean #(
   specular_delay #(.Width(BlkW), .Depth(TNU - (TX2 + 1)), .Reset(1'b0), .Ram(1'b1)) u_dly_cos_nu (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (cos_x3), .q_o (cos_nu));
   logic signed [CW-1:0] gamma_raw, lambda;
-  specular_setup_lean_cordic u_cordic_gamma (
-    .clk_i (clk_i), .en_i (adv), .x_i (CW'(x_nu) <<< Up), .y_i (CW'(cl_q) <<< Up), .angle_o (gamma_raw));
-  specular_setup_lean_cordic u_cordic_lambda (
-    .clk_i (clk_i), .en_i (adv), .x_i (CW'(cos_nu) <<< Up), .y_i (CW'(nu_q) <<< Up), .angle_o (lambda));
+  if (SetupII > 1) begin : gen_cordic_fold
+    // Started at the slot's first clock (the operands hold still for the slot), done by its
+    // last (cordic_per_clock), the angles registered on the advance, which also takes them.
+    localparam int PerClock = specular_setup_lean_pkg::cordic_per_clock(SetupII);
+    logic                 g_in_ready, g_valid, l_in_ready, l_valid;
+    logic signed [CW-1:0] g_angle, l_angle;
+    specular_setup_cordic_iter #(.W(CW), .Frac(CFrac), .Iters(specular_setup_lean_pkg::CordicIters),
+                                 .PerClock(PerClock)) u_cordic_gamma (
+      .clk_i (clk_i), .rst_ni (rst_ni), .in_valid_i (slot_first), .in_ready_o (g_in_ready),
+      .x_i (CW'(x_nu) <<< Up), .y_i (CW'(cl_q) <<< Up),
+      .out_valid_o (g_valid), .out_ready_i (adv), .angle_o (g_angle));
+    specular_setup_cordic_iter #(.W(CW), .Frac(CFrac), .Iters(specular_setup_lean_pkg::CordicIters),
+                                 .PerClock(PerClock)) u_cordic_lambda (
+      .clk_i (clk_i), .rst_ni (rst_ni), .in_valid_i (slot_first), .in_ready_o (l_in_ready),
+      .x_i (CW'(cos_nu) <<< Up), .y_i (CW'(nu_q) <<< Up),
+      .out_valid_o (l_valid), .out_ready_i (adv), .angle_o (l_angle));
+    always_ff @(posedge clk_i) begin
+      if (adv) begin
+        gamma_raw <= g_angle;
+        lambda    <= l_angle;
+      end
+    end
+    logic unused_cordic;
+    assign unused_cordic = ^{g_in_ready, g_valid, l_in_ready, l_valid};
+    // The schedule's premise: each slot's vector is accepted at its first clock and its angle
+    // is there at the advance.
+    `SPEC_ASSERT(CordicStarts_A, !slot_first || (g_in_ready && l_in_ready), clk_i, rst_ni)
+    `SPEC_ASSERT(CordicDone_A, !adv || (g_valid && l_valid), clk_i, rst_ni)
+  end else begin : gen_cordic_pipe
+    logic unused_first;
+    assign unused_first = slot_first;
+    specular_setup_lean_cordic u_cordic_gamma (
+      .clk_i (clk_i), .en_i (adv), .x_i (CW'(x_nu) <<< Up), .y_i (CW'(cl_q) <<< Up), .angle_o (gamma_raw));
+    specular_setup_lean_cordic u_cordic_lambda (
+      .clk_i (clk_i), .en_i (adv), .x_i (CW'(cos_nu) <<< Up), .y_i (CW'(nu_q) <<< Up), .angle_o (lambda));
+  end
 
   // ---- step 7: A^2 and C beside the CORDICs (TNU -> TCC) ----
   logic signed [2*VW-1:0] cos2, nu2;
-  specular_setup_smul #(.ABits(VW), .BBits(VW), .TileBits(TileBits)) u_cos2 (
-    .clk_i (clk_i), .en_i (adv), .a_i (VW'(cos_nu)), .b_i (VW'(cos_nu)), .p_o (cos2));
-  specular_setup_smul #(.ABits(VW), .BBits(VW), .TileBits(TileBits)) u_nu2 (
-    .clk_i (clk_i), .en_i (adv), .a_i (nu_q), .b_i (nu_q), .p_o (nu2));
+  if (SetupII > 1) begin : gen_cos2_fold
+    assign f44_a[(37)*F44A +: F44A] = F44A'($signed(VW'(cos_nu)));
+    assign f44_b[(37)*F44B +: F44B] = F44B'($signed(VW'(cos_nu)));
+    assign cos2 = (VW + VW)'(f44_p[(37)*(F44A + F44B) +: F44A + F44B]);
+  end else begin : gen_cos2_pipe
+    specular_setup_smul #(.ABits(VW), .BBits(VW), .TileBits(TileBits)) u_cos2 (
+      .clk_i (clk_i), .en_i (adv), .a_i (VW'(cos_nu)), .b_i (VW'(cos_nu)), .p_o (cos2));
+  end
+  if (SetupII > 1) begin : gen_nu2_fold
+    assign f44_a[(38)*F44A +: F44A] = F44A'($signed(nu_q));
+    assign f44_b[(38)*F44B +: F44B] = F44B'($signed(nu_q));
+    assign nu2 = (VW + VW)'(f44_p[(38)*(F44A + F44B) +: F44A + F44B]);
+  end else begin : gen_nu2_pipe
+    specular_setup_smul #(.ABits(VW), .BBits(VW), .TileBits(TileBits)) u_nu2 (
+      .clk_i (clk_i), .en_i (adv), .a_i (nu_q), .b_i (nu_q), .p_o (nu2));
+  end
   logic signed [A2W-1:0] a2_q;
   always_ff @(posedge clk_i) begin
     if (adv) a2_q <= A2W'(cos2) + A2W'(nu2);
   end
   logic signed [LogW-1:0] log2_a, log2_a2_q;
-  specular_setup_log2 #(.AmpW(A2W), .LogRecipFile(LogRecipFile), .LogValueFile(LogValueFile)) u_log2 (
+  specular_setup_log2 #(.AmpW(A2W), .SetupII(SetupII), .TileBits(TileBits), .LogRecipFile(LogRecipFile), .LogValueFile(LogValueFile)) u_log2 (
     .clk_i (clk_i), .en_i (adv), .a_i (a2_q), .log2_o (log2_a));
   always_ff @(posedge clk_i) begin
     // log2_unit reads A^2 (Q52) as Q44.
@@ -470,8 +660,14 @@ module specular_setup_lean #(
   specular_delay #(.Width(NBits), .Depth(TL + 1), .Reset(1'b0), .Ram(1'b1)) u_dly_n_l (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n_q), .q_o (n_l));
   logic signed [NBits+LogW:0] nl;
-  specular_setup_smul #(.ABits(NBits + 1), .BBits(LogW), .TileBits(TileBits)) u_nl (
-    .clk_i (clk_i), .en_i (adv), .a_i ($signed({1'b0, n_l})), .b_i (log2_a2_q), .p_o (nl));
+  if (SetupII > 1) begin : gen_nl_fold
+    assign f18_a[(6)*F18A +: F18A] = F18A'($signed($signed({1'b0, n_l})));
+    assign f18_b[(6)*F18B +: F18B] = F18B'($signed(log2_a2_q));
+    assign nl = (NBits + 1 + LogW)'(f18_p[(6)*(F18A + F18B) +: F18A + F18B]);
+  end else begin : gen_nl_pipe
+    specular_setup_smul #(.ABits(NBits + 1), .BBits(LogW), .TileBits(TileBits)) u_nl (
+      .clk_i (clk_i), .en_i (adv), .a_i ($signed({1'b0, n_l})), .b_i (log2_a2_q), .p_o (nl));
+  end
   logic signed [ExpW-1:0] e_q;
   always_ff @(posedge clk_i) begin
     if (adv) e_q <= ExpW'((nl + (NBits + LogW + 1)'(1)) >>> 1);
@@ -480,7 +676,7 @@ module specular_setup_lean #(
   specular_delay #(.Width(CBits), .Depth(TE), .Reset(1'b0), .Ram(1'b1)) u_dly_scale (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (scale_q), .q_o (scale_e));
   logic sat_unused;
-  specular_setup_exp2 #(.CBits(CBits), .Exp2File(Exp2File)) u_exp2 (
+  specular_setup_exp2 #(.CBits(CBits), .SetupII(SetupII), .TileBits(TileBits), .Exp2File(Exp2File)) u_exp2 (
     .clk_i (clk_i), .en_i (adv), .e_i (e_q), .scale_i (scale_e), .c_o (c_cc), .sat_o (sat_unused));
   specular_delay #(.Width(CBits), .Depth(TOUT - TCC), .Reset(1'b0), .Ram(1'b1)) u_dly_c (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (c_cc), .q_o (c_out));
@@ -518,8 +714,14 @@ module specular_setup_lean #(
   logic signed [GW+RLW-1:0] gr;
   logic signed [GW-1:0]     gamma2;  // rshift_round(gamma, CFrac - GammaFrac): gamma 2^1
   assign gamma2 = GW'(gamma_q) <<< (GammaFrac - CFrac);
-  specular_setup_smul #(.ABits(GW), .BBits(RLW), .TileBits(TileBits)) u_gr (
-    .clk_i (clk_i), .en_i (adv), .a_i (gamma2), .b_i ($signed({1'b0, recip})), .p_o (gr));
+  if (SetupII > 1) begin : gen_gr_fold
+    assign f44_a[(39)*F44A +: F44A] = F44A'($signed(gamma2));
+    assign f44_b[(39)*F44B +: F44B] = F44B'($signed($signed({1'b0, recip})));
+    assign gr = (GW + RLW)'(f44_p[(39)*(F44A + F44B) +: F44A + F44B]);
+  end else begin : gen_gr_pipe
+    specular_setup_smul #(.ABits(GW), .BBits(RLW), .TileBits(TileBits)) u_gr (
+      .clk_i (clk_i), .en_i (adv), .a_i (gamma2), .b_i ($signed({1'b0, recip})), .p_o (gr));
+  end
   specular_delay #(.Width(4), .Depth(LDP), .Reset(1'b0), .Ram(1'b1)) u_dly_lshift (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (lshift_q), .q_o (lshift_dp));
   logic len_zero_dp, len_zero_q;
@@ -537,6 +739,9 @@ module specular_setup_lean #(
       dpsi_q     <= len_zero_q ? '0 : AngleBits'((dy_q + (AngleBits + 4)'(1)) >>> 1);
     end
   end
+  logic [AngleBits-1:0] dpsi_out;
+  specular_delay #(.Width(AngleBits), .Depth(TOUT - TDP), .Reset(1'b0), .Ram(1'b1)) u_dly_dpsi (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (dpsi_q), .q_o (dpsi_out));
   specular_delay #(.Width(AngleBits), .Depth(TOUT - TCOR - 1), .Reset(1'b0), .Ram(1'b1)) u_dly_psi0 (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (psi0_q), .q_o (psi0_out));
 
@@ -562,14 +767,14 @@ module specular_setup_lean #(
     status_out = invalid_out ? 3'd1 : undefined_out ? 3'd2 : opph_out ? 3'd4 : oppn_out ? 3'd3 : 3'd0;
     out_d = {zero_out || !a_pos_out ? CBits'(0) : c_out,
              zero_out ? AngleBits'(0) : psi0_out,
-             zero_out ? AngleBits'(0) : dpsi_q,
+             zero_out ? AngleBits'(0) : dpsi_out,
              n_out, len_out, tag_out, status_out};
   end
   specular_out_buf #(.Width(OutBits)) u_out_buf (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
-    .adv_o      (adv),
-    .in_valid_i (valid_out),
+    .adv_o      (buf_adv),
+    .in_valid_i (valid_out & slot_last),
     .in_data_i  (out_d),
     .px_valid_o (span_valid_o),
     .px_ready_i (span_ready_i),

@@ -19,7 +19,8 @@
 //   S, +1, +2       xs2 = rshift_round(m s2, 30); e = 3 2^28 - xs2
 //   S, +1           r = rshift_round(seed e, 19) (Q28)
 //   S, +1, +2       u_i = rshift_round(v_i r, 17 - k): a shift by 16 - k, then (y + 1) >> 1
-// (S: a specular_setup_smul.) Stages: the localparam Stages (specular_setup_lean_pkg::norm_stages).
+// (S: a specular_setup_smul; with SetupII > 1 a lane of the block's specular_setup_fmul, one
+// stage.) Stages: the localparam Stages (specular_setup_lean_pkg::norm_stages).
 // en_i freezes every stage. No reset.
 
 `include "specular_assert.svh"
@@ -27,6 +28,7 @@
 module specular_setup_lean_norm #(
   parameter int InW      = 18,   // input components, signed, any common scale
   parameter int TileBits = 18,
+  parameter int SetupII  = 1,    // > 1: the folded setup (one stage per slot of SetupII clocks)
   parameter     SeedFile = "roms/setup/rsqrt_seed_lean.hex"
 ) (
   input  logic                                             clk_i,
@@ -56,12 +58,12 @@ module specular_setup_lean_norm #(
   localparam int PW       = InW + RW;     // v_i r
 
   // The schedule: each value's stage.
-  localparam int LSq   = specular_setup_lean_pkg::smul_stages(InW);
-  localparam int LDt   = specular_setup_lean_pkg::smul_stages(SW);
-  localparam int LSs   = specular_setup_lean_pkg::smul_stages(SW);
-  localparam int LMs   = specular_setup_lean_pkg::smul_stages(S2W);
-  localparam int LSe   = specular_setup_lean_pkg::smul_stages(EW);
-  localparam int LVr   = specular_setup_lean_pkg::smul_stages(RW);
+  localparam int LSq   = specular_setup_lean_pkg::smul_stages(InW, SetupII);
+  localparam int LDt   = specular_setup_lean_pkg::smul_stages(SW, SetupII);
+  localparam int LSs   = specular_setup_lean_pkg::smul_stages(SW, SetupII);
+  localparam int LMs   = specular_setup_lean_pkg::smul_stages(S2W, SetupII);
+  localparam int LSe   = specular_setup_lean_pkg::smul_stages(EW, SetupII);
+  localparam int LVr   = specular_setup_lean_pkg::smul_stages(RW, SetupII);
   localparam int TSq   = LSq + 2;      // sq
   localparam int TK    = TSq + 1;      // k
   localparam int TM    = TK + 1;       // m
@@ -74,18 +76,56 @@ module specular_setup_lean_norm #(
   localparam int TR    = TE + LSe + 1;
   localparam int Stages = TR + LVr + 2;
 
-  if (Stages != specular_setup_lean_pkg::norm_stages(InW)) begin : gen_stage_check
+  if (Stages != specular_setup_lean_pkg::norm_stages(InW, SetupII)) begin : gen_stage_check
     `SPEC_PARAM_ERROR("specular_setup_lean_norm: specular_setup_lean_pkg::norm_stages disagrees with the stages built here")
+  end
+
+  // Folded (SetupII > 1): the ten products are lanes of one specular_setup_fmul (every
+  // operand holds still for the slot, so it serves all the stages); 2 x 2 tiles fit them all.
+  localparam int FA = 35, FB = 35, FN = 10;
+  if (InW > FA || RW > FB || XW > FA || S2W > FB) begin : gen_fold_width_check
+    `SPEC_PARAM_ERROR("specular_setup_lean_norm: the folded unit's lanes are too narrow")
+  end
+  logic [FN*FA-1:0]      f_a;
+  logic [FN*FB-1:0]      f_b;
+  logic [FN*(FA+FB)-1:0] f_p;
+  logic                  unused_fold;
+  if (SetupII > 1) begin : gen_fold_unit
+    logic [FN*(FA+FB)-1:0] f_pc;
+    specular_setup_fmul #(.N(FN), .ABits(FA), .BBits(FB), .TileBits(TileBits), .SetupII(SetupII)) u_fmul (
+      .clk_i (clk_i), .en_i (en_i), .a_i (f_a), .b_i (f_b), .p_o (f_p), .pc_o (f_pc));
+    assign unused_fold = ^{f_p, f_pc};  // each lane reads its own product's width
+  end else begin : gen_no_fold_unit
+    assign {f_a, f_b, f_p} = '0;
+    assign unused_fold = ^{f_a, f_b, f_p};
   end
 
   // ---- S1 .. +2: the squared length ----
   logic signed [2*InW-1:0] sqx, sqy, sqz;
-  specular_setup_smul #(.ABits(InW), .BBits(InW), .TileBits(TileBits)) u_sqx (
-    .clk_i (clk_i), .en_i (en_i), .a_i (x_i), .b_i (x_i), .p_o (sqx));
-  specular_setup_smul #(.ABits(InW), .BBits(InW), .TileBits(TileBits)) u_sqy (
-    .clk_i (clk_i), .en_i (en_i), .a_i (y_i), .b_i (y_i), .p_o (sqy));
-  specular_setup_smul #(.ABits(InW), .BBits(InW), .TileBits(TileBits)) u_sqz (
-    .clk_i (clk_i), .en_i (en_i), .a_i (z_i), .b_i (z_i), .p_o (sqz));
+  if (SetupII > 1) begin : gen_sqx_fold
+    assign f_a[(0)*FA +: FA] = FA'($signed(x_i));
+    assign f_b[(0)*FB +: FB] = FB'($signed(x_i));
+    assign sqx = (InW + InW)'(f_p[(0)*(FA + FB) +: FA + FB]);
+  end else begin : gen_sqx_pipe
+    specular_setup_smul #(.ABits(InW), .BBits(InW), .TileBits(TileBits)) u_sqx (
+      .clk_i (clk_i), .en_i (en_i), .a_i (x_i), .b_i (x_i), .p_o (sqx));
+  end
+  if (SetupII > 1) begin : gen_sqy_fold
+    assign f_a[(1)*FA +: FA] = FA'($signed(y_i));
+    assign f_b[(1)*FB +: FB] = FB'($signed(y_i));
+    assign sqy = (InW + InW)'(f_p[(1)*(FA + FB) +: FA + FB]);
+  end else begin : gen_sqy_pipe
+    specular_setup_smul #(.ABits(InW), .BBits(InW), .TileBits(TileBits)) u_sqy (
+      .clk_i (clk_i), .en_i (en_i), .a_i (y_i), .b_i (y_i), .p_o (sqy));
+  end
+  if (SetupII > 1) begin : gen_sqz_fold
+    assign f_a[(2)*FA +: FA] = FA'($signed(z_i));
+    assign f_b[(2)*FB +: FB] = FB'($signed(z_i));
+    assign sqz = (InW + InW)'(f_p[(2)*(FA + FB) +: FA + FB]);
+  end else begin : gen_sqz_pipe
+    specular_setup_smul #(.ABits(InW), .BBits(InW), .TileBits(TileBits)) u_sqz (
+      .clk_i (clk_i), .en_i (en_i), .a_i (z_i), .b_i (z_i), .p_o (sqz));
+  end
   logic [SqW-1:0] sq01_q, sqz_q, sq_q;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
@@ -156,8 +196,14 @@ module specular_setup_lean_norm #(
       d_q <= SW'(y0) - SW'(y1);
     end
   end
-  specular_setup_smul #(.ABits(IBits + 1), .BBits(SW), .TileBits(TileBits)) u_dt (
-    .clk_i (clk_i), .en_i (en_i), .a_i ($signed({1'b0, t_d})), .b_i (d_q), .p_o (dt));
+  if (SetupII > 1) begin : gen_dt_fold
+    assign f_a[(3)*FA +: FA] = FA'($signed($signed({1'b0, t_d})));
+    assign f_b[(3)*FB +: FB] = FB'($signed(d_q));
+    assign dt = (IBits + 1 + SW)'(f_p[(3)*(FA + FB) +: FA + FB]);
+  end else begin : gen_dt_pipe
+    specular_setup_smul #(.ABits(IBits + 1), .BBits(SW), .TileBits(TileBits)) u_dt (
+      .clk_i (clk_i), .en_i (en_i), .a_i ($signed({1'b0, t_d})), .b_i (d_q), .p_o (dt));
+  end
   specular_delay #(.Width(SW), .Depth(TRd - TRom), .Reset(1'b0), .Ram(1'b1)) u_dly_y0 (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (SW'(y0)), .q_o (y0_rd));
   always_ff @(posedge clk_i) begin
@@ -170,8 +216,14 @@ module specular_setup_lean_norm #(
   // ---- s2 = seed^2, xs2 = m s2, e, r ----
   logic signed [2*SW-1:0] ss;
   logic signed [S2W-1:0]  s2_q;
-  specular_setup_smul #(.ABits(SW), .BBits(SW), .TileBits(TileBits)) u_ss (
-    .clk_i (clk_i), .en_i (en_i), .a_i (seed_q), .b_i (seed_q), .p_o (ss));
+  if (SetupII > 1) begin : gen_ss_fold
+    assign f_a[(4)*FA +: FA] = FA'($signed(seed_q));
+    assign f_b[(4)*FB +: FB] = FB'($signed(seed_q));
+    assign ss = (SW + SW)'(f_p[(4)*(FA + FB) +: FA + FB]);
+  end else begin : gen_ss_pipe
+    specular_setup_smul #(.ABits(SW), .BBits(SW), .TileBits(TileBits)) u_ss (
+      .clk_i (clk_i), .en_i (en_i), .a_i (seed_q), .b_i (seed_q), .p_o (ss));
+  end
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       s2_q <= S2W'((ss + (2 * SW)'(1 << (2 * SFrac - RFrac - 1))) >>> (2 * SFrac - RFrac));
@@ -181,8 +233,14 @@ module specular_setup_lean_norm #(
   specular_delay #(.Width(B), .Depth(TS2 - TM), .Reset(1'b0), .Ram(1'b1)) u_dly_m (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (m_q), .q_o (m_s2));
   logic signed [XW+S2W-1:0] ms;
-  specular_setup_smul #(.ABits(XW), .BBits(S2W), .TileBits(TileBits)) u_ms (
-    .clk_i (clk_i), .en_i (en_i), .a_i ($signed({1'b0, m_s2})), .b_i (s2_q), .p_o (ms));
+  if (SetupII > 1) begin : gen_ms_fold
+    assign f_a[(5)*FA +: FA] = FA'($signed($signed({1'b0, m_s2})));
+    assign f_b[(5)*FB +: FB] = FB'($signed(s2_q));
+    assign ms = (XW + S2W)'(f_p[(5)*(FA + FB) +: FA + FB]);
+  end else begin : gen_ms_pipe
+    specular_setup_smul #(.ABits(XW), .BBits(S2W), .TileBits(TileBits)) u_ms (
+      .clk_i (clk_i), .en_i (en_i), .a_i ($signed({1'b0, m_s2})), .b_i (s2_q), .p_o (ms));
+  end
   logic signed [EW-1:0] xs2_q, e_q;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
@@ -194,8 +252,14 @@ module specular_setup_lean_norm #(
   specular_delay #(.Width(SW), .Depth(TE - TSeed), .Reset(1'b0), .Ram(1'b1)) u_dly_seed (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (seed_q), .q_o (seed_e));
   logic signed [SW+EW-1:0] se;
-  specular_setup_smul #(.ABits(SW), .BBits(EW), .TileBits(TileBits)) u_se (
-    .clk_i (clk_i), .en_i (en_i), .a_i (seed_e), .b_i (e_q), .p_o (se));
+  if (SetupII > 1) begin : gen_se_fold
+    assign f_a[(6)*FA +: FA] = FA'($signed(seed_e));
+    assign f_b[(6)*FB +: FB] = FB'($signed(e_q));
+    assign se = (SW + EW)'(f_p[(6)*(FA + FB) +: FA + FB]);
+  end else begin : gen_se_pipe
+    specular_setup_smul #(.ABits(SW), .BBits(EW), .TileBits(TileBits)) u_se (
+      .clk_i (clk_i), .en_i (en_i), .a_i (seed_e), .b_i (e_q), .p_o (se));
+  end
   logic signed [RW-1:0] r_q;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
@@ -214,8 +278,14 @@ module specular_setup_lean_norm #(
   for (genvar i = 0; i < 3; i++) begin : gen_scale
     logic signed [PW-1:0]      vr;
     logic signed [UnitW+1:0]   y_q;
-    specular_setup_smul #(.ABits(InW), .BBits(RW), .TileBits(TileBits)) u_vr (
-      .clk_i (clk_i), .en_i (en_i), .a_i (v_r[i*InW +: InW]), .b_i (r_q), .p_o (vr));
+    if (SetupII > 1) begin : gen_vr_fold
+      assign f_a[(7 + i)*FA +: FA] = FA'($signed(v_r[i*InW +: InW]));
+      assign f_b[(7 + i)*FB +: FB] = FB'($signed(r_q));
+      assign vr = (InW + RW)'(f_p[(7 + i)*(FA + FB) +: FA + FB]);
+    end else begin : gen_vr_pipe
+      specular_setup_smul #(.ABits(InW), .BBits(RW), .TileBits(TileBits)) u_vr (
+        .clk_i (clk_i), .en_i (en_i), .a_i (v_r[i*InW +: InW]), .b_i (r_q), .p_o (vr));
+    end
     always_ff @(posedge clk_i) begin
       if (en_i) begin
         // s = RFrac + B/2 - Frac - k >= 3: the shift by s - 1, then the rounding.

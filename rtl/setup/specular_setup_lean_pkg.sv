@@ -85,18 +85,77 @@ package specular_setup_lean_pkg;
   function automatic int pipe_mul_stages(input int b_bits);
     pipe_mul_stages = 1 + ((((b_bits + 1) / 2) > 1) ? $clog2((b_bits + 1) / 2) : 0);
   endfunction
-  // specular_setup_smul (signed, B bits): magnitudes, 3|a|, the multiplier, the sign.
-  function automatic int smul_stages(input int b_bits);
-    smul_stages = 3 + pipe_mul_stages(b_bits);
+  // specular_setup_smul (signed, B bits): magnitudes, 3|a|, the multiplier, the sign. With
+  // SetupII > 1 a product is one slot's work of a specular_setup_fmul: one stage.
+  function automatic int smul_stages(input int b_bits, input int setup_ii);
+    smul_stages = (setup_ii > 1) ? 1 : 3 + pipe_mul_stages(b_bits);
   endfunction
   // specular_setup_lean_norm for InW-bit components (the module checks its own count).
-  function automatic int norm_stages(input int in_w);
-    norm_stages = smul_stages(in_w) + 6 + smul_stages(SeedW + 1) + 2 + smul_stages(SeedW + 1) + 1
-                + smul_stages(2 * SeedW - (2 * SeedFrac - RsqrtFrac) + 2) + 2 + smul_stages(RsqrtFrac + 5) + 1
-                + smul_stages(RW) + 2;
+  function automatic int norm_stages(input int in_w, input int setup_ii);
+    norm_stages = smul_stages(in_w, setup_ii) + 6 + smul_stages(SeedW + 1, setup_ii) + 2
+                + smul_stages(SeedW + 1, setup_ii) + 1
+                + smul_stages(2 * SeedW - (2 * SeedFrac - RsqrtFrac) + 2, setup_ii) + 2
+                + smul_stages(RsqrtFrac + 5, setup_ii) + 1 + smul_stages(RW, setup_ii) + 2;
   endfunction
+
+  // ---- The folded products (SetupII > 1, specular_setup_fmul) ----
+  // Clocks of a slot that are not tile steps: the tile product register, the last
+  // accumulation and the advance edge (p_o).
+  localparam int FmulOverhead = 3;
+  // The signed tile width: the DSP's (18) or, for the LUT style, the same 18. An operand is
+  // cut into unsigned low tiles of fmul_tile - 1 bits and a signed top tile.
+  function automatic int fmul_tile(input int tile_bits);
+    fmul_tile = (tile_bits == 0) ? 18 : tile_bits;
+  endfunction
+  // Tiles of a w-bit signed operand.
+  function automatic int fmul_tiles_of(input int w, input int tile_bits);
+    fmul_tiles_of = (w <= fmul_tile(tile_bits)) ? 1
+                  : 1 + (w - fmul_tile(tile_bits) + fmul_tile(tile_bits) - 2) / (fmul_tile(tile_bits) - 1);
+  endfunction
+  // Tile products of one a_bits x b_bits product.
+  function automatic int fmul_tiles(input int a_bits, input int b_bits, input int tile_bits);
+    fmul_tiles = fmul_tiles_of(a_bits, tile_bits) * fmul_tiles_of(b_bits, tile_bits);
+  endfunction
+  // Tile steps of a multiplier in a slot of setup_ii clocks.
+  function automatic int fmul_steps(input int setup_ii);
+    fmul_steps = setup_ii - FmulOverhead;
+  endfunction
+  // Chunks of a product: 1, or 2 (on two multipliers, summed at the end) when its tiles do not
+  // fit one multiplier's slot.
+  function automatic int fmul_split(input int a_bits, input int b_bits, input int tile_bits,
+                                    input int setup_ii);
+    fmul_split = (fmul_tiles(a_bits, b_bits, tile_bits) > fmul_steps(setup_ii)) ? 2 : 1;
+  endfunction
+  // Tile steps of one chunk (the second of an odd split has one zero tile).
+  function automatic int fmul_chunk(input int a_bits, input int b_bits, input int tile_bits,
+                                    input int setup_ii);
+    fmul_chunk = (fmul_tiles(a_bits, b_bits, tile_bits) + fmul_split(a_bits, b_bits, tile_bits, setup_ii) - 1)
+               / fmul_split(a_bits, b_bits, tile_bits, setup_ii);
+  endfunction
+  // Chunks one multiplier finishes in a slot (whole chunks only).
+  function automatic int fmul_per_mult(input int a_bits, input int b_bits, input int tile_bits,
+                                       input int setup_ii);
+    fmul_per_mult = fmul_steps(setup_ii) / fmul_chunk(a_bits, b_bits, tile_bits, setup_ii);
+  endfunction
+  // Multipliers of a unit of n products: the DSP count falls as setup_ii grows.
+  function automatic int fmul_mults(input int n, input int a_bits, input int b_bits,
+                                    input int tile_bits, input int setup_ii);
+    fmul_mults = (n * fmul_split(a_bits, b_bits, tile_bits, setup_ii)
+                  + fmul_per_mult(a_bits, b_bits, tile_bits, setup_ii) - 1)
+               / fmul_per_mult(a_bits, b_bits, tile_bits, setup_ii);
+  endfunction
+
   localparam int BlockStages  = 4;                // specular_setup_lean_block
   localparam int CordicStages = 1 + CordicIters;  // specular_setup_lean_cordic
+  // Folded (SetupII > 1) a CORDIC is a specular_setup_cordic_iter started at the slot's first
+  // clock, its angle registered on the advance: one stage. Its result comes Rounds + 1 clocks
+  // after the start, so Rounds <= setup_ii - 2.
+  function automatic int cordic_stages(input int setup_ii);
+    cordic_stages = (setup_ii > 1) ? 1 : CordicStages;
+  endfunction
+  function automatic int cordic_per_clock(input int setup_ii);
+    cordic_per_clock = (CordicIters + setup_ii - 3) / (setup_ii - 2);
+  endfunction
 
 endpackage
 /* verilator lint_on UNUSEDPARAM */

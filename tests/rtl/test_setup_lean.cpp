@@ -8,6 +8,9 @@
 // SPECULAR_SETUP_RTL_SPANS=N runs N random spans instead of 20,000; the LUT-tree variant
 // (TileBits = 0) is built and tested with -DSPECULAR_SETUP_VARIANTS=ON.
 #include "Vsetup_lean.h"
+#include "Vsetup_lean_ii16.h"
+#include "Vsetup_lean_ii32.h"
+#include "Vsetup_lean_ii8.h"
 #if SPECULAR_SETUP_VARIANTS
 #include "Vsetup_lean_lut.h"
 #endif
@@ -16,6 +19,8 @@
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <cstdlib>
+#include <tuple>
 #include <vector>
 
 using namespace specular;
@@ -122,4 +127,104 @@ TEST_CASE("lean setup RTL: one span per clock with span_ready_i high", "[setup_l
   CHECK(mismatches == 0);
   CHECK(not_ready == 0);
   CHECK(last_out - first_out + 1 == static_cast<long>(spans.size()));  // one per clock, no bubble
+}
+
+// The folded setup (SetupII = K): the same checks, and one span accepted every K clocks.
+namespace {
+struct FoldII8 {
+  using Model = Vsetup_lean_ii8;
+  static constexpr long kII = 8;
+};
+struct FoldII16 {
+  using Model = Vsetup_lean_ii16;
+  static constexpr long kII = 16;
+};
+struct FoldII32 {
+  using Model = Vsetup_lean_ii32;
+  static constexpr long kII = 32;
+};
+using FoldModels = std::tuple<FoldII8, FoldII16, FoldII32>;
+
+size_t fold_spans() {
+  const char* e = std::getenv("SPECULAR_SETUP_RTL_SPANS");
+  return e != nullptr ? static_cast<size_t>(std::strtoul(e, nullptr, 10)) : 5000;
+}
+}  // namespace
+
+TEMPLATE_LIST_TEST_CASE("lean setup RTL, SetupII > 1: hard and near-degenerate cases bit-exact", "[setup_lean_rtl]",
+                        FoldModels) {
+  typename TestType::Model m;
+  const std::vector<device::GeoSpan> spans = hard_and_near_degenerate();
+  const double p_ready = GENERATE(1.0, 0.5);
+  const Stats st = run(m, spans, 1.0, p_ready, 0.0, 5, false, golden_lean);
+  INFO("SetupII " << TestType::kII << ": " << st.first_mismatch);
+  WARN("specular_setup_lean SetupII " << TestType::kII << ", ready " << p_ready << ": " << st.checked
+                                      << " hard and near-degenerate descriptors checked, " << st.mismatches
+                                      << " mismatches");
+  CHECK(st.accepted == spans.size());
+  CHECK(st.checked == spans.size());
+  CHECK(st.mismatches == 0);
+  CHECK(st.hold_violations == 0);
+}
+
+TEMPLATE_LIST_TEST_CASE("lean setup RTL, SetupII > 1: random spans bit-exact under random gaps, backpressure and resets",
+                        "[setup_lean_rtl]", FoldModels) {
+  typename TestType::Model m;
+  std::vector<device::GeoSpan> spans = geo_cases::random_geo_spans(fold_spans(), 4242);
+  for (const auto& g : hard_and_near_degenerate()) spans.push_back(g);
+  struct Mode {
+    double p_valid, p_ready, p_reset;
+  };
+  const Mode mode = GENERATE(Mode{1.0, 1.0, 0.0}, Mode{0.7, 0.6, 0.0}, Mode{0.9, 0.8, 0.0001});
+  const Stats st = run(m, spans, mode.p_valid, mode.p_ready, mode.p_reset, 99, false, golden_lean);
+  INFO("SetupII " << TestType::kII << ": " << st.first_mismatch);
+  WARN("specular_setup_lean SetupII " << TestType::kII << ", valid " << mode.p_valid << ", ready " << mode.p_ready
+                                      << ", reset " << mode.p_reset << ": " << st.checked
+                                      << " descriptors checked bit for bit, " << st.mismatches << " mismatches, "
+                                      << st.resets << " resets");
+  CHECK(st.accepted == spans.size());
+  CHECK(st.mismatches == 0);
+  CHECK(st.hold_violations == 0);
+  if (mode.p_reset == 0.0) CHECK(st.checked == spans.size());
+  else CHECK(st.resets > 0);
+}
+
+TEMPLATE_LIST_TEST_CASE("lean setup RTL, SetupII > 1: one span every SetupII clocks with span_ready_i high",
+                        "[setup_lean_rtl]", FoldModels) {
+  typename TestType::Model m;
+  reset(m);
+  const long ii = TestType::kII;
+  std::vector<device::GeoSpan> spans = geo_cases::random_geo_spans(400, 78);
+  size_t next = 0, out = 0, mismatches = 0;
+  long cycle = 0, first_accept = -1, last_accept = -1, first_out = -1, last_out = -1, bad_gaps = 0, bad_out_gaps = 0;
+  while (out < spans.size() && cycle < 1000000) {
+    m.geo_valid_i = next < spans.size();
+    if (next < spans.size()) drive(m, spans[next]);
+    m.span_ready_i = 1;
+    m.eval();
+    if (m.span_valid_o) {
+      if (first_out < 0) first_out = cycle;
+      else if (cycle - last_out != ii) ++bad_out_gaps;
+      last_out = cycle;
+      mismatches += !(read(m) == golden_lean(spans[out]));
+      ++out;
+    }
+    if (next < spans.size() && m.geo_ready_o) {
+      if (first_accept < 0) first_accept = cycle;
+      else if (cycle - last_accept != ii) ++bad_gaps;
+      last_accept = cycle;
+      ++next;
+    }
+    tick(m);
+    ++cycle;
+  }
+  const double measured = static_cast<double>(last_accept - first_accept) / static_cast<double>(spans.size() - 1);
+  WARN("specular_setup_lean SetupII " << ii << ": latency " << (first_out - first_accept) << " clocks; "
+                                      << spans.size() << " spans accepted, one per " << measured
+                                      << " clocks; outputs " << out << " in " << (last_out - first_out + 1) << " clocks");
+  CHECK(out == spans.size());
+  CHECK(mismatches == 0);
+  CHECK(bad_gaps == 0);
+  CHECK(bad_out_gaps == 0);
+  CHECK(last_accept - first_accept == ii * static_cast<long>(spans.size() - 1));
 }

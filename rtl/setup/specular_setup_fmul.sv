@@ -1,0 +1,249 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// specular_setup_fmul: N exact signed products p_j = a_j * b_j in one slot of SetupII clocks
+// on a few tile multipliers, for the folded lean setup (SetupII > 1,
+// docs/setup_hw.md#the-lean-datapath): its stages advance once per slot (en_i, the last
+// clock of the slot) and a product takes one stage. The operands must hold still for the
+// whole slot (they are the stages' registers), so the unit reads them tile by tile and
+// serves products of different stages alike.
+//
+// An operand is cut into unsigned low tiles of T - 1 bits and a signed top tile of at most
+// T bits (T = 18), so every tile product is one signed 18x18 product (registered tiles and
+// product: an ECP5 MULT18X18D) and no magnitude or sign is needed; an accumulator adds the
+// tile products shifted. A product is one chunk, or two (Q = 2, summed before p_o) when its
+// tiles exceed a slot's steps; a multiplier owns whole chunks, P of them per slot, so the
+// unit has M = ceil(N Q / P) multipliers (specular_setup_lean_pkg::fmul_mults): the tile
+// count falls as SetupII grows. The clock of a slot (count c, restarted by en_i, held at
+// SetupII - 1 while the stage waits):
+//   c = s       tile step s into its multiplier's input registers
+//   c = 1 + s   its tile product registered
+//   c = 2 + s   accumulated (a chunk's last step moves the sum out and clears the sum)
+//   advance     p_o registered
+// s < P * H <= SetupII - specular_setup_lean_pkg::FmulOverhead. Exact, so bit-exact with
+// specular_setup_smul. No reset: the counter realigns at the first advance.
+
+`include "specular_assert.svh"
+
+module specular_setup_fmul #(
+  parameter int N        = 1,
+  parameter int ABits    = 18,
+  parameter int BBits    = 18,
+  parameter int TileBits = 18,  // 0 (LUT multiplier) or the DSP tile width; T = 18 for 0
+  parameter int SetupII  = 8
+) (
+  input  logic                          clk_i,
+  input  logic                          en_i,   // the stage advance: the slot's last clock
+  input  logic [N*ABits-1:0]            a_i,    // N signed operands, still for the slot
+  input  logic [N*BBits-1:0]            b_i,
+  output logic [N*(ABits+BBits)-1:0]    p_o,    // N signed products (registered on en_i)
+  // The same before the register, final from clock SetupII - 2 of the slot on: a caller that
+  // rounds or adds a product in its own stage (log2, exp2) reads it there.
+  output logic [N*(ABits+BBits)-1:0]    pc_o
+);
+
+  localparam int T     = specular_setup_lean_pkg::fmul_tile(TileBits);
+  localparam int PBits = ABits + BBits;
+  localparam int TA    = specular_setup_lean_pkg::fmul_tiles_of(ABits, TileBits);
+  localparam int TB    = specular_setup_lean_pkg::fmul_tiles_of(BBits, TileBits);
+  localparam int TP    = TA * TB;
+  localparam int Q     = specular_setup_lean_pkg::fmul_split(ABits, BBits, TileBits, SetupII);
+  localparam int H     = specular_setup_lean_pkg::fmul_chunk(ABits, BBits, TileBits, SetupII);
+  localparam int P     = specular_setup_lean_pkg::fmul_per_mult(ABits, BBits, TileBits, SetupII);
+  localparam int M     = specular_setup_lean_pkg::fmul_mults(N, ABits, BBits, TileBits, SetupII);
+  localparam int CW    = $clog2(SetupII);
+  localparam int DW    = $clog2(TA + TB);  // a tile's diagonal i + j, 0 .. TA + TB - 2
+  localparam int TokenMinSteps = 12;
+
+  if (N < 1 || ABits < 2 || BBits < 2 || SetupII < 2) begin : gen_param_check
+    `SPEC_PARAM_ERROR("specular_setup_fmul: N >= 1, ABits and BBits >= 2 and SetupII >= 2")
+  end
+  if (P < 1) begin : gen_slot_check
+    `SPEC_PARAM_ERROR("specular_setup_fmul: half a product's tiles must fit the slot (TA TB <= 2 (SetupII - FmulOverhead))")
+  end
+
+  // The slot's clock count.
+  logic [CW-1:0] cnt_q;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      cnt_q <= '0;
+    end else if (cnt_q < CW'(SetupII - 1)) begin
+      cnt_q <= cnt_q + CW'(1);
+    end
+  end
+
+  // The operands' tiles, each T bits signed: tile i of a is bits (T-1) i .. (T-1) i + T - 2
+  // zero-extended, the top one sign-extended.
+  logic [N*TA*T-1:0] atile;
+  logic [N*TB*T-1:0] btile;
+  for (genvar j = 0; j < N; j++) begin : gen_tiles
+    logic [TA*(T-1)+1-1:0] a_ext;
+    logic [TB*(T-1)+1-1:0] b_ext;
+    assign a_ext = (TA * (T - 1) + 1)'($signed(a_i[j*ABits +: ABits]));
+    assign b_ext = (TB * (T - 1) + 1)'($signed(b_i[j*BBits +: BBits]));
+    for (genvar i = 0; i < TA; i++) begin : gen_a
+      if (i == TA - 1) begin : gen_top
+        assign atile[(j*TA+i)*T +: T] = a_ext[i*(T-1) +: T];
+      end else begin : gen_low
+        assign atile[(j*TA+i)*T +: T] = {1'b0, a_ext[i*(T-1) +: T-1]};
+      end
+    end
+    for (genvar i = 0; i < TB; i++) begin : gen_b
+      if (i == TB - 1) begin : gen_top
+        assign btile[(j*TB+i)*T +: T] = b_ext[i*(T-1) +: T];
+      end else begin : gen_low
+        assign btile[(j*TB+i)*T +: T] = {1'b0, b_ext[i*(T-1) +: T-1]};
+      end
+    end
+  end
+
+  // Chunk k is part k % Q of product k / Q: tiles (k % Q) H .. (k % Q) H + H - 1 (a tile
+  // index from TP on is a zero tile). Tile t is (t / TB, t % TB), weight 2^((T-1)(t / TB + t % TB)).
+  logic [N*Q*PBits-1:0] csum;
+  for (genvar m = 0; m < M; m++) begin : gen_mult
+    localparam int K0    = m * P;                              // its first chunk
+    localparam int Pm    = (N * Q - K0 < P) ? N * Q - K0 : P;  // its chunks
+    localparam int Steps = Pm * H;
+    // Its tiles: chunk l's a tiles at l TA + i, b tiles at l TB + i.
+    logic [Pm*TA*T-1:0] asrc;
+    logic [Pm*TB*T-1:0] bsrc;
+    for (genvar l = 0; l < Pm; l++) begin : gen_src
+      assign asrc[l*TA*T +: TA*T] = atile[((K0 + l) / Q)*TA*T +: TA*T];
+      assign bsrc[l*TB*T +: TB*T] = btile[((K0 + l) / Q)*TB*T +: TB*T];
+    end
+    // The tile selects: a decode of the slot count for a few steps, a one-hot token for many
+    // (each is the smaller there in the ECP5 synthesis).
+    logic signed [T-1:0] ta_d, tb_d, ta_q, tb_q;
+    logic [DW-1:0]       dg;
+    if (Steps > TokenMinSteps) begin : gen_token
+      // c = s: a one-hot token marks step s (set by the advance, shifted out after the last
+      // step); each tile's select is the OR of its steps' token bits, and the tile registers
+      // take the AND-OR of the selected tiles (no decode of the count, no priority chain).
+      logic [Steps-1:0]  tok_q;
+      always_ff @(posedge clk_i) begin
+        if (en_i) tok_q <= Steps'(1);
+        else      tok_q <= tok_q << 1;
+      end
+      logic [Pm*TA-1:0] sel_a;
+      logic [Pm*TB-1:0] sel_b;
+      always_comb begin
+        sel_a = '0;
+        sel_b = '0;
+        dg    = '0;
+        for (int s = 0; s < Steps; s++) begin
+          // Step s: tile t = ((K0 + s / H) % Q) H + s % H of chunk s / H (a zero tile from TP on).
+          if ((((K0 + s / H) % Q) * H + s % H) < TP) begin
+            sel_a[(s / H) * TA + ((((K0 + s / H) % Q) * H + s % H) / TB)] |= tok_q[s];
+            sel_b[(s / H) * TB + ((((K0 + s / H) % Q) * H + s % H) % TB)] |= tok_q[s];
+            dg |= {DW{tok_q[s]}} & DW'((((K0 + s / H) % Q) * H + s % H) / TB + (((K0 + s / H) % Q) * H + s % H) % TB);
+          end
+        end
+      end
+      always_comb begin
+        ta_d = '0;
+        tb_d = '0;
+        for (int i = 0; i < Pm * TA; i++) begin
+          ta_d = ta_d | ({T{sel_a[i]}} & asrc[i*T +: T]);
+        end
+        for (int i = 0; i < Pm * TB; i++) begin
+          tb_d = tb_d | ({T{sel_b[i]}} & bsrc[i*T +: T]);
+        end
+      end
+    end else begin : gen_decode
+      localparam int IAW = $clog2(Pm * TA + 1);
+      localparam int IBW = $clog2(Pm * TB + 1);
+      // c = s: decode step s (narrow signals), load its tiles.
+      logic [IAW-1:0] ia;
+      logic [IBW-1:0] ib;
+      logic           zero;
+      always_comb begin
+        ia    = '0;
+        ib    = '0;
+        dg    = '0;
+        zero  = 1'b1;
+        for (int s = 0; s < Steps; s++) begin
+          if (32'(cnt_q) == s) begin
+            ia    = IAW'((s / H) * TA + ((((K0 + s / H) % Q) * H + s % H) % TP) / TB);
+            ib    = IBW'((s / H) * TB + ((((K0 + s / H) % Q) * H + s % H) % TP) % TB);
+            dg    = DW'(((((K0 + s / H) % Q) * H + s % H) % TP) / TB + ((((K0 + s / H) % Q) * H + s % H) % TP) % TB);
+            zero  = (((K0 + s / H) % Q) * H + s % H) >= TP;
+          end
+        end
+      end
+      always_comb begin
+        ta_d = '0;
+        tb_d = '0;
+        for (int i = 0; i < Pm * TA; i++) begin
+          if (ia == IAW'(i)) ta_d = asrc[i*T +: T];
+        end
+        for (int i = 0; i < Pm * TB; i++) begin
+          if (ib == IBW'(i)) tb_d = bsrc[i*T +: T];
+        end
+        if (zero) ta_d = '0;
+      end
+    end
+    logic signed [2*T-1:0] pp_q;
+    logic [DW-1:0]         dg1_q, dg2_q;
+    always_ff @(posedge clk_i) begin
+      ta_q     <= ta_d;
+      tb_q     <= tb_d;
+      dg1_q    <= dg;
+      // c = 1 + s
+      pp_q     <= ta_q * tb_q;
+      dg2_q    <= dg1_q;
+    end
+    // c = 2 + s: accumulate step s. A chunk's last step writes the finished sum into the
+    // chunk's register and clears the accumulator (a synchronous reset, no multiplexer in
+    // front of the adder); the last chunk's sum stays in the accumulator until the slot's
+    // first clock clears it.
+    logic [PBits-1:0] sh, acc_q, acc_d;
+    always_comb begin
+      sh = '0;
+      for (int d = 0; d < TA + TB - 1; d++) begin
+        if (dg2_q == DW'(d)) sh = PBits'(PBits'(pp_q) << (d * (T - 1)));
+      end
+      acc_d = acc_q + sh;
+    end
+    logic acc_clr;
+    always_comb begin
+      acc_clr = cnt_q == '0;
+      for (int l = 0; l < Pm - 1; l++) begin
+        if (32'(cnt_q) == (l + 1) * H + 1) acc_clr = 1'b1;
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (acc_clr) begin
+        acc_q <= '0;
+      end else if (cnt_q >= CW'(2) && cnt_q < CW'(Steps + 2)) begin
+        acc_q <= acc_d;
+      end
+    end
+    for (genvar l = 0; l < Pm; l++) begin : gen_chunk
+      if (l == Pm - 1) begin : gen_last
+        assign csum[(K0 + l)*PBits +: PBits] = acc_q;
+      end else begin : gen_res
+        logic [PBits-1:0] res_q;
+        always_ff @(posedge clk_i) begin
+          if (32'(cnt_q) == (l + 1) * H + 1) res_q <= acc_d;
+        end
+        assign csum[(K0 + l)*PBits +: PBits] = res_q;
+      end
+    end
+  end
+
+  // The product: its chunks summed (one carry chain).
+  logic [N*PBits-1:0] p_d;
+  for (genvar j = 0; j < N; j++) begin : gen_prod
+    if (Q == 1) begin : gen_one
+      assign p_d[j*PBits +: PBits] = csum[j*PBits +: PBits];
+    end else begin : gen_two
+      assign p_d[j*PBits +: PBits] = csum[2*j*PBits +: PBits] + csum[(2*j+1)*PBits +: PBits];
+    end
+  end
+
+  assign pc_o = p_d;
+  always_ff @(posedge clk_i) begin
+    if (en_i) p_o <= p_d;
+  end
+
+endmodule
