@@ -74,11 +74,11 @@
 #                 and (exit 2) when --param or FPGA_PARAMS sets a core parameter other than
 #                 MulTileBits, TileBits or SetupII without --label or --phong-config: such a
 #                 run would replace the default configuration's entry
-#   --setup-ii    with --top setup or system: the Q44 setup's initiation interval SetupII (1, 2,
-#                 4 or 8: at most one span every K clocks, the hardware shared over them,
-#                 docs/setup_hw.md#sharing-over-setupii-clocks), as --param SetupII=K (and
-#                 LeanSetup=0 on the system, whose default setup is the lean one); the run's
-#                 folder is TOP_iiK_DEVICE/
+#   --setup-ii    with --top setup, setup_lean or system: the setup's initiation interval
+#                 SetupII (at most one span every K clocks, the hardware shared over them: the
+#                 Q44 setup 1, 2, 4 or 8, docs/setup_hw.md#sharing-over-setupii-clocks; the lean
+#                 setup, the system's default, 1 or from 5 on, docs/setup_hw.md#the-folded-lean-setup),
+#                 as --param SetupII=K; the run's folder is TOP_iiK_DEVICE/
 #
 # A design that does not fit is a result, reported as fit = no with the reason, not an
 # error: when Yosys' counts already exceed the iCE40 part (logic cells needed, at least the
@@ -204,12 +204,9 @@ if [ -n "$phong_cfg" ]; then
 fi
 # --setup-ii: specular_setup's SetupII (rtl/setup/specular_setup.sv), on the setup or the system.
 if [ -n "$setup_ii" ]; then
-  case "$top_arg" in setup|system) ;; *) die_usage "--setup-ii needs --top setup or system (got --top $top_arg)" ;; esac
-  # specular_system's default setup is the lean one, built at SetupII 1 only: SetupII is the Q44
-  # setup's (set first: each parameter is elaborated as it is set).
-  [ "$top_arg" = system ] && params+=("LeanSetup=0")
-  case "$setup_ii" in 1|2|4|8) params+=("SetupII=$setup_ii") ;;
-    *) die_usage "--setup-ii must be 1, 2, 4 or 8 (got '$setup_ii')" ;; esac
+  case "$top_arg" in setup|setup_lean|system) ;; *) die_usage "--setup-ii needs --top setup, setup_lean or system (got --top $top_arg)" ;; esac
+  [[ "$setup_ii" =~ ^[1-9][0-9]*$ ]] || die_usage "--setup-ii must be a positive whole number (got '$setup_ii'; the setup's own check says which it builds)"
+  params+=("SetupII=$setup_ii")
 fi
 [[ "$yosys_timeout" =~ ^[0-9]+$ ]] || die_usage "--yosys-timeout must be a whole number of seconds, 0 for no limit (got '$yosys_timeout')"
 [[ "$seed" =~ ^[0-9]+$ ]] || die_usage "--seed must be a non-negative integer (got '$seed')"
@@ -245,9 +242,6 @@ if [ "$record" = 1 ] && [ -z "$label" ] && [ -z "$phong_cfg" ]; then
   for p in "${params[@]+"${params[@]}"}"; do
     case "${p%%=*}" in
       MulTileBits|TileBits|SetupII) ;;  # keyed by the multiplier style and by SetupII
-      LeanSetup)  # the system's Q44 setup, keyed by SetupII; at SetupII 1 it would replace the default (lean) system's entry
-        [ -n "$setup_ii" ] && [ "$setup_ii" != 1 ] ||
-          die_usage "--record of the system with the Q44 setup at SetupII 1 needs --label NAME (without it the run would replace the default system's entry)" ;;
       *) die_usage "--record with --param ${p%%=*} needs --label NAME, the configuration's name in docs/fpga_figures.json (without it the run would replace the default configuration's entry)" ;;
     esac
   done

@@ -10,16 +10,16 @@
 // the same AXI4-Stream rules, geo_ready_o a function of registers only (specular_setup's).
 //
 // The setup takes a span per clock (SetupII = 1; at most one every SetupII clocks otherwise,
-// docs/setup_hw.md#sharing-over-setupii-clocks; the lean setup only at SetupII = 1) and the
-// stream a pixel per clock, so with
+// docs/setup_hw.md#sharing-over-setupii-clocks and #the-folded-lean-setup) and the stream a
+// pixel per clock, so with
 // px_ready_i high and SetupII = 1 the system shades one pixel per clock, one-pixel spans back
 // to back included; the setup's two-entry output buffer holds the descriptors while the
 // stream works on a long span. The setup's status is not on the pixel side: a span it resolves to C = 0 gives l + 1
 // pixels of 0.
 //
 // Parameters: the core's list (rtl/core/specular_params.svh) with the register formats the setup
-// produces (device::Format's defaults), VecBits, TagBits, LeanSetup, the Q44 setup's HeEqH1 and
-// SetupII, the setups' ROM files. The lean setup's multipliers take the core's MulTileBits (one
+// produces (device::Format's defaults), VecBits, TagBits, LeanSetup, SetupII, the Q44 setup's
+// HeEqH1, the setups' ROM files. The lean setup's multipliers take the core's MulTileBits (one
 // multiplier style for the whole system: DSP tiles or LUT trees, docs/pipeline.md#multiplier-styles).
 
 `include "specular_assert.svh"
@@ -33,7 +33,7 @@ module specular_system #(
   parameter int VecBits       = 18,
   parameter bit LeanSetup     = 1'b1,  // 1: specular_setup_lean; 0: specular_setup (Q44)
   parameter bit HeEqH1        = 1'b0,  // specular_setup's: geo_he_i ignored, He = H1
-  parameter int SetupII       = 1,     // specular_setup's: at most one span every SetupII clocks
+  parameter int SetupII       = 1,     // the setup's: at most one span every SetupII clocks
   parameter     RsqrtSeedFile = "roms/setup/rsqrt_seed.hex",
   parameter     LeanSeedFile  = "roms/setup/rsqrt_seed_lean.hex",
   parameter     LogRecipFile  = "roms/setup/log_recip.hex",
@@ -52,11 +52,9 @@ module specular_system #(
   if (CBits != 16 || CFrac != 15 || AngleBits != 32 || AngleFrac != 28 || NBits != 10 || LenBits != 11) begin : gen_fmt_check
     `SPEC_PARAM_ERROR("specular_system: the register formats must be the defaults (C 16/15, angles 32/28, n 10, l 11)")
   end
-  if (SetupII != 1 && SetupII != 2 && SetupII != 4 && SetupII != 8) begin : gen_ii_check
-    `SPEC_PARAM_ERROR("specular_system: SetupII must be 1, 2, 4 or 8")
-  end
-  if (LeanSetup && (SetupII != 1 || HeEqH1)) begin : gen_lean_check
-    `SPEC_PARAM_ERROR("specular_system: the lean setup (LeanSetup = 1) is built with SetupII = 1 and HeEqH1 = 0 only")
+  // Each setup checks its own SetupII (the Q44 setup 1, 2, 4, 8; the lean one 1 or from 5 on).
+  if (LeanSetup && HeEqH1) begin : gen_lean_check
+    `SPEC_PARAM_ERROR("specular_system: the lean setup (LeanSetup = 1) has no HeEqH1 variant")
   end
 
   logic                 span_valid, span_ready;
@@ -72,6 +70,7 @@ module specular_system #(
       .VecBits      (VecBits),
       .TagBits      (TagBits),
       .TileBits     (MulTileBits),
+      .SetupII      (SetupII),
       .SeedFile     (LeanSeedFile),
       .LogRecipFile (LogRecipFile),
       .LogValueFile (LogValueFile),

@@ -31,8 +31,8 @@ expect "--yosys-timeout must be a whole number of seconds, 0 for no limit \(got 
 expect "must be a positive number of MHz" --freq-hx8k 0
 expect "must be a positive number of MHz \(got 'fast'\)" --freq-ecp5 fast
 expect "--out needs a value" --out
-expect "--setup-ii must be 1, 2, 4 or 8 \(got '3'\)" --top setup --setup-ii 3
-expect "--setup-ii needs --top setup or system \(got --top stream\)" --top stream --setup-ii 2
+expect "--setup-ii must be a positive whole number \(got 'x'" --top setup --setup-ii x
+expect "--setup-ii needs --top setup, setup_lean or system \(got --top stream\)" --top stream --setup-ii 2
 expect "--label must be letters, digits and _ \(got 'b1 n64'\)" --top stream --label 'b1 n64'
 expect "--label must not be 'default'" --top stream --label default
 expect "--label and --phong-config both name the configuration: give one \(got --label x --phong-config n64\)" --top phong --phong-config n64 --label x
