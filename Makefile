@@ -16,7 +16,7 @@ help:
 	@echo "make test    build everything, run every test with ctest (what CI runs)"
 	@echo "make formal-long  the slow formal checks of specular_setup: its proof, bounded check and mutant (ctest label formal_long)"
 	@echo "make formal  the formal proofs alone (specular_stream's handshakes, specular_axil's AXI4-Lite rules, phong_stream's bounded check) and their mutants"
-	@echo "make sim-setup-ii  the system stage with the Q44 setup at SetupII 1, 2, 4 and 8 (turns on SPECULAR_SYSTEM_SETUP_II in $(BUILD): four more models)"
+	@echo "make sim-setup-ii  the system stage at SetupII 1, 8, 16, 32 and 64 (turns on SPECULAR_SYSTEM_SETUP_II in $(BUILD): four more models)"
 	@echo "make roms    regenerate every configuration's ROM hex files and roms/build_configs.cmake (romgen --all), and roms/budget/ (scripts/budget_roms.py)"
 	@echo "make stage-table  rewrite docs/pipeline.md's stage table from rtl/prim/specular_pkg.sv"
 	@echo "make results-page  rewrite docs/results.md (the measured results) from docs/measured/*.json and docs/fpga_figures.json"
@@ -57,13 +57,13 @@ formal-long: deps
 sim: build
 	./$(BUILD)/bin/sim_regression --images-dir $(BUILD)/scenes
 
-# The system stage with the Q44 setup once per SetupII (docs/setup_hw.md#sharing-over-setupii-clocks):
+# The system stage once per SetupII of the lean setup (docs/setup_hw.md#the-folded-lean-setup):
 # clocks per pixel per scene for each initiation interval. Turns the CMake option
 # SPECULAR_SYSTEM_SETUP_II on in $(BUILD) (it stays on: four more Verilator models per build).
 sim-setup-ii: configure
 	@cmake -S . -B $(BUILD) -DSPECULAR_SYSTEM_SETUP_II=ON > /dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target sim_regression
-	./$(BUILD)/bin/sim_regression --config default --random 0 --stream-spans 0 --setup-ii 1,2,4,8 \
+	./$(BUILD)/bin/sim_regression --config default --random 0 --stream-spans 0 --setup-ii 1,8,16,32,64 \
 	  --images-dir $(BUILD)/scenes --json $(BUILD)/sim_setup_ii.json
 
 # docs/pipeline.md's stage table from rtl/prim/specular_pkg.sv (docs/pipeline.md#stage-counts).

@@ -154,9 +154,9 @@ def system_rows(sys_):
 def section_setup_ii(d, rel):
     p = provenance(d, rel)
     out = ["## The system per `SetupII`", "", run_line(p, rel),
-           "Deterministic like the regression. Pixels per clock (steady state) of `specular_system` with the Q44 "
-           "setup (`LeanSetup = 0`) per scene and initiation interval of the setup "
-           "([setup_hw.md](setup_hw.md#the-system-per-setupii)); mismatches summed over the scenes.", ""]
+           "Deterministic like the regression. Pixels per clock (steady state) of `specular_system` per scene "
+           "and initiation interval of its lean setup ([setup_hw.md](setup_hw.md#the-folded-lean-setup)); "
+           "mismatches summed over the scenes.", ""]
     iis = list(d["system_setup_ii"])
     scenes = list(d["system_setup_ii"][iis[0]])
     rows = [[f"`{s}`", num(d["system_setup_ii"][iis[0]][s]["spans"])] +

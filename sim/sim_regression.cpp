@@ -11,9 +11,8 @@
 //   sim_regression --no-scenes                         regression lines only
 //   sim_regression --system-spans N                    random geometry spans of the system stage (0: no
 //                                                      system stage; system_stage.hpp)
-//   sim_regression --setup-ii 1,2,4,8                  after the default system (the lean setup), the system
-//                                                      stage once per SetupII with the Q44 setup (the build
-//                                                      option SPECULAR_SYSTEM_SETUP_II)
+//   sim_regression --setup-ii 1,8,16,32,64             the system stage once per specular_system SetupII
+//                                                      (8 .. 64: the build option SPECULAR_SYSTEM_SETUP_II)
 //   sim_regression --scene-threads 1                   scene stage on one thread (default 2)
 //   sim_regression --corrupt-span SCENE:SPAN           test only: a wrong register must fail the scene stage
 //   sim_regression --stream-spans N                    random spans through specular_stream (0: skip)
@@ -438,13 +437,12 @@ int main(int argc, char** argv) {
                  "(0: skip the system stage)")
       ->check(CLI::Range(uint64_t{0}, uint64_t{100000000}))
       ->capture_default_str();
-  std::vector<int> setup_iis;
+  std::vector<int> setup_iis{1};
   app.add_option("--setup-ii", setup_iis,
-                 "after the default system (the lean setup), run the system stage once per SetupII in this "
-                 "comma-separated list (1, 2, 4, 8) with the Q44 setup (needs the build option "
-                 "SPECULAR_SYSTEM_SETUP_II, make sim-setup-ii)")
+                 "run the system stage once per SetupII of specular_system in this comma-separated list (1, 8, 16, "
+                 "32, 64; 8 to 64 need the build option SPECULAR_SYSTEM_SETUP_II, make sim-setup-ii)")
       ->delimiter(',')
-      ->check(CLI::IsMember({1, 2, 4, 8}))
+      ->check(CLI::IsMember({1, 8, 16, 32, 64}))
       ->capture_default_str();
   std::string digest_path, coverage_dir;
   app.add_option("--digest", digest_path,
@@ -497,8 +495,8 @@ int main(int argc, char** argv) {
   for (const int k : setup_iis) {
     if (!system_setup_ii_built(k)) {
       std::cerr << "sim_regression: --setup-ii " << k
-                << ": specular_system with the Q44 setup is not built (configure with "
-                   "-DSPECULAR_SYSTEM_SETUP_II=ON, or run make sim-setup-ii)\n";
+                << ": specular_system with this SetupII is not built (allowed here: 1; configure with "
+                   "-DSPECULAR_SYSTEM_SETUP_II=ON, or run make sim-setup-ii, for 8, 16, 32 and 64)\n";
       return 2;
     }
   }
@@ -629,9 +627,7 @@ int main(int argc, char** argv) {
     // System stage: geometry spans through specular_system (the setup in hardware).
     std::vector<SystemStats> systems;
     if (system_spans > 0) {
-      std::vector<int> runs{0};
-      runs.insert(runs.end(), setup_iis.begin(), setup_iis.end());
-      for (const int k : runs) {
+      for (const int k : setup_iis) {
         systems.push_back(run_system_stage(scenes, specular::build_config("default"), seed, system_spans, k));
         print_system_summary(systems.back());
       }
@@ -694,7 +690,7 @@ int main(int argc, char** argv) {
     }
     for (const auto& system : systems) {
       ok = ok && system.ok();
-      if (!system.ok()) std::cout << "FAIL system stage, " << system.name() << ": see the system summary\n";
+      if (!system.ok()) std::cout << "FAIL system stage, SetupII " << system.setup_ii << ": see the system summary\n";
     }
     if (!json_path.empty()) {
       nlohmann::json j = {{"seed", seed}, {"random_lines_per_config", random_lines}, {"ok", ok}};
@@ -718,15 +714,15 @@ int main(int argc, char** argv) {
                               {"rel_lsb", s.rel_lsb}, {"abs_lsb", s.abs_lsb}, {"rel_lsb_truth", s.rel_lsb_truth},
                               {"abs_lsb_truth", s.abs_lsb_truth}, {"rel_violations", s.rel_violations},
                               {"abs_violations", s.abs_violations}};
-      // system: the default system (the lean setup); system_setup_ii.<k>: the Q44 setup at SetupII k.
+      // system: SetupII 1 (the default); system_setup_ii.<k>: every SetupII run, 1 included.
       for (const auto& system : systems) {
         for (const auto& r : system.runs) {
           const nlohmann::json rj = {{"spans", r.spans}, {"pixels", r.pixels}, {"mismatches", r.mismatches},
                                      {"px_per_clock_fill", r.px_per_clock_fill()}, {"px_per_clock_steady", r.px_per_clock_steady()},
                                      {"setup_rel_epicenter", r.setup_rel}, {"setup_lsb", r.setup_lsb},
                                      {"e2e_rel_epicenter", r.e2e_rel}, {"e2e_lsb", r.e2e_lsb}, {"ok", r.ok()}};
-          if (system.setup_ii == 0) j["system"][r.name] = rj;
-          else j["system_setup_ii"][std::to_string(system.setup_ii)][r.name] = rj;
+          if (system.setup_ii == 1) j["system"][r.name] = rj;
+          j["system_setup_ii"][std::to_string(system.setup_ii)][r.name] = rj;
         }
       }
       j["run_seconds"] = run_seconds;

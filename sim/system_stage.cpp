@@ -7,9 +7,9 @@
 #include "Vspecular_system.h"
 #include "system_setup_ii.inc"  // SPECULAR_SYSTEM_SETUP_II (sim/CMakeLists.txt)
 #if SPECULAR_SYSTEM_SETUP_II
-#include "Vspecular_system_ii1.h"
-#include "Vspecular_system_ii2.h"
-#include "Vspecular_system_ii4.h"
+#include "Vspecular_system_ii16.h"
+#include "Vspecular_system_ii32.h"
+#include "Vspecular_system_ii64.h"
 #include "Vspecular_system_ii8.h"
 #endif
 #include "geo_cases.hpp"
@@ -17,7 +17,6 @@
 #include "metrics.hpp"
 #include "setup_batch.hpp"
 #include "setup_contract.hpp"
-#include "setup_fixed.hpp"
 #include "setup_lean.hpp"
 #include "verilated_model.hpp"
 
@@ -44,8 +43,7 @@ struct Pixel {
 template <class V>
 class Bench {
  public:
-  Bench(const BuildConfig& bc, const device::DeviceModel& dm, bool lean)
-      : bc_(bc), dm_(dm), lean_(lean), vm_("specular_system"), top_(vm_.top()) {
+  Bench(const BuildConfig& bc, const device::DeviceModel& dm) : bc_(bc), dm_(dm), vm_("specular_system"), top_(vm_.top()) {
     vm_.power_up();
   }
   V* top() const { return top_; }
@@ -76,45 +74,27 @@ class Bench {
     top_->geo_tag_i = static_cast<uint16_t>(g.tag);
   }
 
-  static void note_setup(const host::PixelAgreement& a, SystemRunStats& st) {
-    st.setup_violations += !a.ok();
-    st.setup_worst = std::max(st.setup_worst, a.worst);
-    st.setup_rel = std::max(st.setup_rel, a.max_rel_epicenter);
-    st.setup_lsb = std::max(st.setup_lsb, a.max_abs_lsb);
-  }
-
   // The expected pixels of a span, and its setup error into `st`.
   void expect(const device::GeoSpan& g, bool accuracy, SystemRunStats& st, std::deque<Pixel>& out) const {
     const device::Format& f = bc_.f;
-    host::lean::Result lr;
-    host::fixed::Result fr;
-    if (lean_) lr = host::lean::setup_lean(g, geo_cases::kGeo, f);
-    else fr = host::fixed::setup_fixed(g, geo_cases::kGeo, f);
-    const device::Span& span = lean_ ? lr.span : fr.span;
+    const host::lean::Result r = host::lean::setup_lean(g, geo_cases::kGeo, f);
     std::vector<device::StreamPixel> px;
-    dm_.stream_span(span, px);
+    dm_.stream_span(r.span, px);
     if (!accuracy) {
       for (const auto& p : px) out.push_back({p});
       return;
     }
     const ScanlineInput in = device::geo_input(g, geo_cases::kGeo, f);
-    ScanlineSetup s;
-    bool c_sat = false;
-    if (lean_) {
-      const host::ContractCheck c = host::check_contract(
-          g, lr.status, {lr.trace.opposite_normals, lr.trace.flat, lr.trace.opposite_halfway}, lr.span.reg, geo_cases::kGeo, f);
-      if (!c.decisions_equal && st.status_mismatches++ == 0)
-        st.first_errors.push_back("setup decisions differ from the contract's reference outside the guard bands");
-      note_setup(c.pixels, st);
-      s = c.ref_setup;
-      c_sat = device::load_registers(s, in.n, in.l, f).c_saturated;
-    } else {
-      s = scanline_setup(in);
-      const device::Registers ref_reg = host::span_registers(in, f, &c_sat);
-      if (fr.status != s.status && st.status_mismatches++ == 0)
-        st.first_errors.push_back("setup status differs from scanline_setup's");
-      note_setup(host::compare_pixels(fr.span.reg, ref_reg, f), st);
-    }
+    const host::ContractCheck c = host::check_contract(
+        g, r.status, {r.trace.opposite_normals, r.trace.flat, r.trace.opposite_halfway}, r.span.reg, geo_cases::kGeo, f);
+    if (!c.decisions_equal && st.status_mismatches++ == 0)
+      st.first_errors.push_back("setup decisions differ from the contract's reference outside the guard bands");
+    st.setup_violations += !c.pixels.ok();
+    st.setup_worst = std::max(st.setup_worst, c.pixels.worst);
+    st.setup_rel = std::max(st.setup_rel, c.pixels.max_rel_epicenter);
+    st.setup_lsb = std::max(st.setup_lsb, c.pixels.max_abs_lsb);
+    const ScanlineSetup& s = c.ref_setup;
+    const bool c_sat = device::load_registers(s, in.n, in.l, f).c_saturated;
     st.c_saturated_spans += c_sat;
     const double lsb = std::ldexp(1.0, -f.c_frac), n = in.n;
     const bool valid_n = s.status != SetupStatus::invalid_input;
@@ -139,7 +119,6 @@ class Bench {
  private:
   const BuildConfig& bc_;
   const device::DeviceModel& dm_;
-  bool lean_;
   VerilatedModel<V> vm_;
   V* top_;
   uint64_t cycle_ = 0;
@@ -153,8 +132,8 @@ void error(SystemRunStats& st, const std::string& what) {
 // Offers `spans` in order (each held until accepted) with the probabilities per clock of an
 // offer, of px_ready_i and of a reset; checks every pixel transfer; ends draining.
 template <class V>
-SystemRunStats run(Bench<V>& b, const std::string& name, const std::vector<device::GeoSpan>& spans, bool accuracy,
-                   double p_valid, double p_ready, double p_reset, uint64_t seed) {
+SystemRunStats run(Bench<V>& b, int setup_ii, const std::string& name, const std::vector<device::GeoSpan>& spans,
+                   bool accuracy, double p_valid, double p_ready, double p_reset, uint64_t seed) {
   SystemRunStats st;
   st.name = name;
   std::mt19937_64 rng(seed);
@@ -216,7 +195,8 @@ SystemRunStats run(Bench<V>& b, const std::string& name, const std::vector<devic
       stalled = false;
       ++st.resets;
     }
-    if (++guard > 4 * (spans.size() + st.pixels) + 100000) {
+    // A span takes at most SetupII clocks plus its pixels' (times 4: gaps and backpressure).
+    if (++guard > static_cast<uint64_t>(4 + setup_ii) * (spans.size() + st.pixels) + 100000) {
       error(st, "the system did not drain");
       break;
     }
@@ -242,7 +222,7 @@ SystemStats run_all(const std::vector<LoadedScene>& scenes, const BuildConfig& b
                     int setup_ii) {
   const auto t0 = std::chrono::steady_clock::now();
   const device::DeviceModel dm = load_device_model(bc.f, bc.coef_hex(), bc.cos_hex());
-  Bench<V> b(bc, dm, setup_ii == 0);
+  Bench<V> b(bc, dm);
   SystemStats out;
   out.setup_ii = setup_ii;
   const uint32_t tag_mask = (1u << geo_cases::kGeo.tag_bits) - 1;
@@ -252,18 +232,18 @@ SystemStats run_all(const std::vector<LoadedScene>& scenes, const BuildConfig& b
     for (size_t i = 0; i < ls.raster.spans.size(); ++i)
       spans.push_back(device::quantize_geo(ls.raster.spans[i].setup_in, geo_cases::kGeo, bc.f,
                                            static_cast<uint32_t>(i) & tag_mask));
-    out.runs.push_back(run(b, ls.scene.name, spans, true, 1.0, 1.0, 0.0, seed));
+    out.runs.push_back(run(b, setup_ii, ls.scene.name, spans, true, 1.0, 1.0, 0.0, seed));
   }
   // One-pixel spans back to back.
   std::vector<device::GeoSpan> l0 = geo_cases::random_geo_spans(20000, seed + 1);
   for (auto& g : l0) g.len = 0;
-  out.runs.push_back(run(b, "l0", l0, true, 1.0, 1.0, 0.0, seed + 2));
+  out.runs.push_back(run(b, setup_ii, "l0", l0, true, 1.0, 1.0, 0.0, seed + 2));
   if (random_spans > 0) {
     std::vector<device::GeoSpan> rnd = geo_cases::random_geo_spans(random_spans, seed + 3);
     const auto hard = geo_cases::hard_cases();
     for (size_t i = 0; i < hard.size() && i < rnd.size(); ++i) rnd[(i * 7919) % rnd.size()] = hard[i].g;
     // Bit-exact under gaps, backpressure and resets (the accuracy is the scenes' and l0's).
-    out.runs.push_back(run(b, "random", rnd, false, 0.8, 0.7, 2e-5, seed + 4));
+    out.runs.push_back(run(b, setup_ii, "random", rnd, false, 0.8, 0.7, 2e-5, seed + 4));
   }
   out.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   return out;
@@ -272,29 +252,28 @@ SystemStats run_all(const std::vector<LoadedScene>& scenes, const BuildConfig& b
 }  // namespace
 
 bool system_setup_ii_built(int setup_ii) {
-  return setup_ii == 0 || (SPECULAR_SYSTEM_SETUP_II && (setup_ii == 1 || setup_ii == 2 || setup_ii == 4 || setup_ii == 8));
+  return setup_ii == 1 || (SPECULAR_SYSTEM_SETUP_II && (setup_ii == 8 || setup_ii == 16 || setup_ii == 32 || setup_ii == 64));
 }
 
 SystemStats run_system_stage(const std::vector<LoadedScene>& scenes, const BuildConfig& bc, uint64_t seed,
                              uint64_t random_spans, int setup_ii) {
 #if SPECULAR_SYSTEM_SETUP_II
-  if (setup_ii == 1) return run_all<Vspecular_system_ii1>(scenes, bc, seed, random_spans, setup_ii);
-  if (setup_ii == 2) return run_all<Vspecular_system_ii2>(scenes, bc, seed, random_spans, setup_ii);
-  if (setup_ii == 4) return run_all<Vspecular_system_ii4>(scenes, bc, seed, random_spans, setup_ii);
   if (setup_ii == 8) return run_all<Vspecular_system_ii8>(scenes, bc, seed, random_spans, setup_ii);
+  if (setup_ii == 16) return run_all<Vspecular_system_ii16>(scenes, bc, seed, random_spans, setup_ii);
+  if (setup_ii == 32) return run_all<Vspecular_system_ii32>(scenes, bc, seed, random_spans, setup_ii);
+  if (setup_ii == 64) return run_all<Vspecular_system_ii64>(scenes, bc, seed, random_spans, setup_ii);
 #endif
-  if (setup_ii != 0)
-    throw std::invalid_argument("the system with the Q44 setup at SetupII " + std::to_string(setup_ii) + " is not built");
+  if (setup_ii != 1) throw std::invalid_argument("specular_system at SetupII " + std::to_string(setup_ii) + " is not built");
   return run_all<Vspecular_system>(scenes, bc, seed, random_spans, setup_ii);
 }
 
 void print_system_summary(const SystemStats& s) {
-  std::printf("\nSystem stage: specular_system, %s (setup in hardware -> specular_stream), geometry spans to pixels, %.1f s\n"
-              "  bit-exact against %s + DeviceModel::stream; setup error = fixed-point setup against the scalar\n"
-              "  double setup%s (0.01 %% + 1 LSB); end to end = RTL pixels against C cos^n(psi_i) of that setup\n"
-              "  (device budget + 1 LSB); px/clock with px_ready_i high (fill: from the first accept; steady: first to last pixel)\n",
-              s.name().c_str(), s.seconds, s.setup_ii == 0 ? "setup_lean" : "setup_fixed",
-              s.setup_ii == 0 ? " under the lean rule (host::check_contract)" : "");
+  std::printf("\nSystem stage: specular_system, the lean setup at SetupII %d (setup in hardware -> specular_stream), geometry spans to pixels, %.1f s\n"
+              "  bit-exact against setup_lean + DeviceModel::stream; setup error = fixed-point setup against the scalar\n"
+              "  double setup under the lean rule (host::check_contract, 0.01 %% + 1 LSB); end to end = RTL pixels against\n"
+              "  C cos^n(psi_i) of that setup (device budget + 1 LSB); px/clock with px_ready_i high (fill: from the first\n"
+              "  accept; steady: first to last pixel)\n",
+              s.setup_ii, s.seconds);
   std::printf("  %-14s %8s %9s %5s %5s %9s %9s %10s %8s %10s %8s %6s\n", "run", "spans", "pixels", "mism", "prot",
               "px/clk", "px/clk", "setup rel", "setup", "e2e rel", "e2e", "e2e");
   std::printf("  %-14s %8s %9s %5s %5s %9s %9s %10s %8s %10s %8s %6s\n", "", "", "", "", "", "fill", "steady",

@@ -3,13 +3,11 @@
 // specular_stream; docs/setup_hw.md#the-system) from geometry spans to pixels.
 //   scenes   every scene's spans (scene_stage.hpp's rasterization) quantized to the geometry
 //            span interface (device::quantize_geo), back to back with px_ready_i high: every
-//            pixel bit-exact against the golden models (host::lean::setup_lean for the default
-//            system, host::fixed::setup_fixed for the Q44 setup; then DeviceModel::stream);
-//            clocks per pixel; the setup error (the fixed-point setup's registers against the
-//            reference setup's on the same inputs, host::compare_pixels: 0.01 % + 1 LSB; the
-//            reference is the scalar double setup, under the lean setup's rule and guard bands
-//            for the lean setup, host::check_contract) and the end-to-end error (the RTL's
-//            pixels against C cos^n(psi_i) of that reference: the device budget + 1 LSB)
+//            pixel bit-exact against the golden models (host::lean::setup_lean, then
+//            DeviceModel::stream); clocks per pixel; the setup error (the lean setup's registers
+//            against the reference of its contract on the same inputs, host::check_contract:
+//            0.01 % + 1 LSB, and the decisions outside the guard bands) and the end-to-end error
+//            (the RTL's pixels against C cos^n(psi_i) of that reference: the device budget + 1 LSB)
 //   l0       one-pixel spans back to back: one pixel per clock
 //   random   random geometry spans with every hard case (tests/model/geo_cases.hpp) under
 //            random gaps, random px_ready_i and random resets, bit-exact
@@ -51,22 +49,20 @@ struct SystemRunStats {
 };
 
 struct SystemStats {
-  int setup_ii = 0;                  // 0: the default system (the lean setup); k: the Q44 setup at SetupII k
+  int setup_ii = 1;                  // specular_system's SetupII
   std::vector<SystemRunStats> runs;  // scenes, then "l0", then "random"
   double seconds = 0.0;
   bool ok() const;
-  std::string name() const { return setup_ii == 0 ? "the lean setup" : "the Q44 setup at SetupII " + std::to_string(setup_ii); }
 };
 
 // `bc`: the default build configuration (specular_system has its parameter defaults).
-// random_spans: random geometry spans of the random run (0: none). setup_ii: 0 for the default
-// system (the lean setup, always built); 1, 2, 4 or 8 for the system with the Q44 setup at that
-// SetupII (docs/setup_hw.md#sharing-over-setupii-clocks), built with the CMake option
-// SPECULAR_SYSTEM_SETUP_II (system_setup_ii_built). Throws std::invalid_argument for a system
-// that is not built.
+// random_spans: random geometry spans of the random run (0: none). setup_ii: specular_system's
+// SetupII (docs/setup_hw.md#the-folded-lean-setup); 1 is always built, 8, 16, 32 and 64 with the
+// CMake option SPECULAR_SYSTEM_SETUP_II (system_setup_ii_built). Throws std::invalid_argument
+// for a SetupII that is not built.
 bool system_setup_ii_built(int setup_ii);
 SystemStats run_system_stage(const std::vector<LoadedScene>& scenes, const BuildConfig& bc, uint64_t seed,
-                             uint64_t random_spans, int setup_ii = 0);
+                             uint64_t random_spans, int setup_ii = 1);
 void print_system_summary(const SystemStats& s);
 
 }  // namespace specular::sim
