@@ -214,7 +214,7 @@ def write_system_cost(w, runs, ii_sim=None):
         w("The device with its setup in hardware (`specular_system`): no ECP5 counts in docs/fpga_figures.json.\n")
         return
     w("The device with its setup in hardware (`specular_system`; `SetupII` = 1 takes one span per clock, `SetupII` = k "
-      "at most one every k clocks with the setup's hardware shared over them, docs/setup_hw.md#sharing-over-setupii-clocks) "
+      "at most one every k clocks with the setup folded over them, docs/setup_hw.md#the-folded-lean-setup) "
       "against the Phong cores, in the same harness and flow (`scripts/fpga.sh --device ecp5`; the system's Yosys "
       "`synth_ecp5` counts, as it fits no ECP5; a Phong core's placed and routed counts where its run has them; "
       "from docs/fpga_figures.json, not measured in this run):\n")

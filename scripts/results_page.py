@@ -157,7 +157,7 @@ def section_setup_ii(d, rel):
            "Deterministic like the regression. Pixels per clock (steady state) of `specular_system` per scene "
            "and initiation interval of its lean setup ([setup_hw.md](setup_hw.md#the-folded-lean-setup)); "
            "mismatches summed over the scenes.", ""]
-    iis = list(d["system_setup_ii"])
+    iis = sorted(d["system_setup_ii"], key=int)
     scenes = list(d["system_setup_ii"][iis[0]])
     rows = [[f"`{s}`", num(d["system_setup_ii"][iis[0]][s]["spans"])] +
             [f"{d['system_setup_ii'][ii][s]['px_per_clock_steady']:.4f}" for ii in iis] for s in scenes]

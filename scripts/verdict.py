@@ -196,11 +196,17 @@ def load_points(figs, phong_errors, device_meets, phong_configs, device_errs=Non
         name = "device stream" + (f" {label}" if label else "") + " (setup on a host)"
         pts.append({"name": name, "kind": "device", "ecp5": e, "meets": meets, "setup_ii": None,
                     "err": device_errs.get(label)})
-    for k in (1, 2, 4, 8):
-        e = ecp5_entry(figs, "specular_system", None, None if k == 1 else k)
+    # The system at every SetupII and setup recorded (config None: the lean setup, the default;
+    # q44_setup: the Q44 formulation).
+    systems = sorted({(e.get("config"), e.get("setup_ii") or 1) for e in figs.get("ecp5_runs", []) + figs.get("synthesis_runs", [])
+                      if e.get("core") == "specular_system" and (e.get("part") == "ECP5" or "multipliers" in e)},
+                     key=lambda cs: (cs[0] or "", cs[1]))
+    for cfg, k in systems:
+        e = ecp5_entry(figs, "specular_system", cfg, None if k == 1 else k)
         if e:
-            pts.append({"name": f"device system SetupII={k} (setup in hardware)", "kind": "device", "ecp5": e,
-                        "meets": device_meets.get(None, []), "setup_ii": k, "err": device_errs.get(None)})
+            setup = "Q44 setup" if cfg == "q44_setup" else "lean setup"
+            pts.append({"name": f"device system, {setup}, SetupII={k} (setup in hardware)", "kind": "device",
+                        "ecp5": e, "meets": device_meets.get(None, []), "setup_ii": k, "err": device_errs.get(None)})
     for c in phong_configs:
         if c.endswith("_consth"):
             continue  # constant H serves only a directional light and a distant viewer
