@@ -657,6 +657,13 @@ def config(r):
 # The runs in the shapes of docs/fpga_figures.json: placed iCE40 runs as "runs" entries, placed
 # ECP5 runs as "ecp5_runs" entries, the runs whose Yosys counts exceed the part as
 # "synthesis_runs" entries, to paste there. Each with the date of its run and the RTL commit.
+def add_setup_ii(e, r):
+    """The setup's SetupII of a run (--setup-ii, or --param SetupII=K): part of an entry's key."""
+    ii = next((p.split("=", 1)[1] for p in r["params"] if p.startswith("SetupII=")), None)
+    if ii is not None:
+        e["setup_ii"] = int(ii)
+
+
 entries = []
 for r, date in zip(runs, dates):
     if not r["device"].startswith("ecp5") and r["status"] == "placed and routed":
@@ -667,6 +674,7 @@ for r, date in zip(runs, dates):
         e = {"core": r["core"]}
         if config(r):
             e["config"] = config(r)
+        add_setup_ii(e, r)
         e.update({"part": {"hx8k": "HX8K ct256", "up5k": "UP5K sg48"}[r["device"]], "rtl": rtl, "date": date,
                   "tools": "Yosys " + re.sub(r"^Yosys (\S+).*", r"\1", r.get("yosys_version", "?")) + ", nextpnr-ice40 "
                            + r.get("nextpnr_version", "?"),
@@ -682,6 +690,7 @@ for r, date in zip(runs, dates):
         e = {"core": r["core"]}
         if config(r):
             e["config"] = config(r)
+        add_setup_ii(e, r)
         e.update({"part": r["part"], "rtl": rtl, "date": date, "multipliers": multipliers(r),
                   "tools": "Yosys " + re.sub(r"^Yosys (\S+).*", r"\1", r.get("yosys_version", "?")) + ", nextpnr-ecp5 "
                            + r.get("nextpnr_version", "?"),
@@ -701,9 +710,7 @@ for r, date in zip(runs, dates):
     e = {"core": r["core"]}
     if config(r):
         e["config"] = config(r)
-    ii = next((p.split("=", 1)[1] for p in r["params"] if p.startswith("SetupII=")), None)
-    if ii is not None:  # --setup-ii (or --param SetupII=K)
-        e["setup_ii"] = int(ii)
+    add_setup_ii(e, r)
     e["part"] = {"hx8k": "HX8K ct256", "up5k": "UP5K sg48", "ecp5": "ECP5"}[r["device"]]
     e["rtl"] = rtl
     e["date"] = date

@@ -153,7 +153,7 @@ _VERDICT = {}
 def verdict_rows(d):
     """scripts/verdict.py on the record (docs/fpga_figures.json): every configuration at the budget it
     was built for (the Phong configurations by their names, roms/phong/phong_configs.cmake; the
-    device's by their labels; B1 implies B3), spans of 1 and 8 pixels. Cached per Data."""
+    device's by their labels; B1 implies B3), spans of 1, 8 and 16 pixels. Cached per Data."""
     key = id(d)
     if key not in _VERDICT:
         sys.path.insert(0, os.path.join(d.root, "scripts"))
@@ -161,12 +161,15 @@ def verdict_rows(d):
         import hw_plane  # scripts/hw_plane.py: the configurations and their budgets
         pts = verdict.record_points(d.fpga, hw_plane.phong_configs(os.path.join(d.root, "roms", "phong",
                                                                                 "phong_configs.cmake")))
-        _VERDICT[key] = verdict.verdict(pts, [("1", 1, None), ("8", 8, None)])
+        _VERDICT[key] = verdict.verdict(pts, [(str(m), m, None) for m in _VERDICT_SPANS])
     return _VERDICT[key]
 
 
+_VERDICT_SPANS = (1, 8, 16)
+
+
 def verdict_figure(budget, span, field):
-    return lambda d: verdict_rows(d)[budget][0 if span == 1 else 1][field]
+    return lambda d: verdict_rows(d)[budget][_VERDICT_SPANS.index(span)][field]
 
 
 def phong_entry(d, config):
@@ -218,10 +221,11 @@ FIGURES = [
     ranged(R, r"per-pixel Phong \(SLEEF\), per scene \| (\S+) to (\S+) x as fast \|",
            "software: device x phong_sleef, both at the best instruction set", lambda d, x: d.best(x)),
     (R, r"over the cancellation-free per-pixel Phong core \| (\S+) x \((\S+) x at each core's clock\); with the "
-        r"setup in hardware (\S+) x on spans of 8 pixels or more \|",
+        r"setup in hardware (\S+) x on spans of 8 pixels, (\S+) x on spans of 16 pixels or more \|",
      [("B1 verdict: host-setup device / best Phong, px per clock per part", verdict_figure("b1", 1, "host_ratio")),
       ("B1 verdict: the same at each core's clock", verdict_figure("b1", 1, "host_ratio_at_clock")),
-      ("B1 verdict: hardware-setup device / best Phong, spans of 8", verdict_figure("b1", 8, "hw_ratio"))]),
+      ("B1 verdict: hardware-setup device / best Phong, spans of 8", verdict_figure("b1", 8, "hw_ratio")),
+      ("B1 verdict: hardware-setup device / best Phong, spans of 16", verdict_figure("b1", 16, "hw_ratio"))]),
     (P, r"at B1 the device's stream gives (\S+) times the pixels per clock per part of the cancellation-free core "
         r"\((\S+) times at each core's clock\), at B3 (\S+) times \((\S+) times\)",
      [("B1 verdict ratio", verdict_figure("b1", 1, "host_ratio")),
@@ -236,9 +240,11 @@ FIGURES = [
        / device_entry(d, "device_b1_n1000")["ffs"]),
       ("B1: cross / device MULT18X18D", lambda d: phong_entry(d, "cross_n1000")["mult18x18d"]
        / device_entry(d, "device_b1_n1000")["mult18x18d"])]),
-    (P, r"from (\S+) times at one pixel per span to (\S+) times on spans of 8 pixels or more",
+    (P, r"from (\S+) times at one pixel per span through (\S+) times on spans of 8 pixels to (\S+) times on spans "
+        r"of 16 pixels or more",
      [("B1: hardware-setup device / Phong, spans of 1", verdict_figure("b1", 1, "hw_ratio")),
-      ("B1: hardware-setup device / Phong, spans of 8", verdict_figure("b1", 8, "hw_ratio"))]),
+      ("B1: hardware-setup device / Phong, spans of 8", verdict_figure("b1", 8, "hw_ratio")),
+      ("B1: hardware-setup device / Phong, spans of 16", verdict_figure("b1", 16, "hw_ratio"))]),
     (P, r"the cancellation-free core takes (\S+) MULT18X18D where the textbook core takes (\S+), and clocks at (\S+) "
         r"MHz where the textbook core clocks at (\S+) MHz",
      [("cross_n1000 MULT18X18D", lambda d: phong_entry(d, "cross_n1000")["mult18x18d"]),
@@ -431,7 +437,7 @@ NOT_MEASURED = [
     r"\d+-bit SB_MAC16 tiles",                    # the UP5K's multiplier style (docs/pipeline.md)
     r"\d+ x \d+ tile products",                   # the tile size of that style
     r"CABGA381 -6",                              # an ECP5 part's package and speed grade
-    r"spans of 8 pixels or more",                # a span length of the verdict (scripts/verdict.py)
+    r"spans of (8|16) pixels( or more)?",         # a span length of the verdict (scripts/verdict.py)
 ]
 
 
