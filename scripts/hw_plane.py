@@ -169,22 +169,23 @@ def fmt(v):
 
 def ecp5_runs(path=os.path.join(ROOT, "docs", "fpga_figures.json")):
     """The ECP5 entries of docs/fpga_figures.json (scripts/fpga.sh --device ecp5, the same harness for
-    every core): name -> entry, for specular_system at each SetupII ("specular_system" is SetupII 1,
-    "specular_system SetupII=K" the others; synthesis counts, the system fits no ECP5) and each
-    phong_stream configuration ("phong CONFIG"; its placed and routed run where there is one)."""
+    every core): name -> entry, for the default specular_system at each SetupII ("specular_system" is
+    SetupII 1, "specular_system SetupII=K" the others) and each phong_stream configuration
+    ("phong CONFIG"); a placed and routed run replaces the synthesis counts of the same core."""
     d = load_figures(path)
     out = {}
-    for e in d.get("synthesis_runs", []):
-        if e.get("part") != "ECP5":
-            continue
+
+    def add(e):
         if e.get("core") == "specular_system" and not e.get("config"):  # a --label run is not the system's default
             ii = e.get("setup_ii", 1)
             out["specular_system" + (f" SetupII={ii}" if ii != 1 else "")] = e
         elif e.get("core") == "phong_stream":
             out[f"phong {e.get('config')}"] = e
+    for e in d.get("synthesis_runs", []):
+        if e.get("part") == "ECP5":
+            add(e)
     for e in d.get("ecp5_runs", []):
-        if e.get("core") == "phong_stream":
-            out[f"phong {e.get('config')}"] = e
+        add(e)
     return out
 
 
@@ -194,7 +195,7 @@ def setup_ii_of(name):
 
 
 def setup_ii_sim(path=os.path.join(ROOT, "docs", "measured", "sim_setup_ii.json")):
-    """sim_regression --setup-ii 1,2,4's system stage (make sim-setup-ii, committed as
+    """sim_regression --setup-ii's system stage (make sim-setup-ii, committed as
     docs/measured/sim_setup_ii.json): SetupII -> run -> figures; {} when absent."""
     try:
         with open(path) as f:
@@ -216,7 +217,7 @@ def write_system_cost(w, runs, ii_sim=None):
     w("The device with its setup in hardware (`specular_system`; `SetupII` = 1 takes one span per clock, `SetupII` = k "
       "at most one every k clocks with the setup folded over them, docs/setup_hw.md#the-folded-lean-setup) "
       "against the Phong cores, in the same harness and flow (`scripts/fpga.sh --device ecp5`; the system's Yosys "
-      "`synth_ecp5` counts, as it fits no ECP5; a Phong core's placed and routed counts where its run has them; "
+      "`synth_ecp5` counts where it fits no ECP5, placed and routed counts where a run has them; "
       "from docs/fpga_figures.json, not measured in this run):\n")
     w("| core | RTL | LUT4 | CCU2C | MULT18X18D | DP16KD | FF |")
     w("|---|---|---|---|---|---|---|")
