@@ -9,7 +9,8 @@
 #   scripts/formal.sh TARGET [--bounded | --mutant NAME] [OUT_DIR]
 #
 #   TARGET     stream (specular_stream), axil (specular_axil), phong (phong_stream),
-#              phong_cross (phong_stream, Cross = 1), setup (specular_setup)
+#              phong_cross (phong_stream, Cross = 1), setup (specular_setup), setup_lean
+#              (specular_setup_lean), delay (specular_delay's ring against its register line)
 #   (none)     the unbounded proof: the harness's properties and strengthening invariants,
 #              base case from reset (ABC bmc3, FORMAL_BASE = 4 cycles) and FORMAL_K = 1
 #              step induction (ABC scorr -o, one SAT call per property;
@@ -35,7 +36,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 me=formal.sh
 
 usage() {
-  echo "usage: $me TARGET [--bounded | --mutant NAME] [OUT_DIR]; TARGET: stream, axil, phong, phong_cross, setup" >&2
+  echo "usage: $me TARGET [--bounded | --mutant NAME] [OUT_DIR]; TARGET: stream, axil, phong, phong_cross, setup, setup_lean, delay" >&2
   exit 2
 }
 
@@ -58,6 +59,8 @@ usage() {
 #   map                      the commands that map the flattened model ("bits": simplemap,
 #                            so opt_clean drops every register bit without a reader;
 #                            "memory": prep and memory_map)
+#   prove_engine             induction (the default: base case and K-step induction with the
+#                            harness's invariants) or pdr (ABC finds the invariant)
 #   mutants                  lines "NAME FILE SED": one-line edits of a copy of the RTL
 #   cex_ports                the inputs printed cycle by cycle from an ABC counterexample
 # ---------------------------------------------------------------------------------------
@@ -169,7 +172,7 @@ target_setup() {
   filelist=rtl/setup/setup.f
   harness=rtl/setup/formal/specular_setup_fv.sv
   top=specular_setup_fv
-  # The valid delay line: one bit per register after the input register (the tau, 96).
+  # The valid delay line: one bit per register after the input register (the tau, 99).
   measure="Depth u_dut.u_dly_valid.gen_regs.line_q 1 0"
   bmc_depth="Depth + 8"
   bmc_depth_mutant="Depth + 8"
@@ -182,9 +185,9 @@ p_count u_dut.u_out_buf.count_q
 p_head u_dut.u_out_buf.head_q
 p_tail u_dut.u_out_buf.tail_q
 p_adv u_dut.u_out_buf.adv_q"
-  # The arithmetic datapath where it reaches the descriptor (tau 96), and the tau-0 flags.
-  cuts="u_dut.c_96 u_dut.psi0_96 u_dut.dpsi_96 u_dut.a_pos_96 u_dut.opp_h_96 u_dut.n_96
-u_dut.len_96 u_dut.invalid_96 u_dut.undefined_96 u_dut.opp_n_96 u_dut.invalid
+  # The arithmetic datapath where it reaches the descriptor (tau 99), and the tau-0 flags.
+  cuts="u_dut.c_99 u_dut.psi0_99 u_dut.dpsi_99 u_dut.a_pos_99 u_dut.opp_h_99 u_dut.n_99
+u_dut.len_99 u_dut.invalid_99 u_dut.undefined_99 u_dut.opp_n_99 u_dut.invalid
 u_dut.undefined u_dut.opp_normals"
   map=bits
   mutants="valid_no_reset rtl/setup/specular_setup.sv s/specular_delay #(.Width(1), .Depth(TC), .Reset(1'b1)) u_dly_valid/specular_delay #(.Width(1), .Depth(TC), .Reset(1'b0)) u_dly_valid/
@@ -193,16 +196,54 @@ tag_one_short rtl/setup/specular_setup.sv s/specular_delay #(.Width(LenBits + NB
   cex_ports="rst_ni geo_valid_i geo_tag_i span_ready_i"
 }
 
+# specular_delay's ring buffer (Ram = 1) against its register line, a pair per depth
+# (rtl/prim/formal/specular_delay_fv.sv); the lean setup's harness reads its lines as registers.
+target_delay() {
+  filelist=rtl/prim/prim.f
+  harness=rtl/prim/formal/specular_delay_fv.sv
+  top=specular_delay_fv
+  bmc_depth=40
+  bmc_depth_mutant=40
+  bmc_engine=abc
+  prove_engine=pdr
+  map=memory
+  mutants="read_one_late rtl/prim/specular_delay.sv s/rp_q <= wp_q + AW'(Words + 2 - Depth);/rp_q <= wp_q + AW'(Words + 1 - Depth);/"
+  cex_ports="en_i d_i"
+}
+
+# The lean setup (specular_setup_lean, SetupII = 1) through the same harness (Lean = 1), its
+# delay lines in registers (RamLines = 0; target delay carries the proof to the rings).
+target_setup_lean() {
+  target_setup
+  harness_params="-set Lean 1"
+  measure="Depth gen_lean.u_dut.u_dly_valid.gen_regs.line_q 1 0"
+  probes="p_vld0 gen_lean.u_dut.in_valid_q
+p_tag0 gen_lean.u_dut.tag_q
+p_vline gen_lean.u_dut.u_dly_valid.gen_regs.line_q
+p_oline gen_lean.u_dut.u_dly_side.gen_regs.line_q
+p_count gen_lean.u_dut.u_out_buf.count_q
+p_head gen_lean.u_dut.u_out_buf.head_q
+p_tail gen_lean.u_dut.u_out_buf.tail_q
+p_adv gen_lean.u_dut.u_out_buf.adv_q"
+  # The datapath where it reaches the descriptor (tau TOUT), and the tau-0 flags.
+  cuts="gen_lean.u_dut.c_out gen_lean.u_dut.psi0_out gen_lean.u_dut.dpsi_out
+gen_lean.u_dut.a_pos_out gen_lean.u_dut.opph_out gen_lean.u_dut.oppn_out gen_lean.u_dut.n_out
+gen_lean.u_dut.len_out gen_lean.u_dut.invalid_out gen_lean.u_dut.undefined_out
+gen_lean.u_dut.invalid gen_lean.u_dut.undefined"
+  mutants="valid_no_reset rtl/setup/specular_setup_lean.sv s/specular_delay #(.Width(1), .Depth(TOUT), .Reset(1'b1)) u_dly_valid/specular_delay #(.Width(1), .Depth(TOUT), .Reset(1'b0)) u_dly_valid/
+ready_ignores_stall rtl/setup/specular_setup_lean.sv s/assign geo_ready_o = adv;/assign geo_ready_o = 1'b1;/"
+}
+
 # ---------------------------------------------------------------------------------------
 # Arguments
 # ---------------------------------------------------------------------------------------
 target=${1:-}
 [ -n "$target" ] || usage
 shift
-filelist="" harness="" top="" measure="" bmc_depth="" bmc_depth_mutant="" bmc_engine=abc
+filelist="" harness="" top="" measure="" bmc_depth="" bmc_depth_mutant="" bmc_engine=abc prove_engine=induction
 pre_flatten="" checks="" probes="" cuts="" cuts_proof="" map="" mutants="" cex_ports="" harness_params=""
 case "$target" in
-  stream | axil | phong | phong_cross | setup) "target_$target" ;;
+  stream | axil | phong | phong_cross | setup | setup_lean | delay) "target_$target" ;;
   *) echo "$me: unknown target '$target'" >&2; usage ;;
 esac
 mode=proof
@@ -354,7 +395,11 @@ fi
 source scripts/formal_abc.sh
 if [ "$mode" = proof ]; then
   formal_abc_export "$me" "$out/model_${tag}.il" "$out/model_${tag}" || exit 1
-  formal_abc_prove "$me" "$out/model_${tag}" "$base" "$kind" || exit 1
+  if [ "$prove_engine" = pdr ]; then
+    formal_abc_pdr "$me" "$out/model_${tag}" || exit 1
+  else
+    formal_abc_prove "$me" "$out/model_${tag}" "$base" "$kind" || exit 1
+  fi
   exit 0
 fi
 

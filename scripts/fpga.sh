@@ -87,7 +87,9 @@
 # otherwise nextpnr's own "Unable to place ...". Missed timing is a result too (nextpnr
 # runs with --timing-allow-fail; the achieved Fmax is reported against the target). An
 # ECP5 run checks Yosys' counts the same way against the part (LUT4 positions = LUT4 + 2 CCU2C,
-# flip-flops, MULT18X18D, DP16KD) and records the smallest LFE5U (12F to 85F) that holds them.
+# flip-flops, MULT18X18D, DP16KD) and records the smallest LFE5U (12F to 85F) that holds them;
+# nextpnr places on the smallest that holds them with fpga_parts.PLACE_MARGIN on LUT4
+# positions and flip-flops (or, failing that, on the smallest that holds them at all).
 # Exit status: 0 done (fitting or not), 1 a tool failed (or --strict and an iCE40 run
 # failed to fit or close timing), 2 bad arguments.
 set -euo pipefail
@@ -444,7 +446,7 @@ need = (cells.get("LUT4", 0) + 2 * cells.get("CCU2C", 0), cells.get("TRELLIS_FF"
 dev = sys.argv[2]
 parts = fpga_parts.ECP5_DEVICES
 cands = [parts[dev]] if dev in parts else list(parts.values())
-part = fpga_parts.smallest_lfe5u(*need, parts=cands)
+part = fpga_parts.place_lfe5u(*need, parts=cands)
 if part:
     open(sys.argv[3], "w").write(f"{part[0]} {part[1]}\n")
 else:

@@ -37,8 +37,8 @@
 //   25..33   normalize W                                34: |W|, N1.u
 //   35..83   two CORDIC vectorings: gamma; lambda and A K
 //   84       gamma (0 flat, pi opposite halfway), A, psi0, floor(log2 l); the 1/l ROM is read
-//   85       dpsi                                       85..89: log2 A
-//   90       n log2 A                                   91..96: C
+//   85       dpsi                                       85..90: log2 A
+//   91       n log2 A                                   92..99: C
 //   then     the output buffer
 // The tau above and the suffixes of the signals are SetupII = 1's. Sharing
 // (docs/setup_hw.md#sharing-over-setupii-clocks: one instance serves sites whose input
@@ -135,9 +135,9 @@ module specular_setup #(
   localparam int TNu     = TU + 1;                   // 34
   localparam int TCordic = TNu + CordicStages + CordicSkew;  // 83
   localparam int TRegs   = TCordic + 1;              // 84
-  localparam int TLog    = TRegs + LogStages;        // 89
-  localparam int TE      = TLog + 1;                 // 90
-  localparam int TC      = TE + ExpStages;           // 96
+  localparam int TLog    = TRegs + LogStages;        // 90
+  localparam int TE      = TLog + 1;                 // 91
+  localparam int TC      = TE + ExpStages;           // 99
   localparam int OutBits = CBits + 2 * AngleBits + NBits + LenBits + TagBits + 3;
 
   if (VecBits < 2 || VecBits > 24 || TagBits < 1) begin : gen_param_check
@@ -575,35 +575,35 @@ module specular_setup #(
   logic unused_flat_34;
   assign unused_flat_34 = flat_34;
 
-  // Sideband from tau 0: len at tau 83 (the 1/l ROM), n at tau 89, scale at tau 90, the rest
-  // at tau 96.
-  logic [LenBits-1:0] len_83, len_96;
-  logic [NBits-1:0]   n_89, n_96;
-  logic [CBits-1:0]   scale_90;
-  logic [TagBits-1:0] tag_96;
-  logic               invalid_96, undefined_96, opp_n_96, opp_h_96;
+  // Sideband from tau 0: len at tau 83 (the 1/l ROM), n at tau 90, scale at tau 91, the rest
+  // at tau 99.
+  logic [LenBits-1:0] len_83, len_99;
+  logic [NBits-1:0]   n_90, n_99;
+  logic [CBits-1:0]   scale_91;
+  logic [TagBits-1:0] tag_99;
+  logic               invalid_99, undefined_99, opp_n_99, opp_h_99;
   specular_delay #(.Width(LenBits), .Depth(TCordic), .Reset(1'b0)) u_dly_len (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (len_q), .q_o (len_83)
   );
   specular_delay #(.Width(NBits), .Depth(TLog), .Reset(1'b0)) u_dly_n (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n_q), .q_o (n_89)
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n_q), .q_o (n_90)
   );
   specular_delay #(.Width(CBits), .Depth(TE), .Reset(1'b0)) u_dly_scale (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (scale_q), .q_o (scale_90)
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (scale_q), .q_o (scale_91)
   );
   specular_delay #(.Width(LenBits + NBits + TagBits + 3), .Depth(TC), .Reset(1'b0)) u_dly_out (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv),
     .d_i ({len_q, n_q, tag_q, invalid, undefined, opp_normals}),
-    .q_o ({len_96, n_96, tag_96, invalid_96, undefined_96, opp_n_96})
+    .q_o ({len_99, n_99, tag_99, invalid_99, undefined_99, opp_n_99})
   );
   specular_delay #(.Width(1), .Depth(TC - TTest), .Reset(1'b0)) u_dly_opph (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (opp_h_23), .q_o (opp_h_96)
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (opp_h_23), .q_o (opp_h_99)
   );
 
   // ---- tau 84: gamma, A, psi0, s = floor(log2 l); the 1/l ROM ----
   logic signed [CordicW-1:0] gamma_84;
   logic signed [specular_setup_pkg::AmpW-1:0] a_84;
-  logic [AngleBits-1:0] psi0_84, psi0_96;
+  logic [AngleBits-1:0] psi0_84, psi0_99;
   logic [RecipLenFrac:0] recip_84;
   logic [3:0] lshift_d, lshift_84;
   always_comb begin
@@ -630,15 +630,15 @@ module specular_setup #(
     .clk_i (clk_i), .en_i (adv), .addr_i (len_83), .data_o (recip_84)
   );
   specular_delay #(.Width(AngleBits), .Depth(TC - TRegs), .Reset(1'b0)) u_dly_psi0 (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (psi0_84), .q_o (psi0_96)
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (psi0_84), .q_o (psi0_99)
   );
-  logic a_pos_96;
+  logic a_pos_99;
   specular_delay #(.Width(1), .Depth(TC - TRegs), .Reset(1'b0)) u_dly_apos (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (a_84 > 0), .q_o (a_pos_96)
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (a_84 > 0), .q_o (a_pos_99)
   );
 
   // ---- tau 85: dpsi ----
-  logic [AngleBits-1:0] dpsi_85, dpsi_96;
+  logic [AngleBits-1:0] dpsi_85, dpsi_99;
   logic signed [GammaW-1:0] gamma30_84;  // gamma rounded to Q30
   assign gamma30_84 = GammaW'(specular_setup_pkg::rshift_round64(64'(gamma_84), CordicFrac - GammaFrac));
   always_ff @(posedge clk_i) begin
@@ -650,45 +650,45 @@ module specular_setup #(
     end
   end
   specular_delay #(.Width(AngleBits), .Depth(TC - TRegs - 1), .Reset(1'b0)) u_dly_dpsi (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (dpsi_85), .q_o (dpsi_96)
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (dpsi_85), .q_o (dpsi_99)
   );
 
-  // ---- tau 85 .. 96: C = scale 2^(n log2 A) ----
-  logic signed [specular_setup_pkg::LogW-1:0] log2_89;
-  logic signed [specular_setup_pkg::ExpW-1:0] e_90;
+  // ---- tau 85 .. 99: C = scale 2^(n log2 A) ----
+  logic signed [specular_setup_pkg::LogW-1:0] log2_90;
+  logic signed [specular_setup_pkg::ExpW-1:0] e_91;
   specular_setup_log2 #(.LogRecipFile(LogRecipFile), .LogValueFile(LogValueFile)) u_log2 (
-    .clk_i (clk_i), .en_i (adv), .a_i (a_84), .log2_o (log2_89)
+    .clk_i (clk_i), .en_i (adv), .a_i (a_84), .log2_o (log2_90)
   );
   always_ff @(posedge clk_i) begin
-    if (adv) e_90 <= specular_setup_pkg::ExpW'(64'($signed({1'b0, n_89})) * 64'(log2_89));
+    if (adv) e_91 <= specular_setup_pkg::ExpW'(64'($signed({1'b0, n_90})) * 64'(log2_90));
   end
-  logic [CBits-1:0] c_96;
+  logic [CBits-1:0] c_99;
   logic             sat_88_unused;
   specular_setup_exp2 #(.CBits(CBits), .Exp2File(Exp2File)) u_exp2 (
-    .clk_i (clk_i), .en_i (adv), .e_i (e_90), .scale_i (scale_90), .c_o (c_96), .sat_o (sat_88_unused)
+    .clk_i (clk_i), .en_i (adv), .e_i (e_91), .scale_i (scale_91), .c_o (c_99), .sat_o (sat_88_unused)
   );
 
-  // ---- tau 96: the descriptor; then the output buffer ----
-  logic valid_96;
+  // ---- tau 99: the descriptor; then the output buffer ----
+  logic valid_99;
   specular_delay #(.Width(1), .Depth(TC), .Reset(1'b1)) u_dly_valid (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (in_valid_q), .q_o (valid_96)
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (in_valid_q), .q_o (valid_99)
   );
-  logic             zero_96;
-  logic [2:0]       status_96;
+  logic             zero_99;
+  logic [2:0]       status_99;
   logic [OutBits-1:0] out_d, out_q;
   always_comb begin
-    zero_96   = invalid_96 || undefined_96;
-    status_96 = invalid_96 ? 3'd1 : undefined_96 ? 3'd2 : opp_h_96 ? 3'd4 : opp_n_96 ? 3'd3 : 3'd0;
-    out_d = {zero_96 || !a_pos_96 ? CBits'(0) : c_96,
-             zero_96 ? AngleBits'(0) : psi0_96,
-             zero_96 ? AngleBits'(0) : dpsi_96,
-             n_96, len_96, tag_96, status_96};
+    zero_99   = invalid_99 || undefined_99;
+    status_99 = invalid_99 ? 3'd1 : undefined_99 ? 3'd2 : opp_h_99 ? 3'd4 : opp_n_99 ? 3'd3 : 3'd0;
+    out_d = {zero_99 || !a_pos_99 ? CBits'(0) : c_99,
+             zero_99 ? AngleBits'(0) : psi0_99,
+             zero_99 ? AngleBits'(0) : dpsi_99,
+             n_99, len_99, tag_99, status_99};
   end
   specular_out_buf #(.Width(OutBits)) u_out_buf (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
     .adv_o      (adv),
-    .in_valid_i (valid_96),
+    .in_valid_i (valid_99),
     .in_data_i  (out_d),
     .px_valid_o (span_valid_o),
     .px_ready_i (span_ready_i),

@@ -8,8 +8,12 @@
 // and 2^g = 1 + g (E1 + g (E2 + g E3)) the rest g < 2^-10.
 //
 //   stage 1  ei, g; the ROM is read        stages 2, 3, 4: the Horner steps
-//   stage 5  mant = 2^(j/1024) 2^g         stage 6: scale mant 2^ei, rounded, saturated
-// Stages: specular_setup_pkg::ExpStages. en_i freezes every stage. No reset.
+//   stage 5  mant = 2^(j/1024) 2^g         stage 6: mant scale registered
+//   stage 7  shifted by 29 - ei            stage 8: rounded (the last bit), saturated
+// Each stage holds one carry chain at most (docs/setup_hw.md#the-lean-datapath): a
+// rounding and an added constant are one addend, and the shift is decoded from ei in
+// stage 2, beside the Horner steps. Stages: specular_setup_pkg::ExpStages. en_i freezes
+// every stage. No reset.
 
 `include "specular_assert.svh"
 
@@ -35,15 +39,23 @@ module specular_setup_exp2 #(
   localparam int ExpW     = specular_setup_pkg::ExpW;
   localparam int EiW      = ExpW - LogFrac;  // the integer part ei
   localparam int TW       = LogFrac + 2;     // the Horner terms and the mantissa: |value| < 2
-  localparam int Stages   = 6;
-  localparam logic signed [63:0] MaxCode = (64'sd1 <<< CBits) - 1;
-  localparam int                 MinEiInt = -(LogFrac + 1);  // below: C rounds to 0
-  localparam logic signed [63:0] MinEi = 64'(MinEiInt);
+  localparam int Stages   = 8;
+  localparam int MaxEi    = 16;              // above: every non-zero scale saturates C
+  localparam int MinEi    = -(LogFrac + 1);  // below: C rounds to 0
+  localparam int PW       = TW + CBits;      // mant scale: 0 <= value < 2^(LogFrac + 1 + CBits)
+  localparam int ShW      = $clog2(LogFrac - MinEi);  // the shift LogFrac - 1 - ei, 13 .. 60
+  localparam int VW       = PW - (LogFrac - 1 - MaxEi) + 1;  // the shifted product, the sign bit 0
+  // The added constants with the rounding half: x 2^-30 rounded, plus k, is
+  // (x + k 2^30 + 2^29) >>> 30 (one carry chain).
+  localparam logic signed [63:0] Half = 64'sd1 <<< (LogFrac - 1);
+  localparam logic signed [63:0] AddE2 = (specular_setup_pkg::E2 <<< LogFrac) + Half;
+  localparam logic signed [63:0] AddE1 = (specular_setup_pkg::E1 <<< LogFrac) + Half;
+  localparam logic signed [63:0] AddOne = (64'sd1 <<< (2 * LogFrac)) + Half;
 
   if (Stages != specular_setup_pkg::ExpStages) begin : gen_stage_check
     `SPEC_PARAM_ERROR("specular_setup_exp2: specular_setup_pkg::ExpStages disagrees with the stages built here")
   end
-  // Above 2^16 every non-zero scale saturates (the exponent test of stage 6).
+  // Above 2^16 every non-zero scale saturates (the exponent test of stage 2).
   if (CBits > 16) begin : gen_width_check
     `SPEC_PARAM_ERROR("specular_setup_exp2: CBits must be at most 16")
   end
@@ -61,12 +73,18 @@ module specular_setup_exp2 #(
   );
 
   logic [LoBits-1:0]     g_q [1:4];
-  logic signed [EiW-1:0] ei_q [1:5];
-  logic [CBits-1:0]      scale_q [1:5];
+  logic signed [EiW-1:0] ei_q;
+  logic [CBits-1:0]      scale_q [1:6];
   logic [LogFrac:0]      pow_q [2:4];
   logic signed [TW-1:0]  t2_q, t3_q, p4_q, mant_q;
+  // Stage 2 decodes ei: C is 0 (ei < MinEi or scale 0), saturated (ei > MaxEi), or the
+  // product shifted right by LogFrac - 1 - ei and rounded by one more bit.
+  logic [ShW-1:0] sh_q [2:7];
+  logic           zero_q [2:7], big_q [2:7];
+  logic [PW-1:0]  prod;      // stage 6: mant scale
+  logic [VW-1:0]  shift_q;   // stage 7
   // The five products: g E3, g t2, g t3, 2^(j/1024) p4, mant scale.
-  logic signed [63:0] pm [5];
+  logic signed [63:0] pm [4];
   if (SetupII > 1) begin : gen_fold
     localparam int FA = 35, FB = 35, FN = 5;  // 2 x 2 tiles
     if (LoBits + 1 > FA || LogFrac + 2 > FA || CBits + 1 > FA || TW > FB) begin : gen_fold_width_check
@@ -80,9 +98,11 @@ module specular_setup_exp2 #(
     assign f_b = {FB'(mant_q), FB'(p4_q), FB'(t3_q), FB'(t2_q), FB'(specular_setup_pkg::E3)};
     specular_setup_fmul #(.N(FN), .ABits(FA), .BBits(FB), .TileBits(TileBits), .SetupII(SetupII)) u_fmul (
       .clk_i (clk_i), .en_i (en_i), .a_i (f_a), .b_i (f_b), .p_o (f_p), .pc_o (f_pc));
-    for (genvar i = 0; i < FN; i++) begin : gen_lane
+    for (genvar i = 0; i < FN - 1; i++) begin : gen_lane
       assign pm[i] = f_pc[i*(FA+FB) +: 64];
     end
+    // mant scale: the unit's own register is stage 6's.
+    assign prod = f_p[(FN-1)*(FA+FB) +: PW];
     logic unused_fold;
     assign unused_fold = ^{f_p, f_pc};  // each lane's low 64 bits: mul64's
   end else begin : gen_inline
@@ -90,15 +110,18 @@ module specular_setup_exp2 #(
     assign pm[1] = specular_setup_pkg::mul64(64'(g_q[2]), 64'(t2_q));
     assign pm[2] = specular_setup_pkg::mul64(64'(g_q[3]), 64'(t3_q));
     assign pm[3] = specular_setup_pkg::mul64(64'(pow_q[4]), 64'(p4_q));
-    assign pm[4] = specular_setup_pkg::mul64(64'(mant_q), 64'(scale_q[5]));
+    logic [PW-1:0] prod_q;
+    always_ff @(posedge clk_i) begin
+      if (en_i) prod_q <= PW'(specular_setup_pkg::mul64(64'(mant_q), 64'(scale_q[5])));
+    end
+    assign prod = prod_q;
   end
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       g_q[1]     <= f_d[LoBits-1:0];
-      ei_q[1]    <= ei_d;
+      ei_q       <= ei_d;
       scale_q[1] <= scale_i;
-      for (int s = 2; s <= 5; s++) begin
-        ei_q[s]    <= ei_q[s-1];
+      for (int s = 2; s <= 6; s++) begin
         scale_q[s] <= scale_q[s-1];
       end
       for (int s = 2; s <= 4; s++) begin
@@ -107,33 +130,43 @@ module specular_setup_exp2 #(
       pow_q[2] <= pow_j;
       pow_q[3] <= pow_q[2];
       pow_q[4] <= pow_q[3];
-      t2_q   <= TW'(specular_setup_pkg::E2 +
-                specular_setup_pkg::rshift_round64(pm[0], LogFrac));
-      t3_q   <= TW'(specular_setup_pkg::E1 +
-                specular_setup_pkg::rshift_round64(pm[1], LogFrac));
-      p4_q   <= TW'((64'sd1 <<< LogFrac) +
-                specular_setup_pkg::rshift_round64(pm[2], LogFrac));
-      mant_q <= TW'(specular_setup_pkg::rshift_round64(pm[3], LogFrac));
+      // stage 2: the decode of ei (ShW-bit arithmetic: exact for ei in [MinEi, MaxEi])
+      sh_q[2]   <= ShW'(LogFrac - 1) - ShW'(ei_q);
+      zero_q[2] <= ei_q < $signed(EiW'(MinEi));
+      big_q[2]  <= ei_q > $signed(EiW'(MaxEi));
+      for (int s = 3; s <= 7; s++) begin
+        big_q[s] <= big_q[s-1];
+      end
+      for (int s = 3; s <= 6; s++) begin
+        zero_q[s] <= zero_q[s-1];
+      end
+      for (int s = 3; s <= 7; s++) begin
+        sh_q[s] <= sh_q[s-1];
+      end
+      // stages 2 .. 5: the Horner steps
+      t2_q   <= TW'((pm[0] + AddE2) >>> LogFrac);
+      t3_q   <= TW'((pm[1] + AddE1) >>> LogFrac);
+      p4_q   <= TW'((pm[2] + AddOne) >>> LogFrac);
+      mant_q <= TW'((pm[3] + Half) >>> LogFrac);
+      // stage 7: (x + 2^(s-1)) >>> s = ((x >>> (s - 1)) + 1) >>> 1
+      shift_q <= VW'(prod >> sh_q[6]);
+      zero_q[7] <= zero_q[6] || scale_q[6] == '0;
     end
   end
 
-  // Stage 6.
-  // mant scale < 2^47, shifted right by 14 .. 61 (ei clamped to [MinEi, 16]; outside, C is
-  // 0 or saturated below).
-  logic signed [63:0] ei5, v;
-  assign ei5 = 64'(ei_q[5]);
-  assign v = specular_setup_pkg::rshift_round64(pm[4],
-                                                32'(LogFrac) - 32'(ei5 > 64'sd16 ? 64'sd16 : ei5 < MinEi ? MinEi : ei5));
+  // Stage 8.
+  logic [VW-1:0] v;
+  assign v = (shift_q + VW'(1)) >> 1;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
-      if (scale_q[5] == '0 || ei5 < MinEi) begin
+      if (zero_q[7]) begin
         c_o   <= '0;
         sat_o <= 1'b0;
-      end else if (ei5 > 64'sd16 || v > MaxCode) begin
-        c_o   <= CBits'(MaxCode);
+      end else if (big_q[7] || |v[VW-1:CBits]) begin
+        c_o   <= '1;
         sat_o <= 1'b1;
       end else begin
-        c_o   <= CBits'(v);
+        c_o   <= v[CBits-1:0];
         sat_o <= 1'b0;
       end
     end

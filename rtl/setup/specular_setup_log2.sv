@@ -7,11 +7,14 @@
 // gives a 12-bit reciprocal r_i of the interval of mant and -log2 r_i; e = mant r_i - 1,
 // |e| < 2^-10, and log2(1 + e) = e (L1 + e (L2 + e L3)).
 //
-//   stage 1  p and mant (leading-one position); both ROMs are read
-//   stage 2  e = mant r_i - 1             stages 3, 4: the Horner steps
-//   stage 5  (p - 44) + (-log2 r_i) + e (...)
-// Stages: specular_setup_pkg::LogStages. A non-positive a gives a defined, meaningless
-// value (the setup does not use it). en_i freezes every stage. No reset.
+//   stage 1  p, the leading one's position (its shift and p - 44 are constants per p)
+//   stage 2  mant, a shifted left; both ROMs are read
+//   stage 3  e = mant r_i - 1             stages 4, 5: the Horner steps
+//   stage 6  (p - 44) + (-log2 r_i) + e (...)
+// Each stage holds one carry chain at most (docs/setup_hw.md#the-lean-datapath): a
+// rounding and an added constant or integer part are one addend. Stages:
+// specular_setup_pkg::LogStages. A non-positive a gives a defined, meaningless value (the
+// setup does not use it). en_i freezes every stage. No reset.
 
 `include "specular_assert.svh"
 
@@ -38,30 +41,64 @@ module specular_setup_log2 #(
   localparam int LogFrac   = specular_setup_pkg::LogFrac;
   localparam int AddrBits  = specular_setup_pkg::LogAddrBits;
   localparam int RecipFrac = specular_setup_pkg::LogRecipFrac;
-  localparam int Stages    = 5;
+  localparam int Stages    = 6;
   localparam int EW        = LogFrac - AddrBits + 2;  // e: |e| < 2^-10, Q30
   localparam int TW        = LogFrac + 2;             // the Horner terms: |t| < 2
 
+  if (AmpW < UnitFrac + 3) begin : gen_width_check
+    `SPEC_PARAM_ERROR("specular_setup_log2: AmpW must be at least UnitFrac + 3")
+  end
   if (Stages != specular_setup_pkg::LogStages) begin : gen_stage_check
     `SPEC_PARAM_ERROR("specular_setup_log2: specular_setup_pkg::LogStages disagrees with the stages built here")
   end
 
-  // Stage 1.
-  logic signed [31:0]   p_d;
-  logic [UnitFrac:0]    mant_d;  // [2^44, 2^45)
+  localparam int LzW       = $clog2(AmpW);
+  localparam int PTop      = AmpW - 2 - UnitFrac;  // p - 44 for lz = 0
+  localparam int ES        = UnitFrac + RecipFrac - LogFrac;  // e's rounding shift
+  // The added constants with the rounding half (see the header).
+  localparam logic signed [63:0] AddE  = (64'sd1 <<< (ES - 1)) - (64'sd1 <<< (UnitFrac + RecipFrac));
+  localparam logic signed [63:0] Half  = 64'sd1 <<< (LogFrac - 1);
+  localparam logic signed [63:0] AddL2 = (specular_setup_pkg::L2 <<< LogFrac) + Half;
+  localparam logic signed [63:0] AddL1 = (specular_setup_pkg::L1 <<< LogFrac) + Half;
+
+  // Stage 1: the left shift lz that puts the leading one at bit AmpW - 2 (a leading-zero
+  // count as a binary tree: log2 depth, where a priority loop is a chain as long as a) and
+  // a != 0. Stage 2: mant is the top UnitFrac + 1 bits below the sign there (the bits shifted
+  // out at the bottom truncated, as host::fixed::log2_unit's right shift), and p - 44 =
+  // AmpW - 2 - 44 - lz, or -45 for a = 0.
+  localparam int LL = $clog2(AmpW - 1);  // the tree's levels
+  localparam int LN = 1 << LL;           // its leaves: the bits below the sign, zero-padded
+  logic [LN-1:0] lead;
+  // Node n of level l at any_t[l LN + n] (a one below it) and lz_t[(l LN + n) LzW +: LzW]
+  // (its leading zeros); flat, as Yosys 0.23 reads no multidimensional packed arrays.
+  logic [(LL+1)*LN-1:0]     any_t;
+  logic [(LL+1)*LN*LzW-1:0] lz_t;
+  assign lead = {a_i[AmpW-2:0], (LN - AmpW + 1)'(0)};
   always_comb begin
-    p_d = -1;
-    for (int b = 0; b < AmpW - 1; b++) begin
-      if (a_i[b]) p_d = b;
+    any_t = '0;
+    lz_t  = '0;
+    for (int n = 0; n < LN; n++) begin
+      any_t[n] = lead[LN-1-n];
     end
-    if (p_d <= UnitFrac) begin
-      mant_d = (UnitFrac + 1)'(a_i <<< (UnitFrac - p_d));
-    end else begin
-      mant_d = (UnitFrac + 1)'(a_i >>> (p_d - UnitFrac));
+    for (int l = 1; l <= LL; l++) begin
+      for (int n = 0; n < (LN >> l); n++) begin
+        any_t[l*LN + n] = any_t[(l-1)*LN + 2*n] | any_t[(l-1)*LN + 2*n + 1];
+        lz_t[(l*LN + n)*LzW +: LzW] = any_t[(l-1)*LN + 2*n] ? lz_t[((l-1)*LN + 2*n)*LzW +: LzW]
+                                      : lz_t[((l-1)*LN + 2*n + 1)*LzW +: LzW] | LzW'(1 << (l - 1));
+      end
     end
   end
-  logic signed [31:0] p_rel;
-  assign p_rel = p_d - 32'(UnitFrac);
+  logic [AmpW-2:0]      a_q;
+  logic [LzW-1:0]       lz_q;
+  logic                 nz_q;
+  logic [AmpW-2:0]      a_norm;
+  logic [UnitFrac:0]    mant_d;  // [2^44, 2^45)
+  assign a_norm = a_q << lz_q;
+  assign mant_d = a_norm[AmpW-2 -: UnitFrac + 1];
+  logic signed [31:0] p_rel;  // p - 44
+  assign p_rel = nz_q ? 32'(PTop) - 32'(lz_q) : -32'(UnitFrac + 1);
+  logic unused_norm;  // below mant: truncated; the sign (a > 0)
+  assign unused_norm = ^{a_norm[AmpW-3-UnitFrac:0], a_i[AmpW-1]};
   logic [AddrBits-1:0] idx;
   assign idx = mant_d[UnitFrac-1 -: AddrBits];
   logic [RecipFrac-1:0] recip;   // r_i < 2^12
@@ -74,11 +111,11 @@ module specular_setup_log2 #(
   );
 
   logic [UnitFrac:0]   mant_q;
-  logic signed [EW-1:0] e_q, e_q4, e_q5;  // e, then beside the Horner steps
-  logic signed [TW-1:0] t3_q, t4_q;
-  logic signed [LogW-1:0] base_q [2:4];   // (p - 44) 2^30 + (-log2 r_i), beside them too
+  logic signed [EW-1:0] e_q, e_q5, e_q6;  // e, then beside the Horner steps
+  logic signed [TW-1:0] t4_q, t5_q;
+  logic signed [LogW-1:0] base_q [3:5];   // (p - 44) 2^30 + (-log2 r_i), beside them too
   logic signed [LogW-1:0] p_q;
-  // The four products: mant recip, e L3, e t3, e t4.
+  // The four products: mant recip, e L3, e t4, e t5.
   logic signed [63:0] pm [4];
   if (SetupII > 1) begin : gen_fold
     localparam int FA = 35, FB = 52, FN = 4;  // recip or e (A) times mant, L3 or t (B): 2 x 3 tiles
@@ -88,8 +125,8 @@ module specular_setup_log2 #(
     logic [FN*FA-1:0]      f_a;
     logic [FN*FB-1:0]      f_b;
     logic [FN*(FA+FB)-1:0] f_p, f_pc;
-    assign f_a = {FA'(e_q5), FA'(e_q4), FA'(e_q), FA'({1'b0, recip})};
-    assign f_b = {FB'(t4_q), FB'(t3_q), FB'(specular_setup_pkg::L3), FB'({1'b0, mant_q})};
+    assign f_a = {FA'(e_q6), FA'(e_q5), FA'(e_q), FA'({1'b0, recip})};
+    assign f_b = {FB'(t5_q), FB'(t4_q), FB'(specular_setup_pkg::L3), FB'({1'b0, mant_q})};
     specular_setup_fmul #(.N(FN), .ABits(FA), .BBits(FB), .TileBits(TileBits), .SetupII(SetupII)) u_fmul (
       .clk_i (clk_i), .en_i (en_i), .a_i (f_a), .b_i (f_b), .p_o (f_p), .pc_o (f_pc));
     for (genvar i = 0; i < FN; i++) begin : gen_lane
@@ -100,28 +137,32 @@ module specular_setup_log2 #(
   end else begin : gen_inline
     assign pm[0] = specular_setup_pkg::mul64(64'(mant_q), 64'(recip));
     assign pm[1] = specular_setup_pkg::mul64(64'(e_q), specular_setup_pkg::L3);
-    assign pm[2] = specular_setup_pkg::mul64(64'(e_q4), 64'(t3_q));
-    assign pm[3] = specular_setup_pkg::mul64(64'(e_q5), 64'(t4_q));
+    assign pm[2] = specular_setup_pkg::mul64(64'(e_q5), 64'(t4_q));
+    assign pm[3] = specular_setup_pkg::mul64(64'(e_q6), 64'(t5_q));
   end
+  // Stage 6's addend: the integer part and the rounding half side by side, 2^30 base + 2^29.
+  logic signed [LogW+LogFrac-1:0] last_sum;
+  assign last_sum = (LogW + LogFrac)'(pm[3]) + {base_q[5], 1'b1, (LogFrac - 1)'(0)};
   always_ff @(posedge clk_i) begin
     if (en_i) begin
+      a_q    <= a_i[AmpW-2:0];
+      lz_q   <= lz_t[LL*LN*LzW +: LzW];
+      nz_q   <= any_t[LL*LN];
+      // stage 2
       mant_q <= mant_d;
       p_q    <= LogW'(p_rel) <<< LogFrac;
-      // stage 2
-      e_q       <= EW'(specular_setup_pkg::rshift_round64(pm[0] - (64'sd1 <<< (UnitFrac + RecipFrac)),
-                                                      UnitFrac + RecipFrac - LogFrac));
-      base_q[2] <= p_q + LogW'(value);
-      // stages 3 and 4
-      t3_q      <= TW'(specular_setup_pkg::L2 +
-                   specular_setup_pkg::rshift_round64(pm[1], LogFrac));
-      base_q[3] <= base_q[2];
-      t4_q      <= TW'(specular_setup_pkg::L1 +
-                   specular_setup_pkg::rshift_round64(pm[2], LogFrac));
+      // stage 3
+      e_q       <= EW'((pm[0] + AddE) >>> ES);
+      base_q[3] <= p_q + LogW'(value);
+      // stages 4 and 5
+      t4_q      <= TW'((pm[1] + AddL2) >>> LogFrac);
       base_q[4] <= base_q[3];
-      e_q4      <= e_q;
-      e_q5      <= e_q4;
-      // stage 5
-      log2_o    <= base_q[4] + LogW'(specular_setup_pkg::rshift_round64(pm[3], LogFrac));
+      t5_q      <= TW'((pm[2] + AddL1) >>> LogFrac);
+      base_q[5] <= base_q[4];
+      e_q5      <= e_q;
+      e_q6      <= e_q5;
+      // stage 6
+      log2_o    <= LogW'(last_sum >>> LogFrac);
     end
   end
 endmodule

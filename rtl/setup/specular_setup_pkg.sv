@@ -58,8 +58,8 @@ package specular_setup_pkg;
   // ---- Stage counts (each block checks its own at elaboration) ----
   localparam int NormStages   = 9;                // specular_setup_norm
   localparam int CordicStages = 1 + CordicIters;  // specular_setup_cordic: half turn + iterations
-  localparam int LogStages    = 5;                // specular_setup_log2: A -> log2 A
-  localparam int ExpStages    = 6;                // specular_setup_exp2: n log2 A -> C
+  localparam int LogStages    = 6;                // specular_setup_log2: A -> log2 A
+  localparam int ExpStages    = 8;                // specular_setup_exp2: n log2 A -> C
 
   // round(atan(2^-i) 2^50); from i = 17 on it is 2^(50 - i) exactly.
   function automatic logic signed [63:0] atan_q(input int i);

@@ -9,8 +9,8 @@
 // `ifdef FORMAL; this file is not in the filelist rtl/specular.f.
 //
 // ABSTRACTION (in scripts/formal.sh setup, documented in docs/formal.md): the script
-// cuts the arithmetic datapath where it reaches the descriptor (the wires c_96, psi0_96,
-// dpsi_96, a_pos_96, opp_h_96, n_96, len_96 and the status flags become free values every
+// cuts the arithmetic datapath where it reaches the descriptor (the wires c_99, psi0_99,
+// dpsi_99, a_pos_99, opp_h_99, n_99, len_99 and the status flags become free values every
 // clock) and removes the logic left without a reader. What remains is the control: the
 // input register's valid, the valid delay line, the tag's delay line, the output buffer.
 // No property below constrains a cut value, so the proof covers the real datapath.
@@ -52,9 +52,13 @@
 module specular_setup_fv #(
   parameter int VecBits = 18,
   parameter int TagBits = 2,
-  // Registers after the input register (the core's tau of the descriptor, TC = 96); set by
+  // 0 specular_setup; 1 specular_setup_lean (SetupII = 1) with its delay lines in registers
+  // (RamLines = 0), whose probes read the stage registers; the ring buffers' outputs are the
+  // register lines' clock for clock (specular_delay, proven by scripts/formal.sh delay).
+  parameter bit Lean    = 1'b0,
+  // Registers after the input register (the core's tau of the descriptor, TC = 99); set by
   // scripts/formal.sh setup from the length of the valid delay line.
-  parameter int Depth   = 96,
+  parameter int Depth   = 99,
   // specular_setup's fixed register formats (the widths of its ports)
   localparam int CBits     = specular_setup_pkg::SpanCBits,
   localparam int AngleBits = specular_setup_pkg::SpanAngleBits,
@@ -70,16 +74,30 @@ module specular_setup_fv #(
   input  logic                 f_pick_i
 );
 
-  specular_setup #(
-    .VecBits (VecBits),
-    .TagBits (TagBits)
-  ) u_dut (
-    .clk_i         (clk_i),
-    .rst_ni        (rst_ni),
-    `SPECULAR_GEO_PORT_MAP,
-    `SPECULAR_SPAN_MAP(_o, _i, span_, _o, _i),
-    .span_status_o (span_status_o)
-  );
+  if (Lean) begin : gen_lean
+    specular_setup_lean #(
+      .VecBits  (VecBits),
+      .TagBits  (TagBits),
+      .RamLines (1'b0)
+    ) u_dut (
+      .clk_i         (clk_i),
+      .rst_ni        (rst_ni),
+      `SPECULAR_GEO_PORT_MAP,
+      `SPECULAR_SPAN_MAP(_o, _i, span_, _o, _i),
+      .span_status_o (span_status_o)
+    );
+  end else begin : gen_q44
+    specular_setup #(
+      .VecBits (VecBits),
+      .TagBits (TagBits)
+    ) u_dut (
+      .clk_i         (clk_i),
+      .rst_ni        (rst_ni),
+      `SPECULAR_GEO_PORT_MAP,
+      `SPECULAR_SPAN_MAP(_o, _i, span_, _o, _i),
+      .span_status_o (span_status_o)
+    );
+  end
 
 `ifdef FORMAL
   // Latency: from the accept cycle to the cycle the span is on the output (input register,
@@ -91,7 +109,9 @@ module specular_setup_fv #(
   localparam int StreakBits = $clog2(Latency + 2);
   localparam int GeoBits    = `SPECULAR_GEO_DATA_BITS;
   localparam int SpanBits   = CBits + 2 * AngleBits + NBits + LenBits + TagBits + 3;
-  localparam int OutW       = LenBits + NBits + TagBits + 3;  // u_dly_out: {len, n, tag, 3 flags}
+  // The sideband line's stage: {len, n, tag, flags}, 3 flags (u_dly_out) or the lean's 2 (u_dly_side).
+  localparam int Flags      = Lean ? 2 : 3;
+  localparam int OutW       = LenBits + NBits + TagBits + Flags;
 
   logic accept, xfer;
   assign accept = geo_valid_i && geo_ready_o;
@@ -198,7 +218,7 @@ module specular_setup_fv #(
   assign vld = {p_vline, p_vld0};
   assign tag[TagBits-1:0] = p_tag0;
   for (genvar j = 1; j <= Depth; j++) begin : gen_tag
-    assign tag[j*TagBits +: TagBits] = p_oline[(j-1)*OutW + 3 +: TagBits];
+    assign tag[j*TagBits +: TagBits] = p_oline[(j-1)*OutW + Flags +: TagBits];
   end
   logic [TagBits-1:0] head_tag, tail_tag;
   assign head_tag = p_head[3 +: TagBits];
