@@ -143,7 +143,7 @@ module specular_setup_exp2 #(
       for (int s = 3; s <= 7; s++) begin
         sh_q[s] <= sh_q[s-1];
       end
-      // stages 2 .. 5: the Horner steps
+      // the Horner steps and mant
       t2_q   <= TW'((pm[0] + AddE2) >>> LogFrac);
       t3_q   <= TW'((pm[1] + AddE1) >>> LogFrac);
       p4_q   <= TW'((pm[2] + AddOne) >>> LogFrac);

@@ -59,6 +59,10 @@ module specular_setup_lean #(
   parameter     LogValueFile = "roms/setup/log_value.hex",
   parameter     Exp2File     = "roms/setup/exp2.hex",
   parameter     RecipLenFile = "roms/setup/recip_len.hex",
+  // The long delay lines of Reset = 0 as block-RAM rings (specular_delay Ram = 1); 0 keeps
+  // them in registers, the view of the formal harness (rtl/setup/formal/specular_setup_fv.sv),
+  // whose probes read the stages (docs/formal.md#specular_delay-the-ring-buffer).
+  parameter bit RamLines     = 1'b1,
   localparam int CBits       = specular_setup_pkg::SpanCBits,
   localparam int AngleBits   = specular_setup_pkg::SpanAngleBits,
   localparam int NBits       = specular_setup_pkg::SpanNBits,
@@ -264,11 +268,11 @@ module specular_setup_lean #(
   // ---- step 3: m, q, hm (TM -> TQ) ----
   logic [3*MW-1:0]      m_q;
   logic [3*VecBits-1:0] he_m, he_q2, he_gp;
-  specular_delay #(.Width(3 * VecBits), .Depth(TM), .Reset(1'b0), .Ram(1'b1)) u_dly_he_m (
+  specular_delay #(.Width(3 * VecBits), .Depth(TM), .Reset(1'b0), .Ram(RamLines)) u_dly_he_m (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (he_q), .q_o (he_m));
-  specular_delay #(.Width(3 * VecBits), .Depth(TQ - TM), .Reset(1'b0), .Ram(1'b1)) u_dly_he_q (
+  specular_delay #(.Width(3 * VecBits), .Depth(TQ - TM), .Reset(1'b0), .Ram(RamLines)) u_dly_he_q (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (he_m), .q_o (he_q2));
-  specular_delay #(.Width(3 * VecBits), .Depth(LQ), .Reset(1'b0), .Ram(1'b1)) u_dly_he_gp (
+  specular_delay #(.Width(3 * VecBits), .Depth(LQ), .Reset(1'b0), .Ram(RamLines)) u_dly_he_gp (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (he_q2), .q_o (he_gp));
   logic signed [2*MW-1:0]        mm [3];
   logic signed [VecBits+MW-1:0]  hem [3];
@@ -310,12 +314,12 @@ module specular_setup_lean #(
   always_ff @(posedge clk_i) begin
     if (adv) opposite_normals_q <= q_q < QW'(64'sd1 <<< (2 * F - specular_setup_lean_pkg::OppNormLog2));
   end
-  specular_delay #(.Width(1), .Depth(TQ + LQ - TON), .Reset(1'b0), .Ram(1'b1)) u_dly_oppn_gp (
+  specular_delay #(.Width(1), .Depth(TQ + LQ - TON), .Reset(1'b0), .Ram(RamLines)) u_dly_oppn_gp (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (opposite_normals_q), .q_o (opp_n_gp));
 
   // ---- G' = q He - 2 hm m (TQ -> TGP), block-normalized (TG1) ----
   logic [3*MW-1:0]  m_gq;
-  specular_delay #(.Width(3 * MW), .Depth(TQ - TM), .Reset(1'b0), .Ram(1'b1)) u_dly_m (
+  specular_delay #(.Width(3 * MW), .Depth(TQ - TM), .Reset(1'b0), .Ram(RamLines)) u_dly_m (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (m_q), .q_o (m_gq));
   logic [3*GPW-1:0] gp_q;
   for (genvar i = 0; i < 3; i++) begin : gen_gp
@@ -350,13 +354,13 @@ module specular_setup_lean #(
 
   // N1 beside: to TG1 (s), TS (s N1), TG (H1 x G's partner N1 x H1), TCH (p kept since TX2).
   logic [3*U-1:0] n1_g1, n1_s, n1_g, h1_g;
-  specular_delay #(.Width(3 * U), .Depth(TG1 - TN), .Reset(1'b0), .Ram(1'b1)) u_dly_n1_g1 (
+  specular_delay #(.Width(3 * U), .Depth(TG1 - TN), .Reset(1'b0), .Ram(RamLines)) u_dly_n1_g1 (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n1u), .q_o (n1_g1));
-  specular_delay #(.Width(3 * U), .Depth(TS - TG1), .Reset(1'b0), .Ram(1'b1)) u_dly_n1_s (
+  specular_delay #(.Width(3 * U), .Depth(TS - TG1), .Reset(1'b0), .Ram(RamLines)) u_dly_n1_s (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n1_g1), .q_o (n1_s));
-  specular_delay #(.Width(3 * U), .Depth(TG - TS), .Reset(1'b0), .Ram(1'b1)) u_dly_n1_g (
+  specular_delay #(.Width(3 * U), .Depth(TG - TS), .Reset(1'b0), .Ram(RamLines)) u_dly_n1_g (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n1_s), .q_o (n1_g));
-  specular_delay #(.Width(3 * U), .Depth(TG - TN), .Reset(1'b0), .Ram(1'b1)) u_dly_h1_g (
+  specular_delay #(.Width(3 * U), .Depth(TG - TN), .Reset(1'b0), .Ram(RamLines)) u_dly_h1_g (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (h1u), .q_o (h1_g));
 
   // ---- s = rshift_round(G'.N1, 26) (TG1 -> TS) ----
@@ -384,7 +388,7 @@ module specular_setup_lean #(
 
   // ---- G = block_normalize(G' - rshift_round(s N1, 25)) (TS -> TG) ----
   logic [3*BlkW-1:0] gpn_s;
-  specular_delay #(.Width(3 * BlkW), .Depth(TS + LSN + 1 - TG1), .Reset(1'b0), .Ram(1'b1)) u_dly_gpn (
+  specular_delay #(.Width(3 * BlkW), .Depth(TS + LSN + 1 - TG1), .Reset(1'b0), .Ram(RamLines)) u_dly_gpn (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (gpn), .q_o (gpn_s));
   logic [3*GVW-1:0] gv_q;
   for (genvar i = 0; i < 3; i++) begin : gen_gv
@@ -494,7 +498,7 @@ module specular_setup_lean #(
       .clk_i (clk_i), .en_i (adv), .a_i (xb), .b_i (xb), .p_o (xxp));
   end
   logic signed [BlkW-1:0] x_d;  // x at TXC + LX
-  specular_delay #(.Width(BlkW), .Depth(LX), .Reset(1'b0), .Ram(1'b1)) u_dly_x_d (
+  specular_delay #(.Width(BlkW), .Depth(LX), .Reset(1'b0), .Ram(RamLines)) u_dly_x_d (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (xb), .q_o (x_d));
   // c.c (f - 1) < x^2 with f = 2^K: c.c >= 2^(60 - K) makes the left side exceed x^2 <= 2^56;
   // below, the left side fits 60 bits.
@@ -529,9 +533,9 @@ module specular_setup_lean #(
 
   // ---- step 5: c := p for opposite halfway vectors; c_hat, N1.u, |c| (TD -> TNU) ----
   logic [3*BlkW-1:0] c_td, p_td, csel_q, c_nu, p_nu;
-  specular_delay #(.Width(3 * BlkW), .Depth(TD - TXC), .Reset(1'b0), .Ram(1'b1)) u_dly_c_td (
+  specular_delay #(.Width(3 * BlkW), .Depth(TD - TXC), .Reset(1'b0), .Ram(RamLines)) u_dly_c_td (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (cb), .q_o (c_td));
-  specular_delay #(.Width(3 * BlkW), .Depth(TD - TX2), .Reset(1'b0), .Ram(1'b1)) u_dly_p_td (
+  specular_delay #(.Width(3 * BlkW), .Depth(TD - TX2), .Reset(1'b0), .Ram(RamLines)) u_dly_p_td (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (p2_q), .q_o (p_td));
   always_ff @(posedge clk_i) begin
     if (adv) csel_q <= opposite_halfway_q ? p_td : c_td;
@@ -541,9 +545,9 @@ module specular_setup_lean #(
     .clk_i (clk_i), .en_i (adv),
     .x_i (csel_q[0 +: BlkW]), .y_i (csel_q[BlkW +: BlkW]), .z_i (csel_q[2*BlkW +: BlkW]),
     .x_o (ch[0 +: U]), .y_o (ch[U +: U]), .z_o (ch[2*U +: U]));
-  specular_delay #(.Width(3 * BlkW), .Depth(TCH - TCS), .Reset(1'b0), .Ram(1'b1)) u_dly_c_nu (
+  specular_delay #(.Width(3 * BlkW), .Depth(TCH - TCS), .Reset(1'b0), .Ram(RamLines)) u_dly_c_nu (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (csel_q), .q_o (c_nu));
-  specular_delay #(.Width(3 * BlkW), .Depth(TCH - TD), .Reset(1'b0), .Ram(1'b1)) u_dly_p_nu (
+  specular_delay #(.Width(3 * BlkW), .Depth(TCH - TD), .Reset(1'b0), .Ram(RamLines)) u_dly_p_nu (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (p_td), .q_o (p_nu));
   logic signed [U+BlkW-1:0] chp [3], chc [3];
   for (genvar i = 0; i < 3; i++) begin : gen_nu
@@ -565,7 +569,7 @@ module specular_setup_lean #(
     end
   end
   logic flat_nu;
-  specular_delay #(.Width(1), .Depth(TNU - 1 - TD), .Reset(1'b0), .Ram(1'b1)) u_dly_flat_nu (
+  specular_delay #(.Width(1), .Depth(TNU - 1 - TD), .Reset(1'b0), .Ram(RamLines)) u_dly_flat_nu (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (flat_q), .q_o (flat_nu));
   localparam int DW = U + BlkW + 2;
   logic signed [DW-1:0] nu01_q, nu2_q, nus_q, cl01_q, cl2_q, cls_q;
@@ -585,9 +589,9 @@ module specular_setup_lean #(
 
   // ---- step 6: the angles (TNU -> TCOR) ----
   logic signed [BlkW-1:0] x_nu, cos_nu;
-  specular_delay #(.Width(BlkW), .Depth(TNU - TXC), .Reset(1'b0), .Ram(1'b1)) u_dly_x_nu (
+  specular_delay #(.Width(BlkW), .Depth(TNU - TXC), .Reset(1'b0), .Ram(RamLines)) u_dly_x_nu (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (xb), .q_o (x_nu));
-  specular_delay #(.Width(BlkW), .Depth(TNU - (TX2 + 1)), .Reset(1'b0), .Ram(1'b1)) u_dly_cos_nu (
+  specular_delay #(.Width(BlkW), .Depth(TNU - (TX2 + 1)), .Reset(1'b0), .Ram(RamLines)) u_dly_cos_nu (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (cos_x3), .q_o (cos_nu));
   logic signed [CW-1:0] gamma_raw, lambda;
   if (SetupII > 1) begin : gen_cordic_fold
@@ -657,7 +661,7 @@ module specular_setup_lean #(
     if (adv) log2_a2_q <= log2_a - LogW'(64'sd1 <<< (LogFrac + 3));
   end
   logic [NBits-1:0] n_l;
-  specular_delay #(.Width(NBits), .Depth(TL + 1), .Reset(1'b0), .Ram(1'b1)) u_dly_n_l (
+  specular_delay #(.Width(NBits), .Depth(TL + 1), .Reset(1'b0), .Ram(RamLines)) u_dly_n_l (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (n_q), .q_o (n_l));
   logic signed [NBits+LogW:0] nl;
   if (SetupII > 1) begin : gen_nl_fold
@@ -673,23 +677,23 @@ module specular_setup_lean #(
     if (adv) e_q <= ExpW'((nl + (NBits + LogW + 1)'(1)) >>> 1);
   end
   logic [CBits-1:0] scale_e, c_cc, c_out;
-  specular_delay #(.Width(CBits), .Depth(TE), .Reset(1'b0), .Ram(1'b1)) u_dly_scale (
+  specular_delay #(.Width(CBits), .Depth(TE), .Reset(1'b0), .Ram(RamLines)) u_dly_scale (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (scale_q), .q_o (scale_e));
   logic sat_unused;
   specular_setup_exp2 #(.CBits(CBits), .SetupII(SetupII), .TileBits(TileBits), .Exp2File(Exp2File)) u_exp2 (
     .clk_i (clk_i), .en_i (adv), .e_i (e_q), .scale_i (scale_e), .c_o (c_cc), .sat_o (sat_unused));
-  specular_delay #(.Width(CBits), .Depth(TOUT - TCC), .Reset(1'b0), .Ram(1'b1)) u_dly_c (
+  specular_delay #(.Width(CBits), .Depth(TOUT - TCC), .Reset(1'b0), .Ram(RamLines)) u_dly_c (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (c_cc), .q_o (c_out));
   logic a_pos_out;
-  specular_delay #(.Width(1), .Depth(TOUT - TA), .Reset(1'b0), .Ram(1'b1)) u_dly_apos (
+  specular_delay #(.Width(1), .Depth(TOUT - TA), .Reset(1'b0), .Ram(RamLines)) u_dly_apos (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (a2_q != '0), .q_o (a_pos_out));
 
   // ---- step 7: gamma, psi0, dpsi (TCOR -> TOUT) ----
   logic flat_cor, opph_cor;
-  specular_delay #(.Width(2), .Depth(TCOR - TD), .Reset(1'b0), .Ram(1'b1)) u_dly_flags_cor (
+  specular_delay #(.Width(2), .Depth(TCOR - TD), .Reset(1'b0), .Ram(RamLines)) u_dly_flags_cor (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({flat_q, opposite_halfway_q}), .q_o ({flat_cor, opph_cor}));
   logic [LenBits-1:0] len_cor;
-  specular_delay #(.Width(LenBits), .Depth(TCOR), .Reset(1'b0), .Ram(1'b1)) u_dly_len_cor (
+  specular_delay #(.Width(LenBits), .Depth(TCOR), .Reset(1'b0), .Ram(RamLines)) u_dly_len_cor (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (len_q), .q_o (len_cor));
   logic signed [CW-1:0] gamma_q;
   logic [AngleBits-1:0] psi0_q, psi0_out;
@@ -722,10 +726,10 @@ module specular_setup_lean #(
     specular_setup_smul #(.ABits(GW), .BBits(RLW), .TileBits(TileBits)) u_gr (
       .clk_i (clk_i), .en_i (adv), .a_i (gamma2), .b_i ($signed({1'b0, recip})), .p_o (gr));
   end
-  specular_delay #(.Width(4), .Depth(LDP), .Reset(1'b0), .Ram(1'b1)) u_dly_lshift (
+  specular_delay #(.Width(4), .Depth(LDP), .Reset(1'b0), .Ram(RamLines)) u_dly_lshift (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (lshift_q), .q_o (lshift_dp));
   logic len_zero_dp, len_zero_q;
-  specular_delay #(.Width(1), .Depth(LDP + 1), .Reset(1'b0), .Ram(1'b1)) u_dly_lenz (
+  specular_delay #(.Width(1), .Depth(LDP + 1), .Reset(1'b0), .Ram(RamLines)) u_dly_lenz (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (len_cor == '0), .q_o (len_zero_dp));
   // dpsi = rshift_round(2 gamma recip, GammaFrac + RecipLenFrac + s - AngleFrac): a shift by
   // that minus one, then the rounding.
@@ -740,9 +744,9 @@ module specular_setup_lean #(
     end
   end
   logic [AngleBits-1:0] dpsi_out;
-  specular_delay #(.Width(AngleBits), .Depth(TOUT - TDP), .Reset(1'b0), .Ram(1'b1)) u_dly_dpsi (
+  specular_delay #(.Width(AngleBits), .Depth(TOUT - TDP), .Reset(1'b0), .Ram(RamLines)) u_dly_dpsi (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (dpsi_q), .q_o (dpsi_out));
-  specular_delay #(.Width(AngleBits), .Depth(TOUT - TCOR - 1), .Reset(1'b0), .Ram(1'b1)) u_dly_psi0 (
+  specular_delay #(.Width(AngleBits), .Depth(TOUT - TCOR - 1), .Reset(1'b0), .Ram(RamLines)) u_dly_psi0 (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (psi0_q), .q_o (psi0_out));
 
   // ---- TOUT: the descriptor and the status; then the output buffer ----
@@ -752,12 +756,12 @@ module specular_setup_lean #(
   logic [TagBits-1:0] tag_out;
   specular_delay #(.Width(1), .Depth(TOUT), .Reset(1'b1)) u_dly_valid (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (in_valid_q), .q_o (valid_out));
-  specular_delay #(.Width(LenBits + NBits + TagBits + 2), .Depth(TOUT), .Reset(1'b0), .Ram(1'b1)) u_dly_side (
+  specular_delay #(.Width(LenBits + NBits + TagBits + 2), .Depth(TOUT), .Reset(1'b0), .Ram(RamLines)) u_dly_side (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv),
     .d_i ({len_q, n_q, tag_q, invalid, undefined}), .q_o ({len_out, n_out, tag_out, invalid_out, undefined_out}));
-  specular_delay #(.Width(1), .Depth(TOUT - TON), .Reset(1'b0), .Ram(1'b1)) u_dly_oppn_out (
+  specular_delay #(.Width(1), .Depth(TOUT - TON), .Reset(1'b0), .Ram(RamLines)) u_dly_oppn_out (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (opposite_normals_q), .q_o (oppn_out));
-  specular_delay #(.Width(1), .Depth(TOUT - TCOR), .Reset(1'b0), .Ram(1'b1)) u_dly_opph_out (
+  specular_delay #(.Width(1), .Depth(TOUT - TCOR), .Reset(1'b0), .Ram(RamLines)) u_dly_opph_out (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (opph_cor), .q_o (opph_out));
   logic               zero_out;
   logic [2:0]         status_out;
