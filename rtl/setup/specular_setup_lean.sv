@@ -595,33 +595,50 @@ module specular_setup_lean #(
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (cos_x3), .q_o (cos_nu));
   logic signed [CW-1:0] gamma_raw, lambda;
   if (SetupII > 1) begin : gen_cordic_fold
-    // Started at the slot's first clock (the operands hold still for the slot), done by its
-    // last (cordic_per_clock), the angles registered on the advance, which also takes them.
-    localparam int PerClock = specular_setup_lean_pkg::cordic_per_clock(SetupII);
-    logic                 g_in_ready, g_valid, l_in_ready, l_valid;
-    logic signed [CW-1:0] g_angle, l_angle;
-    specular_setup_cordic_iter #(.W(CW), .Frac(CFrac), .Iters(specular_setup_lean_pkg::CordicIters),
-                                 .PerClock(PerClock)) u_cordic_gamma (
-      .clk_i (clk_i), .rst_ni (rst_ni), .in_valid_i (slot_first), .in_ready_o (g_in_ready),
-      .x_i (CW'(x_nu) <<< Up), .y_i (CW'(cl_q) <<< Up),
-      .out_valid_o (g_valid), .out_ready_i (adv), .angle_o (g_angle));
-    specular_setup_cordic_iter #(.W(CW), .Frac(CFrac), .Iters(specular_setup_lean_pkg::CordicIters),
-                                 .PerClock(PerClock)) u_cordic_lambda (
-      .clk_i (clk_i), .rst_ni (rst_ni), .in_valid_i (slot_first), .in_ready_o (l_in_ready),
-      .x_i (CW'(cos_nu) <<< Up), .y_i (CW'(nu_q) <<< Up),
-      .out_valid_o (l_valid), .out_ready_i (adv), .angle_o (l_angle));
+    // Copies of one iteration a clock take the slots' vectors in turn (ld_q, advanced with
+    // the slots): the copy loaded at a slot's first clock (the operands hold still for the
+    // slot) retires on the advance Copies - 1 slots later, its angle registered there. A copy
+    // never loaded since reset (the first Copies - 1 slots) retires nothing.
+    localparam int Copies = specular_setup_lean_pkg::cordic_copies(SetupII);
+    localparam int CpW    = (Copies > 1) ? $clog2(Copies) : 1;
+    logic [CpW-1:0] ld_q, rt;
+    logic [Copies-1:0] fed_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        ld_q  <= '0;
+        fed_q <= '0;
+      end else begin
+        if (slot_first) fed_q[ld_q] <= 1'b1;
+        if (adv) ld_q <= (ld_q == CpW'(Copies - 1)) ? '0 : ld_q + CpW'(1);
+      end
+    end
+    assign rt = (ld_q == CpW'(Copies - 1)) ? '0 : ld_q + CpW'(1);
+    logic [Copies-1:0]    g_in_ready, g_valid, l_in_ready, l_valid;
+    logic [Copies*CW-1:0] g_angle, l_angle;
+    for (genvar u = 0; u < Copies; u++) begin : gen_copy
+      specular_setup_cordic_iter #(.W(CW), .Frac(CFrac), .Iters(specular_setup_lean_pkg::CordicIters),
+                                   .PerClock(1)) u_cordic_gamma (
+        .clk_i (clk_i), .rst_ni (rst_ni), .in_valid_i (slot_first && ld_q == CpW'(u)),
+        .in_ready_o (g_in_ready[u]), .x_i (CW'(x_nu) <<< Up), .y_i (CW'(cl_q) <<< Up),
+        .out_valid_o (g_valid[u]), .out_ready_i (adv && rt == CpW'(u)), .angle_o (g_angle[u*CW +: CW]));
+      specular_setup_cordic_iter #(.W(CW), .Frac(CFrac), .Iters(specular_setup_lean_pkg::CordicIters),
+                                   .PerClock(1)) u_cordic_lambda (
+        .clk_i (clk_i), .rst_ni (rst_ni), .in_valid_i (slot_first && ld_q == CpW'(u)),
+        .in_ready_o (l_in_ready[u]), .x_i (CW'(cos_nu) <<< Up), .y_i (CW'(nu_q) <<< Up),
+        .out_valid_o (l_valid[u]), .out_ready_i (adv && rt == CpW'(u)), .angle_o (l_angle[u*CW +: CW]));
+    end
     always_ff @(posedge clk_i) begin
       if (adv) begin
-        gamma_raw <= g_angle;
-        lambda    <= l_angle;
+        gamma_raw <= g_angle[rt*CW +: CW];
+        lambda    <= l_angle[rt*CW +: CW];
       end
     end
     logic unused_cordic;
     assign unused_cordic = ^{g_in_ready, g_valid, l_in_ready, l_valid};
-    // The schedule's premise: each slot's vector is accepted at its first clock and its angle
-    // is there at the advance.
-    `SPEC_ASSERT(CordicStarts_A, !slot_first || (g_in_ready && l_in_ready), clk_i, rst_ni)
-    `SPEC_ASSERT(CordicDone_A, !adv || (g_valid && l_valid), clk_i, rst_ni)
+    // The schedule's premise: each slot's copy takes its vector at the slot's first clock, and
+    // the retiring copy's angle is there at the advance.
+    `SPEC_ASSERT(CordicStarts_A, !slot_first || (g_in_ready[ld_q] && l_in_ready[ld_q]), clk_i, rst_ni)
+    `SPEC_ASSERT(CordicDone_A, !adv || !fed_q[rt] || (g_valid[rt] && l_valid[rt]), clk_i, rst_ni)
   end else begin : gen_cordic_pipe
     logic unused_first;
     assign unused_first = slot_first;

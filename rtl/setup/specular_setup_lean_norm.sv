@@ -145,17 +145,18 @@ module specular_setup_lean_norm #(
   // of k, exact) and s - 1 = RFrac + B/2 - Frac - 1 - k for u_i below.
   localparam int KZ = 2 * (B / 2);
   logic [7:0] msh_d, msh_q, ush_d;
-  always_comb begin
-    // sq = 0: k = B/2 (any k: m = 0 and the output 0)
-    msh_d = 8'(KZ - 2 * (B / 2));
-    ush_d = 8'(RFrac + B / 2 - Frac - 1 - B / 2);
-    for (int b = 0; b < SqW; b++) begin
-      if (sq_q[b]) begin
-        msh_d = 8'(KZ - 2 * k_of(b));
-        ush_d = 8'(RFrac + B / 2 - Frac - 1 - k_of(b));
-      end
-    end
+  // {msh, ush} of the top set bit b of sq: a tree, not a priority loop (specular_setup_prio).
+  logic [SqW*16-1:0] sh_of;
+  for (genvar b = 0; b < SqW; b++) begin : gen_sh
+    assign sh_of[b*16 +: 16] = {8'(KZ - 2 * k_of(b)), 8'(RFrac + B / 2 - Frac - 1 - k_of(b))};
   end
+  logic       sq_any;
+  logic [15:0] sh_t;
+  specular_setup_prio #(.W(SqW), .VW(16)) u_top (
+    .a_i (sq_q), .values_i (sh_of), .any_o (sq_any), .value_o (sh_t));
+  // sq = 0: k = B/2 (any k: m = 0 and the output 0)
+  assign msh_d = sq_any ? sh_t[15:8] : 8'(KZ - 2 * (B / 2));
+  assign ush_d = sq_any ? sh_t[7:0] : 8'(RFrac + B / 2 - Frac - 1 - B / 2);
   logic [SqW-1:0]    sq_k;
   logic [SqW+KZ-1:0] sq_z;
   logic [B-1:0]      m_q;

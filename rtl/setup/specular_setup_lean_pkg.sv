@@ -147,14 +147,16 @@ package specular_setup_lean_pkg;
 
   localparam int BlockStages  = 4;                // specular_setup_lean_block
   localparam int CordicStages = 1 + CordicIters;  // specular_setup_lean_cordic
-  // Folded (SetupII > 1) a CORDIC is a specular_setup_cordic_iter started at the slot's first
-  // clock, its angle registered on the advance: one stage. Its result comes Rounds + 1 clocks
-  // after the start, so Rounds <= setup_ii - 2.
-  function automatic int cordic_stages(input int setup_ii);
-    cordic_stages = (setup_ii > 1) ? 1 : CordicStages;
+  // Folded (SetupII > 1) a CORDIC is cordic_copies specular_setup_cordic_iter instances of one
+  // iteration a clock (one carry chain a stage) taking the slots' vectors in turn: a copy
+  // starts at its slot's first clock and has cordic_copies slots for its Iters + 1 clocks up
+  // to its result, registered on the advance of the last of them (copies * setup_ii - 1 >=
+  // Iters + 1). The CORDIC takes cordic_copies stages.
+  function automatic int cordic_copies(input int setup_ii);
+    cordic_copies = (CordicIters + 2 + setup_ii - 1) / setup_ii;
   endfunction
-  function automatic int cordic_per_clock(input int setup_ii);
-    cordic_per_clock = (CordicIters + setup_ii - 3) / (setup_ii - 2);
+  function automatic int cordic_stages(input int setup_ii);
+    cordic_stages = (setup_ii > 1) ? cordic_copies(setup_ii) : CordicStages;
   endfunction
 
 endpackage

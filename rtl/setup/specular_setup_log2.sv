@@ -61,33 +61,19 @@ module specular_setup_log2 #(
   localparam logic signed [63:0] AddL2 = (specular_setup_pkg::L2 <<< LogFrac) + Half;
   localparam logic signed [63:0] AddL1 = (specular_setup_pkg::L1 <<< LogFrac) + Half;
 
-  // Stage 1: the left shift lz that puts the leading one at bit AmpW - 2 (a leading-zero
-  // count as a binary tree: log2 depth, where a priority loop is a chain as long as a) and
-  // a != 0. Stage 2: mant is the top UnitFrac + 1 bits below the sign there (the bits shifted
-  // out at the bottom truncated, as host::fixed::log2_unit's right shift), and p - 44 =
-  // AmpW - 2 - 44 - lz, or -45 for a = 0.
-  localparam int LL = $clog2(AmpW - 1);  // the tree's levels
-  localparam int LN = 1 << LL;           // its leaves: the bits below the sign, zero-padded
-  logic [LN-1:0] lead;
-  // Node n of level l at any_t[l LN + n] (a one below it) and lz_t[(l LN + n) LzW +: LzW]
-  // (its leading zeros); flat, as Yosys 0.23 reads no multidimensional packed arrays.
-  logic [(LL+1)*LN-1:0]     any_t;
-  logic [(LL+1)*LN*LzW-1:0] lz_t;
-  assign lead = {a_i[AmpW-2:0], (LN - AmpW + 1)'(0)};
-  always_comb begin
-    any_t = '0;
-    lz_t  = '0;
-    for (int n = 0; n < LN; n++) begin
-      any_t[n] = lead[LN-1-n];
-    end
-    for (int l = 1; l <= LL; l++) begin
-      for (int n = 0; n < (LN >> l); n++) begin
-        any_t[l*LN + n] = any_t[(l-1)*LN + 2*n] | any_t[(l-1)*LN + 2*n + 1];
-        lz_t[(l*LN + n)*LzW +: LzW] = any_t[(l-1)*LN + 2*n] ? lz_t[((l-1)*LN + 2*n)*LzW +: LzW]
-                                      : lz_t[((l-1)*LN + 2*n + 1)*LzW +: LzW] | LzW'(1 << (l - 1));
-      end
-    end
+  // Stage 1: the left shift lz that puts the leading one at bit AmpW - 2 (specular_setup_prio:
+  // log2 depth, where a priority loop is a chain as long as a) and a != 0. Stage 2: mant is
+  // the top UnitFrac + 1 bits below the sign there (the bits shifted out at the bottom
+  // truncated, as host::fixed::log2_unit's right shift), and p - 44 = AmpW - 2 - 44 - lz, or
+  // -45 for a = 0.
+  logic [(AmpW-1)*LzW-1:0] lz_of;
+  for (genvar b = 0; b < AmpW - 1; b++) begin : gen_lz
+    assign lz_of[b*LzW +: LzW] = LzW'(AmpW - 2 - b);
   end
+  logic [LzW-1:0] lz_d;
+  logic           nz_d;
+  specular_setup_prio #(.W(AmpW - 1), .VW(LzW)) u_lead (
+    .a_i (a_i[AmpW-2:0]), .values_i (lz_of), .any_o (nz_d), .value_o (lz_d));
   logic [AmpW-2:0]      a_q;
   logic [LzW-1:0]       lz_q;
   logic                 nz_q;
@@ -146,8 +132,8 @@ module specular_setup_log2 #(
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       a_q    <= a_i[AmpW-2:0];
-      lz_q   <= lz_t[LL*LN*LzW +: LzW];
-      nz_q   <= any_t[LL*LN];
+      lz_q   <= nz_d ? lz_d : '0;
+      nz_q   <= nz_d;
       // stage 2
       mant_q <= mant_d;
       p_q    <= LogW'(p_rel) <<< LogFrac;
