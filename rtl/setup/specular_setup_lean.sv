@@ -13,7 +13,7 @@
 // bits carry what specular_setup needs 44 for, and every product fits a few 18x18 DSP tiles.
 // Every product is a specular_setup_smul (pipelined; TileBits picks DSP tiles or a LUT
 // tree) and every rounding, sum or comparison has a stage of its own: no stage holds more
-// than one carry chain plus multiplexers (the reused log2 and exp2 blocks excepted).
+// than one carry chain plus multiplexers (log2 and exp2: a product inline at SetupII = 1).
 //
 // Pipeline (tau: registers after the input register; the localparams T* below):
 //   0        the input register; step 1, decode: invalid_input, undefined_halfway
@@ -38,8 +38,9 @@
 // with room in the output buffer, so geo_ready_o stays a register function and one span
 // enters per slot). A product then takes one stage: every product is a lane of a shared
 // specular_setup_fmul (three here, one per normalizer, one each in log2 and exp2) whose
-// tile multipliers, ceil(lanes / per-multiplier lanes) of them, fall as K grows; the CORDICs
-// are specular_setup_cordic_iter instances run within the slot. The stage counts are the
+// tile multipliers, ceil(lanes / per-multiplier lanes) of them, fall as K grows; each CORDIC
+// is ceil(30 / K) specular_setup_cordic_iter copies of one iteration a clock, taking the
+// slots' vectors in turn. The stage counts are the
 // package's functions of K, so the T* below and every delay line follow.
 
 `include "specular_assert.svh"

@@ -47,15 +47,11 @@ module specular_setup_lean_block #(
     end
   end
   // The top set bit: a tree, not a priority loop (specular_setup_prio); 0 for all_d = 0.
-  logic [InW*8-1:0] pos;
-  for (genvar b = 0; b < InW; b++) begin : gen_pos
-    assign pos[b*8 +: 8] = 8'(b);
-  end
-  logic any_d;
-  logic [7:0] top_t;
-  specular_setup_prio #(.W(InW), .VW(8)) u_top (
-    .a_i (all_d), .values_i (pos), .any_o (any_d), .value_o (top_t));
-  assign top_d = any_d ? top_t : '0;
+  localparam int PL = (InW > 1) ? $clog2(InW) : 1;
+  logic          any_d;
+  logic [PL-1:0] top_t;
+  specular_setup_prio #(.W(InW), .FromTop(1'b0)) u_top (.a_i (all_d), .any_o (any_d), .value_o (top_t));
+  assign top_d = any_d ? 8'(top_t) : '0;
 
   for (genvar i = 0; i < N; i++) begin : gen_comp
     logic signed [InW+Bits-1:0] x2;

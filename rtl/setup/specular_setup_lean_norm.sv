@@ -136,27 +136,34 @@ module specular_setup_lean_norm #(
   end
 
   // ---- +3, +4: k and m ----
-  // k for the top set bit b of sq.
-  function automatic int k_of(input int b);
-    k_of = (B - b - 1) >= 0 ? (B - b - 1) / 2 : -((b + 2 - B) / 2);
-  endfunction
-  // The encoder gives the two shift amounts k sets rather than k, so neither shifter has a
+  // Stage +3 gives the two shift amounts k sets rather than k, so neither shifter has a
   // subtraction in front of it: m = (sq 2^KZ) >> (KZ - 2k) (one right shifter for both signs
   // of k, exact) and s - 1 = RFrac + B/2 - Frac - 1 - k for u_i below.
   localparam int KZ = 2 * (B / 2);
   logic [7:0] msh_d, msh_q, ush_d;
-  // {msh, ush} of the top set bit b of sq: a tree, not a priority loop (specular_setup_prio).
-  logic [SqW*16-1:0] sh_of;
-  for (genvar b = 0; b < SqW; b++) begin : gen_sh
-    assign sh_of[b*16 +: 16] = {8'(KZ - 2 * k_of(b)), 8'(RFrac + B / 2 - Frac - 1 - k_of(b))};
-  end
-  logic       sq_any;
-  logic [15:0] sh_t;
-  specular_setup_prio #(.W(SqW), .VW(16)) u_top (
-    .a_i (sq_q), .values_i (sh_of), .any_o (sq_any), .value_o (sh_t));
+  // The top set bit b of sq: a tree, not a priority loop (specular_setup_prio). With
+  // k = floor((B - 1 - b) / 2) and par = (B - 1 + b) mod 2 (so B - 1 - b - par = 2k), each
+  // amount is one sum with par as its carry in: KZ - 2k = b + (KZ - B + 1) + par and
+  // RFrac + B/2 - Frac - 1 - k = (b + par + 2 (RFrac + B/2 - Frac - 1) - B + 1) / 2.
+  localparam int PL = $clog2(SqW);
+  localparam int C1 = RFrac + B / 2 - Frac - 1;
+  logic          sq_any;
+  logic [PL-1:0] sq_top;
+  logic          par;
+  specular_setup_prio #(.W(SqW), .FromTop(1'b0)) u_top (.a_i (sq_q), .any_o (sq_any), .value_o (sq_top));
+  assign par = sq_top[0] ^ 1'(B - 1);
+  // KZ - 2k lies in 0 .. 2 InW + 2 and is even: its half j in JW bits; the other in 1 .. InW + 2.
+  // The narrow sums keep the shifters below as narrow as the amounts.
+  localparam int JW = $clog2(InW + 2);
+  localparam int UW = $clog2(InW + 3);
+  logic [PL:0] j2, ush2;
+  assign j2   = (PL + 1)'(sq_top) + (PL + 1)'(KZ - B + 1) + (PL + 1)'(par);
+  assign ush2 = (PL + 1)'(sq_top) + (PL + 1)'(2 * C1 - B + 1) + (PL + 1)'(par);
   // sq = 0: k = B/2 (any k: m = 0 and the output 0)
-  assign msh_d = sq_any ? sh_t[15:8] : 8'(KZ - 2 * (B / 2));
-  assign ush_d = sq_any ? sh_t[7:0] : 8'(RFrac + B / 2 - Frac - 1 - B / 2);
+  assign msh_d = sq_any ? 8'({JW'(j2[PL:1]), 1'b0}) : 8'(KZ - 2 * (B / 2));
+  assign ush_d = sq_any ? 8'(UW'(ush2[PL:1])) : 8'(C1 - B / 2);
+  logic unused_sums;  // even sums; the amounts' ranges
+  assign unused_sums = ^{j2[0], ush2[0], j2[PL:1] >> JW, ush2[PL:1] >> UW};
   logic [SqW-1:0]    sq_k;
   logic [SqW+KZ-1:0] sq_z;
   logic [B-1:0]      m_q;

@@ -66,14 +66,11 @@ module specular_setup_log2 #(
   // the top UnitFrac + 1 bits below the sign there (the bits shifted out at the bottom
   // truncated, as host::fixed::log2_unit's right shift), and p - 44 = AmpW - 2 - 44 - lz, or
   // -45 for a = 0.
-  logic [(AmpW-1)*LzW-1:0] lz_of;
-  for (genvar b = 0; b < AmpW - 1; b++) begin : gen_lz
-    assign lz_of[b*LzW +: LzW] = LzW'(AmpW - 2 - b);
-  end
-  logic [LzW-1:0] lz_d;
-  logic           nz_d;
-  specular_setup_prio #(.W(AmpW - 1), .VW(LzW)) u_lead (
-    .a_i (a_i[AmpW-2:0]), .values_i (lz_of), .any_o (nz_d), .value_o (lz_d));
+  localparam int PL = $clog2(AmpW - 1);  // specular_setup_prio's count
+  logic [PL-1:0] lz_d;
+  logic          nz_d;
+  specular_setup_prio #(.W(AmpW - 1), .FromTop(1'b1)) u_lead (
+    .a_i (a_i[AmpW-2:0]), .any_o (nz_d), .value_o (lz_d));
   logic [AmpW-2:0]      a_q;
   logic [LzW-1:0]       lz_q;
   logic                 nz_q;
@@ -132,7 +129,7 @@ module specular_setup_log2 #(
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       a_q    <= a_i[AmpW-2:0];
-      lz_q   <= nz_d ? lz_d : '0;
+      lz_q   <= nz_d ? LzW'(lz_d) : '0;
       nz_q   <= nz_d;
       // stage 2
       mant_q <= mant_d;

@@ -1,48 +1,58 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
-// specular_setup_prio: the value of the most significant set bit of a_i, from a table of one
-// value per bit (values_i, constants at the caller): the leading one's position, a shift
-// amount, the constants a normalizer derives from it. A binary tree of 2:1 multiplexers,
-// clog2(W) deep, each node taking its upper half's value when that half has a set bit: a
-// priority loop over the bits ("if (a[b]) v = value(b)") maps to a chain of W multiplexers,
-// which was the critical path of the lean setup after place and route
-// (docs/setup_hw.md#the-lean-rtl). Combinational; any_o low (a_i = 0) leaves value_o
-// undefined for the caller to replace.
+// specular_setup_prio: the most significant set bit of a_i, as its index (FromTop = 0) or as
+// the count of zeros above it (FromTop = 1): a binary tree, clog2(W) levels of 2:1
+// multiplexers, node l holding l bits (its upper half's count when that half has a set bit,
+// else the lower half's with the top bit set). A priority loop over the bits ("if (a[b]) v =
+// b") maps to a chain of W multiplexers, which was the critical path of the lean setup after
+// place and route (docs/setup_hw.md#the-lean-rtl). The input is zero-padded to a power of two
+// at the top (FromTop = 0: the index is the count's complement) or at the bottom (FromTop = 1).
+// Combinational; any_o low (a_i = 0) leaves value_o undefined for the caller to replace.
 
 module specular_setup_prio #(
-  parameter int W  = 8,   // a_i's bits
-  parameter int VW = 8    // a value's bits
+  parameter int W       = 8,     // a_i's bits
+  parameter bit FromTop = 1'b0,
+  localparam int L      = (W > 1) ? $clog2(W) : 1
 ) (
-  input  logic [W-1:0]    a_i,
-  input  logic [W*VW-1:0] values_i,  // bit b's value at [b*VW +: VW]
-  output logic            any_o,
-  output logic [VW-1:0]   value_o
+  input  logic [W-1:0] a_i,
+  output logic         any_o,
+  output logic [L-1:0] value_o
 );
 
-  localparam int L  = (W > 1) ? $clog2(W) : 1;  // the tree's levels
-  localparam int LN = 1 << L;                   // its leaves: a_i's bits, zero-padded
+  localparam int LN = 1 << L;  // the tree's leaves
 
-  // Node n of level l covers bits n 2^l .. (n + 1) 2^l - 1: any_t[l LN + n] (a set bit) and
-  // val_t[(l LN + n) VW +: VW]; flat, as Yosys 0.23 reads no multidimensional packed arrays.
-  logic [(L+1)*LN-1:0]    any_t;
-  logic [(L+1)*LN*VW-1:0] val_t;
+  logic [LN-1:0] lead;
+  if (FromTop) begin : gen_pad_bottom
+    if (LN > W) begin : gen_pad
+      assign lead = {a_i, (LN - W)'(0)};
+    end else begin : gen_full
+      assign lead = a_i;
+    end
+  end else begin : gen_pad_top
+    assign lead = LN'(a_i);
+  end
+
+  // Node n of level l covers leaves n 2^l .. (n + 1) 2^l - 1 counted from the top: any_t[l LN + n]
+  // (a set bit) and its zeros above it, lz_t[(l LN + n) L +: L] (l bits used); flat, as Yosys
+  // 0.23 reads no multidimensional packed arrays.
+  logic [(L+1)*LN-1:0]   any_t;
+  logic [(L+1)*LN*L-1:0] lz_t;
   always_comb begin
     any_t = '0;
-    val_t = '0;
-    for (int n = 0; n < W; n++) begin
-      any_t[n]           = a_i[n];
-      val_t[n*VW +: VW]  = values_i[n*VW +: VW];
+    lz_t  = '0;
+    for (int n = 0; n < LN; n++) begin
+      any_t[n] = lead[LN-1-n];
     end
     for (int l = 1; l <= L; l++) begin
       for (int n = 0; n < (LN >> l); n++) begin
         any_t[l*LN + n] = any_t[(l-1)*LN + 2*n] | any_t[(l-1)*LN + 2*n + 1];
-        val_t[(l*LN + n)*VW +: VW] = any_t[(l-1)*LN + 2*n + 1] ? val_t[((l-1)*LN + 2*n + 1)*VW +: VW]
-                                                               : val_t[((l-1)*LN + 2*n)*VW +: VW];
+        lz_t[(l*LN + n)*L +: L] = any_t[(l-1)*LN + 2*n] ? lz_t[((l-1)*LN + 2*n)*L +: L]
+                                  : lz_t[((l-1)*LN + 2*n + 1)*L +: L] | L'(1 << (l - 1));
       end
     end
   end
   assign any_o   = any_t[L*LN];
-  assign value_o = val_t[L*LN*VW +: VW];
+  assign value_o = FromTop ? lz_t[L*LN*L +: L] : ~lz_t[L*LN*L +: L];
 
 endmodule
