@@ -173,22 +173,22 @@ target_setup() {
   harness=rtl/setup/formal/specular_setup_fv.sv
   top=specular_setup_fv
   # The valid delay line: one bit per register after the input register (the tau, 99).
-  measure="Depth u_dut.u_dly_valid.gen_regs.line_q 1 0"
+  measure="Depth gen_q44.u_dut.u_dly_valid.gen_regs.line_q 1 0"
   bmc_depth="Depth + 8"
   bmc_depth_mutant="Depth + 8"
   bmc_engine=sat
-  probes="p_vld0 u_dut.in_valid_q
-p_tag0 u_dut.tag_q
-p_vline u_dut.u_dly_valid.gen_regs.line_q
-p_oline u_dut.u_dly_out.gen_regs.line_q
-p_count u_dut.u_out_buf.count_q
-p_head u_dut.u_out_buf.head_q
-p_tail u_dut.u_out_buf.tail_q
-p_adv u_dut.u_out_buf.adv_q"
+  probes="p_vld0 gen_q44.u_dut.in_valid_q
+p_tag0 gen_q44.u_dut.tag_q
+p_vline gen_q44.u_dut.u_dly_valid.gen_regs.line_q
+p_oline gen_q44.u_dut.u_dly_out.gen_regs.line_q
+p_count gen_q44.u_dut.u_out_buf.count_q
+p_head gen_q44.u_dut.u_out_buf.head_q
+p_tail gen_q44.u_dut.u_out_buf.tail_q
+p_adv gen_q44.u_dut.u_out_buf.adv_q"
   # The arithmetic datapath where it reaches the descriptor (tau 99), and the tau-0 flags.
-  cuts="u_dut.c_99 u_dut.psi0_99 u_dut.dpsi_99 u_dut.a_pos_99 u_dut.opp_h_99 u_dut.n_99
-u_dut.len_99 u_dut.invalid_99 u_dut.undefined_99 u_dut.opp_n_99 u_dut.invalid
-u_dut.undefined u_dut.opp_normals"
+  cuts="gen_q44.u_dut.c_99 gen_q44.u_dut.psi0_99 gen_q44.u_dut.dpsi_99 gen_q44.u_dut.a_pos_99 gen_q44.u_dut.opp_h_99 gen_q44.u_dut.n_99
+gen_q44.u_dut.len_99 gen_q44.u_dut.invalid_99 gen_q44.u_dut.undefined_99 gen_q44.u_dut.opp_n_99 gen_q44.u_dut.invalid
+gen_q44.u_dut.undefined gen_q44.u_dut.opp_normals"
   map=bits
   mutants="valid_no_reset rtl/setup/specular_setup.sv s/specular_delay #(.Width(1), .Depth(TC), .Reset(1'b1)) u_dly_valid/specular_delay #(.Width(1), .Depth(TC), .Reset(1'b0)) u_dly_valid/
 ready_ignores_stall rtl/setup/specular_setup.sv s/assign geo_ready_o = adv;/assign geo_ready_o = 1'b1;/
