@@ -10,9 +10,9 @@
 //   stage 1  ei, g; the ROM is read        stages 2, 3, 4: the Horner steps
 //   stage 5  mant = 2^(j/1024) 2^g         stage 6: mant scale registered
 //   stage 7  shifted by 29 - ei            stage 8: rounded (the last bit), saturated
-// Each stage holds one carry chain at most (docs/setup_hw.md#the-lean-datapath): a
-// rounding and an added constant are one addend, and the shift is decoded from ei in
-// stage 2, beside the Horner steps. Stages: specular_setup_pkg::ExpStages. en_i freezes
+// Each stage holds one carry chain at most (docs/setup_hw.md#the-lean-rtl): a rounding and
+// an added constant are one addend, and the shift is decoded from ei in stage 2, beside the
+// Horner steps. Stages: specular_setup_pkg::ExpStages. en_i freezes
 // every stage. No reset.
 
 `include "specular_assert.svh"
@@ -21,7 +21,8 @@ module specular_setup_exp2 #(
   parameter int CBits   = 16,
   parameter     Exp2File = "roms/setup/exp2.hex",
   // The lean setup's folding (as specular_setup_log2's): the five products share a
-  // specular_setup_fmul, each read before its unit's register. 1: the inline products.
+  // specular_setup_fmul, the Horner steps' read before its register, mant scale after it
+  // (stage 6). 1: the inline products.
   parameter int SetupII  = 1,
   parameter int TileBits = 18
 ) (
@@ -45,12 +46,11 @@ module specular_setup_exp2 #(
   localparam int PW       = TW + CBits;      // mant scale: 0 <= value < 2^(LogFrac + 1 + CBits)
   localparam int ShW      = $clog2(LogFrac - MinEi);  // the shift LogFrac - 1 - ei, 13 .. 60
   localparam int VW       = PW - (LogFrac - 1 - MaxEi) + 1;  // the shifted product, the sign bit 0
-  // The added constants with the rounding half: x 2^-30 rounded, plus k, is
-  // (x + k 2^30 + 2^29) >>> 30 (one carry chain).
-  localparam logic signed [63:0] Half = 64'sd1 <<< (LogFrac - 1);
-  localparam logic signed [63:0] AddE2 = (specular_setup_pkg::E2 <<< LogFrac) + Half;
-  localparam logic signed [63:0] AddE1 = (specular_setup_pkg::E1 <<< LogFrac) + Half;
-  localparam logic signed [63:0] AddOne = (64'sd1 <<< (2 * LogFrac)) + Half;
+  // Each Horner step's rounding and added constant, one addend (specular_setup_pkg::round_addend).
+  localparam logic signed [63:0] AddE2  = specular_setup_pkg::round_addend(specular_setup_pkg::E2, LogFrac);
+  localparam logic signed [63:0] AddE1  = specular_setup_pkg::round_addend(specular_setup_pkg::E1, LogFrac);
+  localparam logic signed [63:0] AddOne = specular_setup_pkg::round_addend(64'sd1 <<< LogFrac, LogFrac);
+  localparam logic signed [63:0] AddMant = specular_setup_pkg::round_addend(64'sd0, LogFrac);
 
   if (Stages != specular_setup_pkg::ExpStages) begin : gen_stage_check
     `SPEC_PARAM_ERROR("specular_setup_exp2: specular_setup_pkg::ExpStages disagrees with the stages built here")
@@ -147,7 +147,7 @@ module specular_setup_exp2 #(
       t2_q   <= TW'((pm[0] + AddE2) >>> LogFrac);
       t3_q   <= TW'((pm[1] + AddE1) >>> LogFrac);
       p4_q   <= TW'((pm[2] + AddOne) >>> LogFrac);
-      mant_q <= TW'((pm[3] + Half) >>> LogFrac);
+      mant_q <= TW'((pm[3] + AddMant) >>> LogFrac);
       // stage 7: (x + 2^(s-1)) >>> s = ((x >>> (s - 1)) + 1) >>> 1
       shift_q <= VW'(prod >> sh_q[6]);
       zero_q[7] <= zero_q[6] || scale_q[6] == '0;

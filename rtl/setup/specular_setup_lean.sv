@@ -158,8 +158,8 @@ module specular_setup_lean #(
     `SPEC_PARAM_ERROR("specular_setup_lean: the schedule's parallel multipliers disagree in latency")
   end
 
-  if (SetupII < 1 || (SetupII > 1 && SetupII < specular_setup_lean_pkg::FmulOverhead + 1)) begin : gen_ii_check
-    `SPEC_PARAM_ERROR("specular_setup_lean: SetupII must be 1 or >= FmulOverhead + 1 (5)")
+  if (SetupII < 1 || (SetupII > 1 && SetupII < specular_setup_lean_pkg::MinFoldII)) begin : gen_ii_check
+    `SPEC_PARAM_ERROR("specular_setup_lean: SetupII must be 1 or >= specular_setup_lean_pkg::MinFoldII (5)")
   end
 
   // The advance: the output buffer's room (a register) and, folded, the slot's last clock

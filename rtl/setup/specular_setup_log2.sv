@@ -7,12 +7,12 @@
 // gives a 12-bit reciprocal r_i of the interval of mant and -log2 r_i; e = mant r_i - 1,
 // |e| < 2^-10, and log2(1 + e) = e (L1 + e (L2 + e L3)).
 //
-//   stage 1  p, the leading one's position (its shift and p - 44 are constants per p)
-//   stage 2  mant, a shifted left; both ROMs are read
+//   stage 1  lz, the zeros above the leading one (specular_setup_prio)
+//   stage 2  mant, a shifted left by lz, and p - 44; both ROMs are read
 //   stage 3  e = mant r_i - 1             stages 4, 5: the Horner steps
 //   stage 6  (p - 44) + (-log2 r_i) + e (...)
-// Each stage holds one carry chain at most (docs/setup_hw.md#the-lean-datapath): a
-// rounding and an added constant or integer part are one addend. Stages:
+// Each stage holds one carry chain at most (docs/setup_hw.md#the-lean-rtl): a rounding and
+// an added constant or integer part are one addend. Stages:
 // specular_setup_pkg::LogStages. A non-positive a gives a defined, meaningless value (the
 // setup does not use it). en_i freezes every stage. No reset.
 
@@ -52,14 +52,12 @@ module specular_setup_log2 #(
     `SPEC_PARAM_ERROR("specular_setup_log2: specular_setup_pkg::LogStages disagrees with the stages built here")
   end
 
-  localparam int LzW       = $clog2(AmpW);
   localparam int PTop      = AmpW - 2 - UnitFrac;  // p - 44 for lz = 0
   localparam int ES        = UnitFrac + RecipFrac - LogFrac;  // e's rounding shift
-  // The added constants with the rounding half (see the header).
-  localparam logic signed [63:0] AddE  = (64'sd1 <<< (ES - 1)) - (64'sd1 <<< (UnitFrac + RecipFrac));
-  localparam logic signed [63:0] Half  = 64'sd1 <<< (LogFrac - 1);
-  localparam logic signed [63:0] AddL2 = (specular_setup_pkg::L2 <<< LogFrac) + Half;
-  localparam logic signed [63:0] AddL1 = (specular_setup_pkg::L1 <<< LogFrac) + Half;
+  // Each step's rounding and added constant, one addend (specular_setup_pkg::round_addend).
+  localparam logic signed [63:0] AddE  = specular_setup_pkg::round_addend(-(64'sd1 <<< (UnitFrac + RecipFrac - ES)), ES);
+  localparam logic signed [63:0] AddL2 = specular_setup_pkg::round_addend(specular_setup_pkg::L2, LogFrac);
+  localparam logic signed [63:0] AddL1 = specular_setup_pkg::round_addend(specular_setup_pkg::L1, LogFrac);
 
   // Stage 1: the left shift lz that puts the leading one at bit AmpW - 2 (specular_setup_prio:
   // log2 depth, where a priority loop is a chain as long as a) and a != 0. Stage 2: mant is
@@ -72,7 +70,7 @@ module specular_setup_log2 #(
   specular_setup_prio #(.W(AmpW - 1), .FromTop(1'b1)) u_lead (
     .a_i (a_i[AmpW-2:0]), .any_o (nz_d), .value_o (lz_d));
   logic [AmpW-2:0]      a_q;
-  logic [LzW-1:0]       lz_q;
+  logic [PL-1:0]        lz_q;
   logic                 nz_q;
   logic [AmpW-2:0]      a_norm;
   logic [UnitFrac:0]    mant_d;  // [2^44, 2^45)
@@ -129,7 +127,7 @@ module specular_setup_log2 #(
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       a_q    <= a_i[AmpW-2:0];
-      lz_q   <= nz_d ? LzW'(lz_d) : '0;
+      lz_q   <= nz_d ? lz_d : '0;
       nz_q   <= nz_d;
       // stage 2
       mant_q <= mant_d;

@@ -110,6 +110,12 @@ package specular_setup_pkg;
       rshift_round64 = (x + (64'sd1 <<< (s - 1))) >>> s;
     end
   endfunction
+  // The addend that rounds and adds in one carry chain: rshift_round64(x, s) + k equals
+  // (x + round_addend(k, s)) >>> s for s >= 1 (k 2^s is a multiple of 2^s), a constant when
+  // k is (log2's and exp2's Horner steps).
+  function automatic logic signed [63:0] round_addend(input logic signed [63:0] k, input int s);
+    round_addend = (k <<< s) + (64'sd1 <<< (s - 1));
+  endfunction
   function automatic logic signed [63:0] mul64(input logic signed [63:0] a, input logic signed [63:0] b);
     mul64 = a * b;
   endfunction

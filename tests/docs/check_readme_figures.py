@@ -180,6 +180,13 @@ def device_entry(d, config):
     return next(e for e in d.fpga["ecp5_runs"] if e.get("core") == "specular_stream" and e.get("config") == config)
 
 
+def hw_long_span_design(d, budget="b1"):
+    """The ECP5 entry of the device system the verdict picks at the budget on long spans (at each core's clock)."""
+    name = verdict_rows(d)[budget][_VERDICT_SPANS.index(16)]["hw_at_clock"]["name"]
+    return next(e for e in d.fpga["ecp5_runs"] if e.get("core") == "specular_system"
+                and f"SetupII={e.get('setup_ii', 1)}" in name)
+
+
 def positions(e):
     return e["lut4"] + 2 * e["ccu2c"]
 
@@ -221,11 +228,14 @@ FIGURES = [
     ranged(R, r"per-pixel Phong \(SLEEF\), per scene \| (\S+) to (\S+) x as fast \|",
            "software: device x phong_sleef, both at the best instruction set", lambda d, x: d.best(x)),
     (R, r"over the cancellation-free per-pixel Phong core \| (\S+) x \((\S+) x at each core's clock\); with the "
-        r"setup in hardware (\S+) x on spans of 8 pixels, (\S+) x on spans of 16 pixels or more \|",
+        r"setup in hardware (\S+) x on spans of 8 pixels, (\S+) x on spans of 16 pixels or more \((\S+) x at each "
+        r"core's clock\) \|",
      [("B1 verdict: host-setup device / best Phong, px per clock per part", verdict_figure("b1", 1, "host_ratio")),
       ("B1 verdict: the same at each core's clock", verdict_figure("b1", 1, "host_ratio_at_clock")),
       ("B1 verdict: hardware-setup device / best Phong, spans of 8", verdict_figure("b1", 8, "hw_ratio")),
-      ("B1 verdict: hardware-setup device / best Phong, spans of 16", verdict_figure("b1", 16, "hw_ratio"))]),
+      ("B1 verdict: hardware-setup device / best Phong, spans of 16", verdict_figure("b1", 16, "hw_ratio")),
+      ("B1 verdict: hardware-setup device / best Phong at each core's clock, spans of 16",
+       verdict_figure("b1", 16, "hw_ratio_at_clock"))]),
     (P, r"at B1 the device's stream gives (\S+) times the pixels per clock per part of the cancellation-free core "
         r"\((\S+) times at each core's clock\), at B3 (\S+) times \((\S+) times\)",
      [("B1 verdict ratio", verdict_figure("b1", 1, "host_ratio")),
@@ -245,6 +255,12 @@ FIGURES = [
      [("B1: hardware-setup device / Phong, spans of 1", verdict_figure("b1", 1, "hw_ratio")),
       ("B1: hardware-setup device / Phong, spans of 8", verdict_figure("b1", 8, "hw_ratio")),
       ("B1: hardware-setup device / Phong, spans of 16", verdict_figure("b1", 16, "hw_ratio"))]),
+    (P, r"At each core's clock \(the folded system\s+at (\S+) MHz, the cancellation-free core at (\S+) MHz\) the "
+        r"long-span figure is (\S+) times",
+     [("B1: the folded system's Fmax", lambda d: hw_long_span_design(d)["fmax_mhz"]),
+      ("cross_n1000 Fmax", lambda d: phong_entry(d, "cross_n1000")["fmax_mhz"]),
+      ("B1: hardware-setup device / Phong at each core's clock, spans of 16",
+       verdict_figure("b1", 16, "hw_ratio_at_clock"))]),
     (P, r"the cancellation-free core takes (\S+) MULT18X18D where the textbook core takes (\S+), and clocks at (\S+) "
         r"MHz where the textbook core clocks at (\S+) MHz",
      [("cross_n1000 MULT18X18D", lambda d: phong_entry(d, "cross_n1000")["mult18x18d"]),
