@@ -208,7 +208,7 @@ target_delay() {
   bmc_engine=abc
   prove_engine=pdr
   map=memory
-  mutants="read_one_late rtl/prim/specular_delay.sv s/rp_q <= wp_q + AW'(Words + 2 - Depth);/rp_q <= wp_q + AW'(Words + 1 - Depth);/"
+  mutants="read_one_late rtl/prim/specular_delay.sv s/rp_q <= wp_q + AW'(Words + 3 - Depth);/rp_q <= wp_q + AW'(Words + 2 - Depth);/"
   cex_ports="en_i d_i"
 }
 

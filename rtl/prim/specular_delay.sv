@@ -10,8 +10,10 @@
 //
 // Ram = 1 lets a long, wide line of Reset = 0 sit in block RAM instead of Width * Depth
 // flip-flops: a ring of 2^clog2(Depth) words, written at a free-running pointer on every
-// enabled edge, read (registered, same enable) at the word written Depth - 1 enabled edges
-// earlier, so q_o is the register chain's clock for clock, stalls included. The pointer
+// enabled edge, read (registered, same enable) at the word written Depth - 2 enabled edges
+// earlier, then registered once more in the fabric (same enable), so q_o is the register
+// chain's clock for clock, stalls included. The second register takes the RAM's slow
+// clock-to-output off the path to the line's user (docs/setup_hw.md#the-folded-lean-setup). The pointer
 // needs no reset (every value of it is a valid ring position), so rst_ni stays unused.
 // The style applies from RamMinDepth and RamMinBits on: a 36-bit-wide ECP5 DP16KD port
 // replaces about 36 * Depth flip-flops, so short lines stay in registers, and narrow ones
@@ -39,7 +41,7 @@ module specular_delay #(
     `SPEC_PARAM_ERROR("specular_delay: Width must be >= 1 and Depth >= 0")
   end
 
-  localparam bit InRam = Ram && !Reset && Depth >= RamMinDepth && Depth >= 2 && Width * Depth >= RamMinBits;
+  localparam bit InRam = Ram && !Reset && Depth >= RamMinDepth && Depth >= 3 && Width * Depth >= RamMinBits;
 
   // Three generate blocks of their own, not an else-if chain: the register style keeps its
   // hierarchical name gen_regs.line_q, which the formal harnesses read (scripts/formal.sh).
@@ -51,25 +53,31 @@ module specular_delay #(
   if (Depth > 0 && InRam) begin : gen_ram
     localparam int AW    = $clog2(Depth);
     localparam int Words = 1 << AW;
-    // The word read is never the word written in the same clock (Depth - 1 < Words):
+    // The word read is never the word written in the same clock (0 < Depth - 2 < Words):
     // no_rw_check spares Yosys the logic that resolves such a collision.
     (* no_rw_check *) logic [Width-1:0] mem [Words];
     logic [AW-1:0]    wp_q, rp_q;
-    logic [Width-1:0] q_q;
+    logic [Width-1:0] ram_q, q_q;
     logic             unused_rst;
     assign unused_rst = rst_ni;
-    // rp_q follows wp_q after the first enabled edge: the word written Depth - 1 edges before
-    // the next write (Depth - 1 < Words, so it never is the word being written).
+    // rp_q follows wp_q after the first enabled edge: the word written Depth - 2 edges before
+    // the next write, so that ram_q and q_q make Depth with it.
     always_ff @(posedge clk_i) begin
       if (en_i) begin
         wp_q <= wp_q + AW'(1);
-        rp_q <= wp_q + AW'(Words + 2 - Depth);
+        rp_q <= wp_q + AW'(Words + 3 - Depth);
       end
     end
     always_ff @(posedge clk_i) begin
       if (en_i) begin
         mem[wp_q] <= d_i;
-        q_q       <= mem[rp_q];
+        ram_q     <= mem[rp_q];
+      end
+    end
+    // Kept out of the block RAM: Yosys 0.23 maps no DP16KD output register (REGMODE stays NOREG).
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        q_q <= ram_q;
       end
     end
     assign q_o = q_q;
