@@ -82,7 +82,7 @@ module specular_setup_exp2 #(
   logic [ShW-1:0] sh_q [2:7];
   logic           zero_q [2:7], big_q [2:7];
   logic [PW-1:0]  prod;      // stage 6: mant scale
-  logic [VW-1:0]  shift_q;   // stage 7
+  logic [VW-1:0]  shift_d, shift_q;   // stage 7
   // The five products: g E3, g t2, g t3, 2^(j/1024) p4, mant scale.
   logic signed [63:0] pm [4];
   if (SetupII > 1) begin : gen_fold
@@ -149,10 +149,13 @@ module specular_setup_exp2 #(
       p4_q   <= TW'((pm[2] + AddOne) >>> LogFrac);
       mant_q <= TW'((pm[3] + AddMant) >>> LogFrac);
       // stage 7: (x + 2^(s-1)) >>> s = ((x >>> (s - 1)) + 1) >>> 1
-      shift_q <= VW'(prod >> sh_q[6]);
+      shift_q <= shift_d;
       zero_q[7] <= zero_q[6] || scale_q[6] == '0;
     end
   end
+
+  specular_setup_rshift #(.InW(PW), .OutW(VW), .SW(ShW), .Signed(1'b0)) u_shift (
+    .a_i (prod), .s_i (sh_q[6]), .y_o (shift_d));
 
   // Stage 8.
   logic [VW-1:0] v;

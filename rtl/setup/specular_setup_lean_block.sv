@@ -39,30 +39,31 @@ module specular_setup_lean_block #(
 
   logic [N*InW-1:0] x1_q, x2_q, mag_q;
   logic [InW-1:0]   all_d;
-  logic [7:0]       top_d, top_q;
   always_comb begin
     all_d = '0;
     for (int i = 0; i < N; i++) begin
       all_d = all_d | mag_q[i*InW +: InW];
     end
   end
-  // The top set bit: a tree, not a priority loop (specular_setup_prio); 0 for all_d = 0.
+  // The top set bit: a tree, not a priority loop (specular_setup_prio).
   localparam int PL = (InW > 1) ? $clog2(InW) : 1;
-  logic          any_d;
-  logic [PL-1:0] top_t;
-  specular_setup_prio #(.W(InW), .FromTop(1'b0)) u_top (.a_i (all_d), .any_o (any_d), .value_o (top_t));
-  assign top_d = any_d ? 8'(top_t) : '0;
+  // For all_d = 0 every x_i is 0 and any shift gives 0: the index needs no zero case.
+  logic          unused_any;
+  logic [PL-1:0] top_d, top_q;
+  specular_setup_prio #(.W(InW), .FromTop(1'b0)) u_top (.a_i (all_d), .any_o (unused_any), .value_o (top_d));
 
   for (genvar i = 0; i < N; i++) begin : gen_comp
     logic signed [InW+Bits-1:0] x2;
-    logic signed [YW-1:0]       y_q;
+    logic signed [YW-1:0]       y_d, y_q;
     assign x2 = {x2_q[i*InW +: InW], Bits'(0)};
+    specular_setup_rshift #(.InW(InW + Bits), .OutW(YW), .SW(PL), .Signed(1'b1)) u_shift (
+      .a_i (x2), .s_i (top_q), .y_o (y_d));
     always_ff @(posedge clk_i) begin
       if (en_i) begin
         // stage 1
         mag_q[i*InW +: InW] <= x_i[i*InW + InW - 1] ? InW'(-$signed(x_i[i*InW +: InW])) : x_i[i*InW +: InW];
         // stage 3 (the true value fits YW bits, so the truncation is exact)
-        y_q <= YW'(x2 >>> top_q);
+        y_q <= y_d;
         // stage 4
         x_o[i*OutW +: OutW] <= OutW'((y_q + YW'(1)) >>> 1);
       end

@@ -140,7 +140,6 @@ module specular_setup_lean_norm #(
   // subtraction in front of it: m = (sq 2^KZ) >> (KZ - 2k) (one right shifter for both signs
   // of k, exact) and s - 1 = RFrac + B/2 - Frac - 1 - k for u_i below.
   localparam int KZ = 2 * (B / 2);
-  logic [7:0] msh_d, msh_q, ush_d;
   // The top set bit b of sq: a tree, not a priority loop (specular_setup_prio). With
   // k = floor((B - 1 - b) / 2) and par = (B - 1 + b) mod 2 (so B - 1 - b - par = 2k), each
   // amount is one sum with par as its carry in: KZ - 2k = b + (KZ - B + 1) + par and
@@ -160,21 +159,28 @@ module specular_setup_lean_norm #(
   assign j2   = (PL + 1)'(sq_top) + (PL + 1)'(KZ - B + 1) + (PL + 1)'(par);
   assign ush2 = (PL + 1)'(sq_top) + (PL + 1)'(2 * C1 - B + 1) + (PL + 1)'(par);
   // sq = 0: k = B/2 (any k: m = 0 and the output 0)
-  assign msh_d = sq_any ? 8'({JW'(j2[PL:1]), 1'b0}) : 8'(KZ - 2 * (B / 2));
-  assign ush_d = sq_any ? 8'(UW'(ush2[PL:1])) : 8'(C1 - B / 2);
+  if (C1 - B / 2 < 0 || C1 - B / 2 >= (1 << UW)) begin : gen_ush_check
+    `SPEC_PARAM_ERROR("specular_setup_lean_norm: the shift of sq = 0 does not fit its UW bits")
+  end
+  logic [JW:0]   msh_d, msh_q;
+  logic [UW-1:0] ush_d;
+  assign msh_d = sq_any ? {JW'(j2[PL:1]), 1'b0} : (JW + 1)'(KZ - 2 * (B / 2));
+  assign ush_d = sq_any ? UW'(ush2[PL:1]) : UW'(C1 - B / 2);
   logic unused_sums;  // even sums; the amounts' ranges
   assign unused_sums = ^{j2[0], ush2[0], j2[PL:1] >> JW, ush2[PL:1] >> UW};
   logic [SqW-1:0]    sq_k;
   logic [SqW+KZ-1:0] sq_z;
-  logic [B-1:0]      m_q;
-  logic [7:0]        ush_q;
+  logic [B-1:0]      m_d, m_q;
+  logic [UW-1:0]     ush_q;
   assign sq_z = {sq_k, KZ'(0)};
+  specular_setup_rshift #(.InW(SqW + KZ), .OutW(B), .SW(JW + 1), .Signed(1'b0)) u_msh (
+    .a_i (sq_z), .s_i (msh_q), .y_o (m_d));
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       msh_q <= msh_d;
       ush_q <= ush_d;
       sq_k  <= sq_q;
-      m_q   <= B'(sq_z >> msh_q);
+      m_q   <= m_d;
     end
   end
 
@@ -279,13 +285,15 @@ module specular_setup_lean_norm #(
   logic [3*InW-1:0] v_r;
   specular_delay #(.Width(3 * InW), .Depth(TR), .Reset(1'b0), .Ram(1'b1)) u_dly_v (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i ({z_i, y_i, x_i}), .q_o (v_r));
-  logic [7:0] ush_u;
-  specular_delay #(.Width(8), .Depth(TR + LVr - TK), .Reset(1'b0), .Ram(1'b1)) u_dly_k (
+  logic [UW-1:0] ush_u;
+  specular_delay #(.Width(UW), .Depth(TR + LVr - TK), .Reset(1'b0), .Ram(1'b1)) u_dly_k (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (ush_q), .q_o (ush_u));
   logic signed [UnitW-1:0] u [3];
   for (genvar i = 0; i < 3; i++) begin : gen_scale
     logic signed [PW-1:0]      vr;
-    logic signed [UnitW+1:0]   y_q;
+    logic signed [UnitW+1:0]   y_d, y_q;
+    specular_setup_rshift #(.InW(PW), .OutW(UnitW + 2), .SW(UW), .Signed(1'b1)) u_ush (
+      .a_i (vr), .s_i (ush_u), .y_o (y_d));
     if (SetupII > 1) begin : gen_vr_fold
       assign f_a[(7 + i)*FA +: FA] = FA'($signed(v_r[i*InW +: InW]));
       assign f_b[(7 + i)*FB +: FB] = FB'($signed(r_q));
@@ -297,7 +305,7 @@ module specular_setup_lean_norm #(
     always_ff @(posedge clk_i) begin
       if (en_i) begin
         // s = RFrac + B/2 - Frac - k >= 3: the shift by s - 1, then the rounding.
-        y_q  <= (UnitW + 2)'(vr >>> ush_u);
+        y_q  <= y_d;
         u[i] <= UnitW'((y_q + (UnitW + 2)'(1)) >>> 1);
       end
     end
