@@ -10,15 +10,19 @@
 //
 // An operand is cut into unsigned low tiles of T - 1 bits and a signed top tile of at most
 // T bits (T = 18), so every tile product is one signed 18x18 product (registered tiles and
-// product: an ECP5 MULT18X18D) and no magnitude or sign is needed; an accumulator adds the
-// tile products shifted. A product is one chunk, or two (Q = 2, summed before p_o) when its
+// product: an ECP5 MULT18X18D) and no magnitude or sign is needed. The tiles go in the order
+// of their weight's diagonal i + j, so the accumulator only ever moves by one tile's weight:
+// where a diagonal ends, its low T - 1 bits are final and leave for a segment register, and
+// the accumulator shifts right by T - 1 (a fixed shift, AccW bits instead of a product-wide
+// adder behind a shifter of every diagonal). A product is one chunk, or two (Q = 2, summed before p_o) when its
 // tiles exceed a slot's steps; a multiplier owns whole chunks, P of them per slot, so the
 // unit has M = ceil(N Q / P) multipliers (specular_setup_lean_pkg::fmul_mults): the tile
 // count falls as SetupII grows. The clock of a slot (count c, restarted by en_i, held at
 // SetupII - 1 while the stage waits):
 //   c = s       tile step s into its multiplier's input registers
 //   c = 1 + s   its tile product registered
-//   c = 2 + s   accumulated (a chunk's last step moves the sum out and clears the sum)
+//   c = 2 + s   accumulated (a new diagonal first moves the low bits out; a chunk's last
+//               step moves the sum out and clears the sum)
 //   advance     p_o registered
 // s < P * H <= SetupII - specular_setup_lean_pkg::FmulOverhead. Exact, so bit-exact with
 // specular_setup_smul. No reset: the counter realigns at the first advance.
@@ -52,8 +56,44 @@ module specular_setup_fmul #(
   localparam int P     = specular_setup_lean_pkg::fmul_per_mult(ABits, BBits, TileBits, SetupII);
   localparam int M     = specular_setup_lean_pkg::fmul_mults(N, ABits, BBits, TileBits, SetupII);
   localparam int CW    = $clog2(SetupII);
-  localparam int DW    = $clog2(TA + TB);  // a tile's diagonal i + j, 0 .. TA + TB - 2
   localparam int TokenMinSteps = 12;
+  // The accumulator: a diagonal's at most min(TA, TB) tile products (each |p| <= 2^(2T - 2))
+  // plus the carry of the diagonals below it (< 2^(T + 1)) fit 2T + 2 signed bits for up to
+  // four tiles a diagonal; two more bits of margin.
+  localparam int AccW  = 2 * T + 4;
+
+  // Step s of a multiplier whose first chunk is k0: chunk k0 + s / H, its r-th tile in the
+  // diagonal order (a zero tile from TP on).
+  function automatic int step_r(input int s, input int k0);
+    step_r = ((k0 + s / H) % Q) * H + s % H;
+  endfunction
+  // The r-th tile (r < TP) in the order of i + j, then i: its index i TB + j.
+  function automatic int tile_at(input int r);
+    int n;
+    n       = 0;
+    tile_at = 0;
+    for (int d = 0; d < TA + TB - 1; d++) begin
+      for (int i = 0; i < TA; i++) begin
+        if (d - i >= 0 && d - i < TB) begin
+          if (n == r) tile_at = i * TB + d - i;
+          n = n + 1;
+        end
+      end
+    end
+  endfunction
+  // The first r on diagonal d: the tiles of the diagonals below it.
+  function automatic int diag_start(input int d);
+    diag_start = 0;
+    for (int e = 0; e < d; e++) begin
+      for (int i = 0; i < TA; i++) begin
+        if (e - i >= 0 && e - i < TB) diag_start = diag_start + 1;
+      end
+    end
+  endfunction
+  // The diagonal of the r-th tile; a zero tile (r >= TP) counts as the last tile's.
+  function automatic int diag_at(input int r);
+    diag_at = tile_at((r < TP) ? r : TP - 1) / TB + tile_at((r < TP) ? r : TP - 1) % TB;
+  endfunction
 
   if (N < 1 || ABits < 2 || BBits < 2 || SetupII < 2) begin : gen_param_check
     `SPEC_PARAM_ERROR("specular_setup_fmul: N >= 1, ABits and BBits >= 2 and SetupII >= 2")
@@ -114,7 +154,6 @@ module specular_setup_fmul #(
     // The tile selects: a decode of the slot count for a few steps, a one-hot token for many
     // (each is the smaller there in the ECP5 synthesis).
     logic signed [T-1:0] ta_d, tb_d, ta_q, tb_q;
-    logic [DW-1:0]       dg;
     if (Steps > TokenMinSteps) begin : gen_token
       // c = s: a one-hot token marks step s (set by the advance, shifted out after the last
       // step); each tile's select is the OR of its steps' token bits, and the tile registers
@@ -129,13 +168,10 @@ module specular_setup_fmul #(
       always_comb begin
         sel_a = '0;
         sel_b = '0;
-        dg    = '0;
         for (int s = 0; s < Steps; s++) begin
-          // Step s: tile t = ((K0 + s / H) % Q) H + s % H of chunk s / H (a zero tile from TP on).
-          if ((((K0 + s / H) % Q) * H + s % H) < TP) begin
-            sel_a[(s / H) * TA + ((((K0 + s / H) % Q) * H + s % H) / TB)] |= tok_q[s];
-            sel_b[(s / H) * TB + ((((K0 + s / H) % Q) * H + s % H) % TB)] |= tok_q[s];
-            dg |= {DW{tok_q[s]}} & DW'((((K0 + s / H) % Q) * H + s % H) / TB + (((K0 + s / H) % Q) * H + s % H) % TB);
+          if (step_r(s, K0) < TP) begin
+            sel_a[(s / H) * TA + tile_at(step_r(s, K0)) / TB] |= tok_q[s];
+            sel_b[(s / H) * TB + tile_at(step_r(s, K0)) % TB] |= tok_q[s];
           end
         end
       end
@@ -159,14 +195,12 @@ module specular_setup_fmul #(
       always_comb begin
         ia    = '0;
         ib    = '0;
-        dg    = '0;
         zero  = 1'b1;
         for (int s = 0; s < Steps; s++) begin
           if (32'(cnt_q) == s) begin
-            ia    = IAW'((s / H) * TA + ((((K0 + s / H) % Q) * H + s % H) % TP) / TB);
-            ib    = IBW'((s / H) * TB + ((((K0 + s / H) % Q) * H + s % H) % TP) % TB);
-            dg    = DW'(((((K0 + s / H) % Q) * H + s % H) % TP) / TB + ((((K0 + s / H) % Q) * H + s % H) % TP) % TB);
-            zero  = (((K0 + s / H) % Q) * H + s % H) >= TP;
+            ia    = IAW'((s / H) * TA + tile_at(step_r(s, K0) % TP) / TB);
+            ib    = IBW'((s / H) * TB + tile_at(step_r(s, K0) % TP) % TB);
+            zero  = step_r(s, K0) >= TP;
           end
         end
       end
@@ -183,26 +217,28 @@ module specular_setup_fmul #(
       end
     end
     logic signed [2*T-1:0] pp_q;
-    logic [DW-1:0]         dg1_q, dg2_q;
     always_ff @(posedge clk_i) begin
-      ta_q     <= ta_d;
-      tb_q     <= tb_d;
-      dg1_q    <= dg;
+      ta_q <= ta_d;
+      tb_q <= tb_d;
       // c = 1 + s
-      pp_q     <= ta_q * tb_q;
-      dg2_q    <= dg1_q;
+      pp_q <= ta_q * tb_q;
     end
-    // c = 2 + s: accumulate step s. A chunk's last step writes the finished sum into the
-    // chunk's register and clears the accumulator (a synchronous reset, no multiplexer in
-    // front of the adder); the last chunk's sum stays in the accumulator until the slot's
-    // first clock clears it.
-    logic [PBits-1:0] sh, acc_q, acc_d;
+    // c = 2 + s: accumulate step s; when its tile starts a diagonal, the accumulator's low
+    // T - 1 bits (the diagonal below, final) go to a segment register and the rest moves
+    // down. A chunk's last step writes the finished top into the chunk's register and clears
+    // the accumulator (a synchronous reset, no multiplexer in front of the adder); the last
+    // chunk's top stays in the accumulator until the slot's first clock clears it.
+    logic signed [AccW-1:0] acc_q, acc_d;
+    logic                   nd;
     always_comb begin
-      sh = '0;
-      for (int d = 0; d < TA + TB - 1; d++) begin
-        if (dg2_q == DW'(d)) sh = PBits'(PBits'(pp_q) << (d * (T - 1)));
+      nd = 1'b0;
+      for (int s = 0; s < Steps; s++) begin
+        if (s % H != 0 && step_r(s, K0) < TP && diag_at(step_r(s, K0)) != diag_at(step_r(s, K0) - 1)
+            && 32'(cnt_q) == s + 2) begin
+          nd = 1'b1;
+        end
       end
-      acc_d = acc_q + sh;
+      acc_d = (nd ? (acc_q >>> (T - 1)) : acc_q) + AccW'(pp_q);
     end
     logic acc_clr;
     always_comb begin
@@ -219,14 +255,34 @@ module specular_setup_fmul #(
       end
     end
     for (genvar l = 0; l < Pm; l++) begin : gen_chunk
+      localparam int R0   = step_r(l * H, K0);   // its first tile
+      localparam int D0   = diag_at(R0);          // its first and last diagonals
+      localparam int DL   = diag_at(R0 + H - 1);
+      localparam int NSeg = DL - D0;              // the diagonals it finishes below its top
+      logic signed [AccW-1:0] top;
       if (l == Pm - 1) begin : gen_last
-        assign csum[(K0 + l)*PBits +: PBits] = acc_q;
+        assign top = acc_q;
       end else begin : gen_res
-        logic [PBits-1:0] res_q;
+        logic signed [AccW-1:0] top_q;
         always_ff @(posedge clk_i) begin
-          if (32'(cnt_q) == (l + 1) * H + 1) res_q <= acc_d;
+          if (32'(cnt_q) == (l + 1) * H + 1) top_q <= acc_d;
         end
-        assign csum[(K0 + l)*PBits +: PBits] = res_q;
+        assign top = top_q;
+      end
+      // Its value modulo 2^PBits (exact, as the product fits): top, segments, zeros below.
+      if (NSeg == 0) begin : gen_top_only
+        assign csum[(K0 + l)*PBits +: PBits] = PBits'(top) << ((T - 1) * D0);
+      end else begin : gen_segs
+        // Segment e: diagonal D0 + e, written where diagonal D0 + e + 1 starts.
+        logic [NSeg*(T-1)-1:0] seg_q;
+        for (genvar e = 0; e < NSeg; e++) begin : gen_seg
+          localparam int SE = l * H + (diag_start(D0 + e + 1) - R0);  // that step
+          always_ff @(posedge clk_i) begin
+            if (32'(cnt_q) == SE + 2) seg_q[e*(T-1) +: T-1] <= acc_q[T-2:0];
+          end
+        end
+        assign csum[(K0 + l)*PBits +: PBits] = (PBits'(top) << ((T - 1) * DL))
+                                              | (PBits'(seg_q) << ((T - 1) * D0));
       end
     end
   end
