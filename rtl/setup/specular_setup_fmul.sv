@@ -269,7 +269,10 @@ module specular_setup_fmul #(
         end
         assign top = top_q;
       end
-      // Its value modulo 2^PBits (exact, as the product fits): top, segments, zeros below.
+      // Its value modulo 2^PBits (exact, as the product fits): top, segments, zeros below. A
+      // narrow product leaves the top's upper bits unread.
+      logic unused_top;
+      assign unused_top = ^top;
       if (NSeg == 0) begin : gen_top_only
         assign csum[(K0 + l)*PBits +: PBits] = PBits'(top) << ((T - 1) * D0);
       end else begin : gen_segs
