@@ -7,6 +7,7 @@
 rtl/setup/specular_setup_pkg.sv
 rtl/setup/specular_setup_prio.sv
 rtl/setup/specular_setup_rshift.sv
+rtl/setup/specular_setup_rshift_n.sv
 rtl/setup/specular_setup_norm.sv
 rtl/setup/specular_setup_cordic.sv
 rtl/setup/specular_setup_cordic_iter.sv

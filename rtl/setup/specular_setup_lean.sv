@@ -168,17 +168,30 @@ module specular_setup_lean #(
   logic adv, buf_adv, slot_last, slot_first;
   if (SetupII > 1) begin : gen_slot
     localparam int SlotW = $clog2(SetupII);
-    logic [SlotW-1:0] slot_q;
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) begin
-        slot_q <= '0;
-      end else if (adv) begin
-        slot_q <= '0;
-      end else if (slot_q != SlotW'(SetupII - 1)) begin
-        slot_q <= slot_q + SlotW'(1);
+    // slot_last_q: the compare of slot_d, registered, so that the advance and the output
+    // buffer's push take one gate from registers (their enables reach every stage).
+    logic [SlotW-1:0] slot_q, slot_d;
+    logic             slot_last_q;
+    always_comb begin
+      if (adv) begin
+        slot_d = '0;
+      end else if (!slot_last_q) begin
+        slot_d = slot_q + SlotW'(1);
+      end else begin
+        slot_d = slot_q;
       end
     end
-    assign slot_last  = slot_q == SlotW'(SetupII - 1);
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        slot_q      <= '0;
+        slot_last_q <= 1'b0;
+      end else begin
+        slot_q      <= slot_d;
+        slot_last_q <= slot_d == SlotW'(SetupII - 1);
+      end
+    end
+    `SPEC_ASSERT(SlotLastIsCount_A, slot_last_q == (slot_q == SlotW'(SetupII - 1)), clk_i, rst_ni)
+    assign slot_last  = slot_last_q;
     assign slot_first = slot_q == '0;
   end else begin : gen_no_slot
     assign slot_last  = 1'b1;
@@ -350,7 +363,7 @@ module specular_setup_lean #(
     end
   end
   logic [3*BlkW-1:0] gpn;
-  specular_setup_lean_block #(.N(3), .InW(GPW), .Bits(BBits)) u_blk_gp (
+  specular_setup_lean_block #(.N(3), .InW(GPW), .Bits(BBits), .SetupII(SetupII)) u_blk_gp (
     .clk_i (clk_i), .en_i (adv), .x_i (gp_q), .x_o (gpn));
 
   // N1 beside: to TG1 (s), TS (s N1), TG (H1 x G's partner N1 x H1), TCH (p kept since TX2).
@@ -411,7 +424,7 @@ module specular_setup_lean #(
     end
   end
   logic [3*BlkW-1:0] g;
-  specular_setup_lean_block #(.N(3), .InW(GVW), .Bits(BBits)) u_blk_g (
+  specular_setup_lean_block #(.N(3), .InW(GVW), .Bits(BBits), .SetupII(SetupII)) u_blk_g (
     .clk_i (clk_i), .en_i (adv), .x_i (gv_q), .x_o (g));
 
   // ---- step 4: x = H1.G, c = H1 x G; p = H1 x N1, cos t1 = N1.H1 (TG -> TX2) ----
@@ -470,7 +483,7 @@ module specular_setup_lean #(
   end
   // x and c block-normalized together (TX2 -> TXC): {c_z, c_y, c_x, x}.
   logic [4*BlkW-1:0] xc;
-  specular_setup_lean_block #(.N(4), .InW(XW), .Bits(BBits)) u_blk_xc (
+  specular_setup_lean_block #(.N(4), .InW(XW), .Bits(BBits), .SetupII(SetupII)) u_blk_xc (
     .clk_i (clk_i), .en_i (adv), .x_i ({c2_q, x_q}), .x_o (xc));
   logic signed [BlkW-1:0] xb;
   logic [3*BlkW-1:0]      cb;

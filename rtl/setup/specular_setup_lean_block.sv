@@ -11,14 +11,17 @@
 //   stage 3  y_i = (x_i 2^Bits) >> t: x_i >> (s - 1) for s = t + 1 - Bits > 0, x_i << (1 - s)
 //            otherwise, exact either way; one right shifter, no adder
 //   stage 4  (y_i + 1) >> 1: the rounding of s > 0; exact for s <= 0 (y_i even)
-// Stages: specular_setup_lean_pkg::BlockStages. en_i freezes every stage. No reset.
+// Stages: specular_setup_lean_pkg::BlockStages. en_i freezes every stage. No reset. With
+// SetupII > 1 (en_i the folded setup's advance) stage 3's N shifts share one shifter over the
+// slot's clocks (specular_setup_rshift_n).
 
 `include "specular_assert.svh"
 
 module specular_setup_lean_block #(
   parameter int N    = 3,
   parameter int InW  = 64,
-  parameter int Bits = 28
+  parameter int Bits = 28,
+  parameter int SetupII = 1   // > 1: one shifter for the N components (specular_setup_rshift_n)
 ) (
   input  logic                    clk_i,
   input  logic                    en_i,
@@ -52,18 +55,23 @@ module specular_setup_lean_block #(
   logic [PL-1:0] top_d, top_q;
   specular_setup_prio #(.W(InW), .FromTop(1'b0)) u_top (.a_i (all_d), .any_o (unused_any), .value_o (top_d));
 
+  logic [N*(InW+Bits)-1:0] x2;
+  logic [N*YW-1:0]         y_d;
+  for (genvar i = 0; i < N; i++) begin : gen_x2
+    assign x2[i*(InW+Bits) +: InW+Bits] = {x2_q[i*InW +: InW], Bits'(0)};
+  end
+  specular_setup_rshift_n #(.N(N), .InW(InW + Bits), .OutW(YW), .SW(PL), .Signed(1'b1),
+                            .SetupII(SetupII)) u_shift (
+    .clk_i (clk_i), .en_i (en_i), .a_i (x2), .s_i (top_q), .y_o (y_d));
+
   for (genvar i = 0; i < N; i++) begin : gen_comp
-    logic signed [InW+Bits-1:0] x2;
-    logic signed [YW-1:0]       y_d, y_q;
-    assign x2 = {x2_q[i*InW +: InW], Bits'(0)};
-    specular_setup_rshift #(.InW(InW + Bits), .OutW(YW), .SW(PL), .Signed(1'b1)) u_shift (
-      .a_i (x2), .s_i (top_q), .y_o (y_d));
+    logic signed [YW-1:0] y_q;
     always_ff @(posedge clk_i) begin
       if (en_i) begin
         // stage 1
         mag_q[i*InW +: InW] <= x_i[i*InW + InW - 1] ? InW'(-$signed(x_i[i*InW +: InW])) : x_i[i*InW +: InW];
         // stage 3 (the true value fits YW bits, so the truncation is exact)
-        y_q <= y_d;
+        y_q <= y_d[i*YW +: YW];
         // stage 4
         x_o[i*OutW +: OutW] <= OutW'((y_q + YW'(1)) >>> 1);
       end

@@ -289,11 +289,16 @@ module specular_setup_lean_norm #(
   specular_delay #(.Width(UW), .Depth(TR + LVr - TK), .Reset(1'b0), .Ram(1'b1)) u_dly_k (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (ush_q), .q_o (ush_u));
   logic signed [UnitW-1:0] u [3];
+  logic [3*PW-1:0]          vr3;
+  logic [3*(UnitW+2)-1:0]   y3;
+  specular_setup_rshift_n #(.N(3), .InW(PW), .OutW(UnitW + 2), .SW(UW), .Signed(1'b1),
+                            .SetupII(SetupII)) u_ush (
+    .clk_i (clk_i), .en_i (en_i), .a_i (vr3), .s_i (ush_u), .y_o (y3));
   for (genvar i = 0; i < 3; i++) begin : gen_scale
     logic signed [PW-1:0]      vr;
     logic signed [UnitW+1:0]   y_d, y_q;
-    specular_setup_rshift #(.InW(PW), .OutW(UnitW + 2), .SW(UW), .Signed(1'b1)) u_ush (
-      .a_i (vr), .s_i (ush_u), .y_o (y_d));
+    assign vr3[i*PW +: PW] = vr;
+    assign y_d = y3[i*(UnitW+2) +: UnitW+2];
     if (SetupII > 1) begin : gen_vr_fold
       assign f_a[(7 + i)*FA +: FA] = FA'($signed(v_r[i*InW +: InW]));
       assign f_b[(7 + i)*FB +: FB] = FB'($signed(r_q));

@@ -1,0 +1,69 @@
+// SPDX-License-Identifier: Apache-2.0
+// Copyright (c) the specular_device authors.
+//
+// specular_setup_rshift_n: N values shifted right by one common amount (specular_setup_rshift
+// each), for a pipeline stage that registers y_o on its enable en_i. With SetupII = 1 these are
+// N shifters and y_o is combinational. With SetupII > 1 (the folded setup, en_i the advance at
+// a slot's last clock, a_i and s_i still for the slot) one shifter takes value c in clock c of
+// the slot into a register of its own, so y_o is ready before the advance: N - 1 shifters
+// fewer for N multiplexer inputs (docs/setup_hw.md#the-folded-lean-setup). That needs
+// SetupII > N. A stalled slot only repeats the last value's shift.
+
+`include "specular_assert.svh"
+
+module specular_setup_rshift_n #(
+  parameter int N       = 3,
+  parameter int InW     = 8,
+  parameter int OutW    = 8,
+  parameter int SW      = 3,
+  parameter bit Signed  = 1'b0,
+  parameter int SetupII = 1
+) (
+  input  logic              clk_i,
+  input  logic              en_i,
+  input  logic [N*InW-1:0]  a_i,   // value i at [i*InW +: InW]
+  input  logic [SW-1:0]     s_i,
+  output logic [N*OutW-1:0] y_o
+);
+
+  if (N < 1 || SetupII < 1 || (SetupII > 1 && SetupII <= N)) begin : gen_param_check
+    `SPEC_PARAM_ERROR("specular_setup_rshift_n: N >= 1, and a folded SetupII must exceed N")
+  end
+
+  if (SetupII == 1 || N == 1) begin : gen_par
+    logic unused_clk;
+    assign unused_clk = clk_i ^ en_i;
+    for (genvar i = 0; i < N; i++) begin : gen_shift
+      specular_setup_rshift #(.InW(InW), .OutW(OutW), .SW(SW), .Signed(Signed)) u_shift (
+        .a_i (a_i[i*InW +: InW]), .s_i (s_i), .y_o (y_o[i*OutW +: OutW]));
+    end
+  end else begin : gen_fold
+    localparam int CW = $clog2(N);
+    // The slot's clock, restarted by the advance and held at the last value. No reset: it
+    // realigns at the first advance, before any value that matters.
+    logic [CW-1:0]  c_q;
+    logic [InW-1:0] a_c;
+    logic [OutW-1:0] y_c;
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        c_q <= '0;
+      end else if (c_q != CW'(N - 1)) begin
+        c_q <= c_q + CW'(1);
+      end
+    end
+    always_comb begin
+      a_c = a_i[InW-1:0];
+      for (int i = 1; i < N; i++) begin
+        if (c_q == CW'(i)) a_c = a_i[i*InW +: InW];
+      end
+    end
+    specular_setup_rshift #(.InW(InW), .OutW(OutW), .SW(SW), .Signed(Signed)) u_shift (
+      .a_i (a_c), .s_i (s_i), .y_o (y_c));
+    for (genvar i = 0; i < N; i++) begin : gen_hold
+      always_ff @(posedge clk_i) begin
+        if (!en_i && c_q == CW'(i)) y_o[i*OutW +: OutW] <= y_c;
+      end
+    end
+  end
+
+endmodule
