@@ -77,7 +77,7 @@
 #   --setup-ii    with --top setup, setup_lean or system: the setup's initiation interval
 #                 SetupII (at most one span every K clocks, the hardware shared over them: the
 #                 Q44 setup 1, 2, 4 or 8, docs/setup_hw.md#sharing-over-setupii-clocks; the lean
-#                 setup, the system's default, 1 or from 5 on, docs/setup_hw.md#the-folded-lean-setup),
+#                 setup, the system's default, 1 or from 6 on, docs/setup_hw.md#the-folded-lean-setup),
 #                 as --param SetupII=K; the run's folder is TOP_iiK_DEVICE/
 #
 # A design that does not fit is a result, reported as fit = no with the reason, not an

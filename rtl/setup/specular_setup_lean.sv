@@ -33,7 +33,7 @@
 // The three decisions are the signals opposite_normals_q (tau TON), flat_q and
 // opposite_halfway_q (tau TD), for a test to peek at.
 //
-// SetupII = K >= 5 folds it in time (docs/setup_hw.md#the-lean-datapath): the same stages
+// SetupII = K >= 6 folds it in time (docs/setup_hw.md#the-lean-datapath): the same stages
 // advance once per slot of K clocks (a slot counter; the advance is the slot's last clock
 // with room in the output buffer, so geo_ready_o stays a register function and one span
 // enters per slot). A product then takes one stage: every product is a lane of a shared
@@ -52,7 +52,7 @@ module specular_setup_lean #(
   parameter int TagBits      = 16,
   // specular_pipe_mul's resources: 18 the ECP5's MULT18X18D tiles, 0 a LUT tree (iCE40).
   parameter int TileBits     = 18,
-  // Clocks per span: 1 fully pipelined; K >= 5 the folded setup, whose stages advance once
+  // Clocks per span: 1 fully pipelined; K >= 6 the folded setup, whose stages advance once
   // per slot of K clocks and whose products share a few tile multipliers (specular_setup_fmul).
   parameter int SetupII      = 1,
   parameter     SeedFile     = "roms/setup/rsqrt_seed_lean.hex",
@@ -159,7 +159,7 @@ module specular_setup_lean #(
   end
 
   if (SetupII < 1 || (SetupII > 1 && SetupII < specular_setup_lean_pkg::MinFoldII)) begin : gen_ii_check
-    `SPEC_PARAM_ERROR("specular_setup_lean: SetupII must be 1 or >= specular_setup_lean_pkg::MinFoldII (5)")
+    `SPEC_PARAM_ERROR("specular_setup_lean: SetupII must be 1 or >= specular_setup_lean_pkg::MinFoldII (6)")
   end
 
   // The advance: the output buffer's room (a register) and, folded, the slot's last clock

@@ -102,8 +102,9 @@ package specular_setup_lean_pkg;
   // Clocks of a slot that are not tile steps: the tile product register, the last
   // accumulation and the advance edge (p_o).
   localparam int FmulOverhead = 3;
-  // The smallest folding: a four-tile product in two chunks of two tile steps each.
-  localparam int MinFoldII = FmulOverhead + 2;
+  // The smallest folding: the widest product (35 x 52 bits, 2 x 3 tiles) in two chunks of
+  // three tile steps each.
+  localparam int MinFoldII = FmulOverhead + 3;
   // The signed tile width: the DSP's (18) or, for the LUT style, the same 18. An operand is
   // cut into unsigned low tiles of fmul_tile - 1 bits and a signed top tile.
   function automatic int fmul_tile(input int tile_bits);

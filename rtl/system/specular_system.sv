@@ -52,7 +52,7 @@ module specular_system #(
   if (CBits != 16 || CFrac != 15 || AngleBits != 32 || AngleFrac != 28 || NBits != 10 || LenBits != 11) begin : gen_fmt_check
     `SPEC_PARAM_ERROR("specular_system: the register formats must be the defaults (C 16/15, angles 32/28, n 10, l 11)")
   end
-  // Each setup checks its own SetupII (the Q44 setup 1, 2, 4, 8; the lean one 1 or from 5 on).
+  // Each setup checks its own SetupII (the Q44 setup 1, 2, 4, 8; the lean one 1 or from 6 on).
   if (LeanSetup && HeEqH1) begin : gen_lean_check
     `SPEC_PARAM_ERROR("specular_system: the lean setup (LeanSetup = 1) has no HeEqH1 variant")
   end
