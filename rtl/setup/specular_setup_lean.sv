@@ -260,9 +260,17 @@ module specular_setup_lean #(
       tag_q   <= geo_tag_i;
     end
   end
-  logic invalid, undefined;
-  assign invalid   = n_q == '0 || n_q > NBits'(MaxN) || n1_q == '0 || n2_q == '0;
-  assign undefined = h1_q == '0 || he_q == '0;
+  // The input's flags, decided on the inputs and registered with them: the compares sit before
+  // the input register, not between it and the block-RAM line that carries the flags.
+  logic invalid, undefined, invalid_q, undefined_q;
+  always_ff @(posedge clk_i) begin
+    if (adv) begin
+      invalid_q   <= geo_n_i == '0 || geo_n_i > NBits'(MaxN) || geo_n1_i == '0 || geo_n2_i == '0;
+      undefined_q <= geo_h1_i == '0 || geo_he_i == '0;
+    end
+  end
+  assign invalid   = invalid_q;
+  assign undefined = undefined_q;
 
   // ---- step 2: N1, N2, H1 (tau 0 -> TN) ----
   logic [3*U-1:0] n1u, n2u, h1u;
