@@ -94,9 +94,17 @@ module specular_setup_fmul #(
   function automatic int diag_at(input int r);
     diag_at = tile_at((r < TP) ? r : TP - 1) / TB + tile_at((r < TP) ? r : TP - 1) % TB;
   endfunction
+  // Whether step s of a multiplier whose first chunk is k0 starts a diagonal inside its chunk.
+  function automatic bit starts_diag(input int s, input int k0);
+    starts_diag = s % H != 0 && step_r(s, k0) < TP
+                  && diag_at(step_r(s, k0)) != diag_at(step_r(s, k0) - 1);
+  endfunction
 
   if (N < 1 || ABits < 2 || BBits < 2 || SetupII < 2) begin : gen_param_check
     `SPEC_PARAM_ERROR("specular_setup_fmul: N >= 1, ABits and BBits >= 2 and SetupII >= 2")
+  end
+  if (TA > 4 && TB > 4) begin : gen_acc_check
+    `SPEC_PARAM_ERROR("specular_setup_fmul: at most four tiles a diagonal (min(TA, TB) <= 4)")
   end
   if (P < 1) begin : gen_slot_check
     `SPEC_PARAM_ERROR("specular_setup_fmul: half a product's tiles must fit the slot (TA TB <= 2 (SetupII - FmulOverhead))")
@@ -152,8 +160,12 @@ module specular_setup_fmul #(
       assign bsrc[l*TB*T +: TB*T] = btile[((K0 + l) / Q)*TB*T +: TB*T];
     end
     // The tile selects: a decode of the slot count for a few steps, a one-hot token for many
-    // (each is the smaller there in the ECP5 synthesis).
+    // (each is the smaller there in the ECP5 synthesis). nd_d (this step starts a diagonal) is
+    // decoded with them and travels beside the tile and its product: the accumulator's shift
+    // select is then a register, not a decode of the count shared by every multiplier and
+    // routed across the unit (docs/setup_hw.md#the-folded-lean-setup).
     logic signed [T-1:0] ta_d, tb_d, ta_q, tb_q;
+    logic                nd_d, nd1_q, nd2_q;
     if (Steps > TokenMinSteps) begin : gen_token
       // c = s: a one-hot token marks step s (set by the advance, shifted out after the last
       // step); each tile's select is the OR of its steps' token bits, and the tile registers
@@ -168,7 +180,9 @@ module specular_setup_fmul #(
       always_comb begin
         sel_a = '0;
         sel_b = '0;
+        nd_d  = 1'b0;
         for (int s = 0; s < Steps; s++) begin
+          if (starts_diag(s, K0)) nd_d |= tok_q[s];
           if (step_r(s, K0) < TP) begin
             sel_a[(s / H) * TA + tile_at(step_r(s, K0)) / TB] |= tok_q[s];
             sel_b[(s / H) * TB + tile_at(step_r(s, K0)) % TB] |= tok_q[s];
@@ -196,11 +210,13 @@ module specular_setup_fmul #(
         ia    = '0;
         ib    = '0;
         zero  = 1'b1;
+        nd_d  = 1'b0;
         for (int s = 0; s < Steps; s++) begin
           if (32'(cnt_q) == s) begin
             ia    = IAW'((s / H) * TA + tile_at(step_r(s, K0) % TP) / TB);
             ib    = IBW'((s / H) * TB + tile_at(step_r(s, K0) % TP) % TB);
             zero  = step_r(s, K0) >= TP;
+            nd_d  = starts_diag(s, K0);
           end
         end
       end
@@ -218,10 +234,12 @@ module specular_setup_fmul #(
     end
     logic signed [2*T-1:0] pp_q;
     always_ff @(posedge clk_i) begin
-      ta_q <= ta_d;
-      tb_q <= tb_d;
+      ta_q  <= ta_d;
+      tb_q  <= tb_d;
+      nd1_q <= nd_d;
       // c = 1 + s
-      pp_q <= ta_q * tb_q;
+      pp_q  <= ta_q * tb_q;
+      nd2_q <= nd1_q;
     end
     // c = 2 + s: accumulate step s; when its tile starts a diagonal, the accumulator's low
     // T - 1 bits (the diagonal below, final) go to a segment register and the rest moves
@@ -229,16 +247,8 @@ module specular_setup_fmul #(
     // the accumulator (a synchronous reset, no multiplexer in front of the adder); the last
     // chunk's top stays in the accumulator until the slot's first clock clears it.
     logic signed [AccW-1:0] acc_q, acc_d;
-    logic                   nd;
     always_comb begin
-      nd = 1'b0;
-      for (int s = 0; s < Steps; s++) begin
-        if (s % H != 0 && step_r(s, K0) < TP && diag_at(step_r(s, K0)) != diag_at(step_r(s, K0) - 1)
-            && 32'(cnt_q) == s + 2) begin
-          nd = 1'b1;
-        end
-      end
-      acc_d = (nd ? (acc_q >>> (T - 1)) : acc_q) + AccW'(pp_q);
+      acc_d = (nd2_q ? (acc_q >>> (T - 1)) : acc_q) + AccW'(pp_q);
     end
     logic acc_clr;
     always_comb begin

@@ -269,6 +269,9 @@ module specular_setup_lean #(
       undefined_q <= geo_h1_i == '0 || geo_he_i == '0;
     end
   end
+  // Named wires over the registers: the handshake proof cuts the datapath by these names
+  // (docs/formal.md#specular_setup_lean-the-span-handshakes), so they stay where the flags
+  // leave for the delay line.
   assign invalid   = invalid_q;
   assign undefined = undefined_q;
 
