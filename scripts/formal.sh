@@ -86,7 +86,7 @@ p_tagline u_dut.u_tag_line.gen_regs.line_q"
   # The datapath where it enters the output buffer (the proof only: mutant traces are real).
   cuts_proof="u_dut.intensity"
   map=memory
-  mutants="adv_ignores_room rtl/prim/specular_out_buf.sv s/adv_q *<= count_d <= 2'd1;/adv_q   <= 1'b1;/
+  mutants="adv_ignores_room rtl/prim/specular_out_buf.sv s/adv_q *<= adv_d;/adv_q   <= 1'b1;/
 pop_ignores_ready rtl/prim/specular_out_buf.sv s/assign pop *= (count_q != 2'd0) & px_ready_i;/assign pop  = (count_q != 2'd0);/
 no_last_shift rtl/core/specular_control.sv s/vld_q\[0\] & cnt_zero_i}/1'b0}/
 ready_ignores_busy rtl/core/specular_control.sv s/assign free0 *= ~vld_q\[0\] | cnt_zero_i;/assign free0 = 1'b1;/"

@@ -355,9 +355,17 @@ for top in "${tops[@]}"; do
         echo "check -assert"
       else
         echo "$synth -top $harness"
-        # stat -top: the totals of the whole hierarchy (each module times its instances)
-        echo "tee -q -o $dir/stat.txt stat -top $harness"
-        [ "$hier" = 1 ] && echo "flatten"
+        if [ "$hier" = 1 ]; then
+          # stat -top: the totals of the whole hierarchy (each module times its instances),
+          # kept for the blocks; then the flat netlist without what no output reads (a block's
+          # unused outputs, which -noflatten keeps), counted again: that is what is placed.
+          echo "tee -q -o $dir/stat_hier.txt stat -top $harness"
+          echo "flatten"
+          echo "opt_clean -purge"
+          echo "tee -q -o $dir/stat.txt stat"
+        else
+          echo "tee -q -o $dir/stat.txt stat -top $harness"
+        fi
         echo "write_json $dir/$harness.json"
       fi
     } > "$dir/synth.ys"
@@ -379,7 +387,7 @@ for top in "${tops[@]}"; do
       run_dirs+=("$dir")
       continue
     fi
-    rm -f "$dir/result.json" "$dir/key" "$dir/report.json" "$dir/stat.txt" "$dir/nofit.txt" "$dir/nextpnr.log" "$dir/ecp5_part.txt"
+    rm -f "$dir/result.json" "$dir/key" "$dir/report.json" "$dir/stat.txt" "$dir/stat_hier.txt" "$dir/nofit.txt" "$dir/nextpnr.log" "$dir/ecp5_part.txt"
 
     echo "$me: $top on $dev: Yosys $synth ..."
     t0=$(date +%s)
@@ -474,7 +482,7 @@ PY3
     t1=$(date +%s)
     if [[ "$dev" == ecp5* ]]; then export FPGA_NEXTPNR_VERSION=$ecp5_version; else export FPGA_NEXTPNR_VERSION=$ice40_version; fi
     python3 - "$dir" "$top" "$dev" "$harness" "$core" "$freq" "$seed" "$synth_rc" "$pnr_rc" \
-      "$((t1 - t0))" "$((t_synth - t0))" "$synth" "$phong_cfg" "$label" "${run_params[@]+"${run_params[@]}"}" <<'PY'
+      "$((t1 - t0))" "$((t_synth - t0))" "$synth${noflat:+; flatten; opt_clean -purge}" "$phong_cfg" "$label" "${run_params[@]+"${run_params[@]}"}" <<'PY'
 import json, os, re, subprocess, sys
 d, top, dev, harness, core, freq, seed, synth_rc, pnr_rc, secs, synth_secs, synth, phong_cfg, label = sys.argv[1:15]
 params = sys.argv[15:]

@@ -330,12 +330,14 @@ module specular_stream #(
   // ---------------------------------------------------------------------------------
   // Output buffer: the pixel handshake; its registered room is the pipeline advance
   // ---------------------------------------------------------------------------------
+  logic unused_adv_d;
   specular_out_buf #(
     .Width (CBits + 1 + TagBits)
   ) u_out_buf (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
     .adv_o      (adv),
+    .adv_d_o    (unused_adv_d),  // the advance is adv_o itself here
     .in_valid_i (out_valid),
     .in_data_i  ({intensity, out_last, tag_out}),
     .px_valid_o (px_valid_o),

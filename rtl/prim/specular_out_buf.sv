@@ -9,6 +9,8 @@
 //
 //   adv_o     registered: 1 when the buffer will hold at most one pixel at the next edge,
 //             so that a pixel pushed then always has room (two entries suffice)
+//   adv_d_o   adv_o's value after the next edge (combinational), for a caller that gates the
+//             advance and registers the result (the folded lean setup)
 //   push      in_valid_i at an edge where adv_o is high (the pipeline's last stage moves)
 //   pop       px_valid_o && px_ready_i (AXI4-Stream transfer)
 // px_valid_o and px_data_o are registers: once valid, they hold until the transfer, and
@@ -24,6 +26,7 @@ module specular_out_buf #(
   input  logic             clk_i,
   input  logic             rst_ni,
   output logic             adv_o,       // pipeline advance (a register)
+  output logic             adv_d_o,     // adv_o at the next edge
   input  logic             in_valid_i,  // the pipeline's last stage holds a pixel
   input  logic [Width-1:0] in_data_i,
   output logic             px_valid_o,
@@ -33,7 +36,7 @@ module specular_out_buf #(
 
   logic [1:0]       count_q, count_d;
   logic [Width-1:0] head_q, head_d, tail_q, tail_d;
-  logic             adv_q, push, pop;
+  logic             adv_q, adv_d, push, pop;
 
   assign push = adv_q & in_valid_i;
   assign pop  = (count_q != 2'd0) & px_ready_i;
@@ -74,11 +77,13 @@ module specular_out_buf #(
       count_q <= count_d;
       head_q  <= head_d;
       tail_q  <= tail_d;
-      adv_q   <= count_d <= 2'd1;
+      adv_q   <= adv_d;
     end
   end
 
+  assign adv_d      = count_d <= 2'd1;
   assign adv_o      = adv_q;
+  assign adv_d_o    = adv_d;
   assign px_valid_o = count_q != 2'd0;
   assign px_data_o  = head_q;
 

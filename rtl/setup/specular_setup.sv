@@ -684,10 +684,12 @@ module specular_setup #(
              zero_99 ? AngleBits'(0) : dpsi_99,
              n_99, len_99, tag_99, status_99};
   end
+  logic unused_adv_d;
   specular_out_buf #(.Width(OutBits)) u_out_buf (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
     .adv_o      (adv),
+    .adv_d_o    (unused_adv_d),  // the advance is adv_o itself here
     .in_valid_i (valid_99),
     .in_data_i  (out_d),
     .px_valid_o (span_valid_o),

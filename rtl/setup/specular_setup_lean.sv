@@ -162,16 +162,18 @@ module specular_setup_lean #(
     `SPEC_PARAM_ERROR("specular_setup_lean: SetupII must be 1 or >= specular_setup_lean_pkg::MinFoldII (6)")
   end
 
-  // The advance: the output buffer's room (a register) and, folded, the slot's last clock
-  // (slot_last_q, a register), so geo_ready_o stays a function of registers and at most one
-  // span enters per slot; every stage moves on it.
-  logic adv, buf_adv, slot_last, slot_first;
+  // The advance: the output buffer's room (a register) and, folded, the slot's last clock, so
+  // geo_ready_o stays a function of registers and at most one span enters per slot; every
+  // stage moves on it. Folded, the AND of the two is itself a register (adv_q, from their
+  // next values): the enable of every stage leaves a flip-flop with no gate before its route
+  // across the part (docs/setup_hw.md#the-folded-lean-setup).
+  logic adv, buf_adv, buf_adv_d, slot_last, slot_first;
   if (SetupII > 1) begin : gen_slot
     localparam int SlotW = $clog2(SetupII);
     // slot_last_q: the compare of slot_d, registered, so that the advance and the output
     // buffer's push take one gate from registers (their enables reach every stage).
     logic [SlotW-1:0] slot_q, slot_d;
-    logic             slot_last_q;
+    logic             slot_last_q, adv_q;
     always_comb begin
       if (adv) begin
         slot_d = '0;
@@ -185,19 +187,25 @@ module specular_setup_lean #(
       if (!rst_ni) begin
         slot_q      <= '0;
         slot_last_q <= 1'b0;
+        adv_q       <= 1'b0;
       end else begin
         slot_q      <= slot_d;
         slot_last_q <= slot_d == SlotW'(SetupII - 1);
+        adv_q       <= buf_adv_d && slot_d == SlotW'(SetupII - 1);
       end
     end
     `SPEC_ASSERT(SlotLastIsCount_A, slot_last_q == (slot_q == SlotW'(SetupII - 1)), clk_i, rst_ni)
+    `SPEC_ASSERT(AdvIsRoomAndSlot_A, adv_q == (buf_adv && slot_last_q), clk_i, rst_ni)
     assign slot_last  = slot_last_q;
     assign slot_first = slot_q == '0;
+    assign adv        = adv_q;
   end else begin : gen_no_slot
+    logic unused_buf_adv_d;
+    assign unused_buf_adv_d = buf_adv_d;
     assign slot_last  = 1'b1;
     assign slot_first = 1'b1;
+    assign adv        = buf_adv;
   end
-  assign adv         = buf_adv & slot_last;
   assign geo_ready_o = adv;
 
   // Folded, every product is a lane of one of three shared units (specular_setup_fmul), sized
@@ -820,6 +828,7 @@ module specular_setup_lean #(
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
     .adv_o      (buf_adv),
+    .adv_d_o    (buf_adv_d),
     .in_valid_i (valid_out & slot_last),
     .in_data_i  (out_d),
     .px_valid_o (span_valid_o),

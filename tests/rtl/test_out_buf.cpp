@@ -2,7 +2,8 @@
 // Output buffer of the stream (rtl/prim/specular_out_buf.sv, default Width = 33), checked cycle
 // by cycle against an independent queue model of its header's contract:
 //   * two entries; adv_o is high exactly when the buffer holds at most one pixel (so a
-//     pixel pushed at the next edge always has room), and it is a register;
+//     pixel pushed at the next edge always has room), and it is a register; adv_d_o is the
+//     value adv_o takes at the next edge;
 //   * a push is in_valid_i at an edge where adv_o is high (in_* are ignored otherwise); a
 //     pop is px_valid_o && px_ready_i (AXI4-Stream transfer);
 //   * pixels leave in push order, none lost or duplicated, one clock after their push;
@@ -124,6 +125,9 @@ struct Bench {
     if (model.size() > kCapacity) fail("the model overflowed (adv_o let a pixel into a full buffer)");
     if (model.size() == kCapacity) ++full_cycles;
     model_adv = model.size() <= 1;
+    // adv_d_o announces adv_o of the next clock (the inputs of this one are still applied).
+    if (dut.adv_d_o != model_adv)
+      fail("adv_d_o = " + std::to_string(dut.adv_d_o) + ", the model's next adv_o " + std::to_string(model_adv));
     prev_stalled = valid && !ready;
     if (prev_stalled) ++stalls;
     prev_data = out;

@@ -326,12 +326,14 @@ module phong_stream #(
   // ---------------------------------------------------------------------------------
   logic [CBits-1:0] intensity_v;
   assign intensity_v = out_valid ? intensity : '0;
+  logic unused_adv_d;
   specular_out_buf #(
     .Width (CBits + 1 + TagBits)
   ) u_out_buf (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),
     .adv_o      (adv),
+    .adv_d_o    (unused_adv_d),  // the advance is adv_o itself here
     .in_valid_i (out_valid),
     .in_data_i  ({intensity_v, out_last, tag_out}),
     .px_valid_o (px_valid_o),
