@@ -16,9 +16,10 @@ CASES = [
     # (LUT4 positions, FF, MULT18X18D, DP16KD), smallest holding, placed on
     ((42939, 33999, 17, 29), "LFE5U-45F", "LFE5U-85F"),  # 98 % of the 45F: no room to pack
     ((36331, 37223, 45, 29), "LFE5U-45F", "LFE5U-85F"),  # 83 % of the 45F: failed to place
-    ((35000, 30000, 17, 29), "LFE5U-45F", "LFE5U-45F"),  # 35,000 x 1.25 = 43,750 <= 43,848
-    ((35100, 30000, 17, 29), "LFE5U-45F", "LFE5U-85F"),  # 35,100 x 1.25 = 43,875 > 43,848
-    ((10000, 36000, 17, 29), "LFE5U-45F", "LFE5U-85F"),  # the flip-flops bind: 45,000
+    ((32652, 29842, 17, 29), "LFE5U-45F", "LFE5U-85F"),  # 74 % of the 45F: failed to place
+    ((31320, 30000, 17, 29), "LFE5U-45F", "LFE5U-45F"),  # 31,320 x 1.4 = 43,848 <= 43,848
+    ((31321, 30000, 17, 29), "LFE5U-45F", "LFE5U-85F"),  # 31,321 x 1.4 = 43,849.4 > 43,848
+    ((10000, 32000, 17, 29), "LFE5U-45F", "LFE5U-85F"),  # the flip-flops bind: 44,800
     ((10000, 10000, 72, 29), "LFE5U-45F", "LFE5U-45F"),  # 72 tiles: exactly, no margin
     ((10000, 10000, 73, 29), "LFE5U-85F", "LFE5U-85F"),
     ((80000, 20000, 17, 29), "LFE5U-85F", "LFE5U-85F"),  # no part with margin: the exact fit
