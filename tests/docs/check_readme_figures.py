@@ -153,7 +153,7 @@ _VERDICT = {}
 def verdict_rows(d):
     """scripts/verdict.py on the record (docs/fpga_figures.json): every configuration at the budget it
     was built for (the Phong configurations by their names, roms/phong/phong_configs.cmake; the
-    device's by their labels; B1 implies B3), spans of 1, 8 and 16 pixels. Cached per Data."""
+    device's by their labels; B1 implies B3), spans of 1, 8, 16 and 64 pixels. Cached per Data."""
     key = id(d)
     if key not in _VERDICT:
         sys.path.insert(0, os.path.join(d.root, "scripts"))
@@ -165,7 +165,7 @@ def verdict_rows(d):
     return _VERDICT[key]
 
 
-_VERDICT_SPANS = (1, 8, 16)
+_VERDICT_SPANS = (1, 8, 16, 64)
 
 
 def verdict_figure(budget, span, field):
@@ -180,9 +180,10 @@ def device_entry(d, config):
     return next(e for e in d.fpga["ecp5_runs"] if e.get("core") == "specular_stream" and e.get("config") == config)
 
 
-def hw_long_span_design(d, budget="b1"):
-    """The ECP5 entry of the device system the verdict picks at the budget on long spans (at each core's clock)."""
-    name = verdict_rows(d)[budget][_VERDICT_SPANS.index(16)]["hw_at_clock"]["name"]
+def hw_long_span_design(d, budget="b1", spans=16):
+    """The ECP5 entry of the device system the verdict picks at the budget on spans of `spans` pixels (at each
+    core's clock)."""
+    name = verdict_rows(d)[budget][_VERDICT_SPANS.index(spans)]["hw_at_clock"]["name"]
     return next(e for e in d.fpga["ecp5_runs"] if e.get("core") == "specular_system"
                 and f"SetupII={e.get('setup_ii', 1)}" in name)
 
@@ -228,14 +229,17 @@ FIGURES = [
     ranged(R, r"per-pixel Phong \(SLEEF\), per scene \| (\S+) to (\S+) x as fast \|",
            "software: device x phong_sleef, both at the best instruction set", lambda d, x: d.best(x)),
     (R, r"over the cancellation-free per-pixel Phong core \| (\S+) x \((\S+) x at each core's clock\); with the "
-        r"setup in hardware (\S+) x on spans of 8 pixels, (\S+) x on spans of 16 pixels or more \((\S+) x at each "
-        r"core's clock\) \|",
+        r"setup in hardware (\S+) x on spans of 8 pixels, (\S+) x on spans of 16 \((\S+) x at each core's clock\), "
+        r"(\S+) x on spans of 64 or more \((\S+) x\) \|",
      [("B1 verdict: host-setup device / best Phong, px per clock per part", verdict_figure("b1", 1, "host_ratio")),
       ("B1 verdict: the same at each core's clock", verdict_figure("b1", 1, "host_ratio_at_clock")),
       ("B1 verdict: hardware-setup device / best Phong, spans of 8", verdict_figure("b1", 8, "hw_ratio")),
       ("B1 verdict: hardware-setup device / best Phong, spans of 16", verdict_figure("b1", 16, "hw_ratio")),
       ("B1 verdict: hardware-setup device / best Phong at each core's clock, spans of 16",
-       verdict_figure("b1", 16, "hw_ratio_at_clock"))]),
+       verdict_figure("b1", 16, "hw_ratio_at_clock")),
+      ("B1 verdict: hardware-setup device / best Phong, spans of 64", verdict_figure("b1", 64, "hw_ratio")),
+      ("B1 verdict: hardware-setup device / best Phong at each core's clock, spans of 64",
+       verdict_figure("b1", 64, "hw_ratio_at_clock"))]),
     (P, r"at B1 the device's stream gives (\S+) times the pixels per clock per part of the cancellation-free core "
         r"\((\S+) times at each core's clock\), at B3 (\S+) times \((\S+) times\)",
      [("B1 verdict ratio", verdict_figure("b1", 1, "host_ratio")),
@@ -250,17 +254,21 @@ FIGURES = [
        / device_entry(d, "device_b1_n1000")["ffs"]),
       ("B1: cross / device MULT18X18D", lambda d: phong_entry(d, "cross_n1000")["mult18x18d"]
        / device_entry(d, "device_b1_n1000")["mult18x18d"])]),
-    (P, r"from (\S+) times at one pixel per span through (\S+) times on spans of 8 pixels to (\S+) times on spans "
-        r"of 16 pixels or more",
+    (P, r"from (\S+) times at one pixel per span through (\S+) times on spans of 8 pixels and (\S+) times on\s+"
+        r"spans of 16 to (\S+) times on spans of 64 pixels or more",
      [("B1: hardware-setup device / Phong, spans of 1", verdict_figure("b1", 1, "hw_ratio")),
       ("B1: hardware-setup device / Phong, spans of 8", verdict_figure("b1", 8, "hw_ratio")),
-      ("B1: hardware-setup device / Phong, spans of 16", verdict_figure("b1", 16, "hw_ratio"))]),
+      ("B1: hardware-setup device / Phong, spans of 16", verdict_figure("b1", 16, "hw_ratio")),
+      ("B1: hardware-setup device / Phong, spans of 64", verdict_figure("b1", 64, "hw_ratio"))]),
     (P, r"At each core's clock \(the folded system\s+at (\S+) MHz, the cancellation-free core at (\S+) MHz\) the "
-        r"long-span figure is (\S+) times",
-     [("B1: the folded system's Fmax", lambda d: hw_long_span_design(d)["fmax_mhz"]),
+        r"16-pixel figure is (\S+) times,\s+and at (\S+) MHz the 64-pixel one (\S+) times",
+     [("B1: the folded system's Fmax, spans of 16", lambda d: hw_long_span_design(d, spans=16)["fmax_mhz"]),
       ("cross_n1000 Fmax", lambda d: phong_entry(d, "cross_n1000")["fmax_mhz"]),
       ("B1: hardware-setup device / Phong at each core's clock, spans of 16",
-       verdict_figure("b1", 16, "hw_ratio_at_clock"))]),
+       verdict_figure("b1", 16, "hw_ratio_at_clock")),
+      ("B1: the folded system's Fmax, spans of 64", lambda d: hw_long_span_design(d, spans=64)["fmax_mhz"]),
+      ("B1: hardware-setup device / Phong at each core's clock, spans of 64",
+       verdict_figure("b1", 64, "hw_ratio_at_clock"))]),
     (P, r"the cancellation-free core takes (\S+) MULT18X18D where the textbook core takes (\S+), and clocks at (\S+) "
         r"MHz where the textbook core clocks at (\S+) MHz",
      [("cross_n1000 MULT18X18D", lambda d: phong_entry(d, "cross_n1000")["mult18x18d"]),
@@ -453,7 +461,7 @@ NOT_MEASURED = [
     r"\d+-bit SB_MAC16 tiles",                    # the UP5K's multiplier style (docs/pipeline.md)
     r"\d+ x \d+ tile products",                   # the tile size of that style
     r"CABGA381 -6",                              # an ECP5 part's package and speed grade
-    r"spans of (8|16) pixels( or more)?",         # a span length of the verdict (scripts/verdict.py)
+    r"spans of (8|16|64)( pixels)?( or more)?",    # a span length of the verdict (scripts/verdict.py)
 ]
 
 
