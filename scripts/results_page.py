@@ -234,9 +234,10 @@ def section_fpga(f, rel):
                 "LUT4 positions used after packing (LUT4s and carry halves); LUT4, CCU2C and TRELLIS_FF: Yosys' "
                 "counts, harness included; smallest LFE5U: the smallest part whose LUT4 positions (LUT4 + 2 CCU2C), "
                 "flip-flops, MULT18X18D and DP16KD hold those counts."
-                + "".join(f" {name(e)}: `{e['synthesis']}` ([hierarchical synthesis]"
-                          "(../rtl/fpga/README.md#hierarchical-synthesis))."
-                          for e in ecp5 if e.get("synthesis", "synth_ecp5") != "synth_ecp5"), ""]
+                + "".join(f" {', '.join(name(e) for e in ecp5 if e.get('synthesis') == syn)}: `{syn}` "
+                          "([hierarchical synthesis](../rtl/fpga/README.md#hierarchical-synthesis))."
+                          for syn in dict.fromkeys(e.get("synthesis", "synth_ecp5") for e in ecp5)
+                          if syn != "synth_ecp5"), ""]
         rows = [[name(e), e["part"], e["multipliers"], f"`{e['rtl']}`", e["date"],
                  f"{e['trellis_comb']} / {e['trellis_comb_available']}", num(e["lut4"]), num(e["ccu2c"]),
                  num(e["ffs"]), num(e["mult18x18d"]), num(e["dp16kd"]), e["smallest_lfe5u"], *fmax(e)]
