@@ -443,7 +443,11 @@ module specular_setup_lean #(
     end
   end
   logic [3*BlkW-1:0] g;
-  specular_setup_lean_block #(.N(3), .InW(GVW), .Bits(BBits), .SetupII(SetupII)) u_blk_g (
+  // G' reflected through the plane normal to the unit N1: its length stays in [2^27, sqrt(3) 2^28]
+  // (G' block-normalized), so its largest component's top bit is 26, 27 or 28
+  // (docs/setup_hw.md#the-lean-rtl); one bit of margin.
+  specular_setup_lean_block #(.N(3), .InW(GVW), .Bits(BBits), .SetupII(SetupII),
+                              .TopLo(BBits - 2), .TopHi(BBits + 1)) u_blk_g (
     .clk_i (clk_i), .en_i (adv), .x_i (gv_q), .x_o (g));
 
   // ---- step 4: x = H1.G, c = H1 x G; p = H1 x N1, cos t1 = N1.H1 (TG -> TX2) ----
@@ -502,7 +506,10 @@ module specular_setup_lean #(
   end
   // x and c block-normalized together (TX2 -> TXC): {c_z, c_y, c_x, x}.
   logic [4*BlkW-1:0] xc;
-  specular_setup_lean_block #(.N(4), .InW(XW), .Bits(BBits), .SetupII(SetupII)) u_blk_xc (
+  // x^2 + |c|^2 = |H1|^2 |G|^2 (Lagrange), |H1| = 2^26, |G| in [2^27, sqrt(3) 2^28]: the largest
+  // of the four has its top bit at 51 .. 54 (docs/setup_hw.md#the-lean-rtl).
+  specular_setup_lean_block #(.N(4), .InW(XW), .Bits(BBits), .SetupII(SetupII),
+                              .TopLo(F + BBits - 3), .TopHi(F + BBits)) u_blk_xc (
     .clk_i (clk_i), .en_i (adv), .x_i ({c2_q, x_q}), .x_o (xc));
   logic signed [BlkW-1:0] xb;
   logic [3*BlkW-1:0]      cb;
@@ -839,6 +846,18 @@ module specular_setup_lean #(
 
   logic unused;
   assign unused = ^{sat_unused, cc_q[CCW-1:60-KH], cos2[2*VW-1:A2W], nu2[2*VW-1:A2W], gamma_q[CW-1]};
+
+`ifndef SYNTHESIS
+  // The windows of the bounded block normalizations hold on every span that entered (a bubble's
+  // values are whatever the registers held).
+  logic valid_gw, valid_xw;
+  specular_delay #(.Width(1), .Depth(TGV + 1), .Reset(1'b1)) u_dly_valid_gw (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (in_valid_q), .q_o (valid_gw));
+  specular_delay #(.Width(1), .Depth(TX2 + 1), .Reset(1'b1)) u_dly_valid_xw (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (in_valid_q), .q_o (valid_xw));
+  `SPEC_ASSERT(GInWindow_A, !valid_gw || u_blk_g.in_window, clk_i, rst_ni)
+  `SPEC_ASSERT(XcInWindow_A, !valid_xw || u_blk_xc.in_window, clk_i, rst_ni)
+`endif
 
   `SPEC_ASSERT_KNOWN(GeoValidKnown_A, geo_valid_i, clk_i, rst_ni)
   `SPEC_ASSERT_KNOWN_IF(GeoDataKnown_A, `SPECULAR_GEO_DATA(geo_, _i), geo_valid_i && geo_ready_o,

@@ -14,6 +14,12 @@
 // Stages: specular_setup_lean_pkg::BlockStages. en_i freezes every stage. No reset. With
 // SetupII > 1 (en_i the folded setup's advance) stage 3's N shifts share one shifter over the
 // slot's clocks (specular_setup_rshift_n).
+//
+// TopLo .. TopHi: where the caller's data puts t. A vector of bounded length (G, and x with c:
+// docs/setup_hw.md#the-lean-rtl derives their windows) needs a shifter of clog2(TopHi - TopLo
+// + 1) steps, not clog2(InW): the part of the shift below TopLo is a constant one. A nonzero
+// input whose t lies outside the window gives a wrong result; in_window (simulation only) says
+// whether the value in stage 2 is zero or inside, for the caller's assertion on its valid spans.
 
 `include "specular_assert.svh"
 
@@ -21,7 +27,9 @@ module specular_setup_lean_block #(
   parameter int N    = 3,
   parameter int InW  = 64,
   parameter int Bits = 28,
-  parameter int SetupII = 1   // > 1: one shifter for the N components (specular_setup_rshift_n)
+  parameter int SetupII = 1,  // > 1: one shifter for the N components (specular_setup_rshift_n)
+  parameter int TopLo   = 0,
+  parameter int TopHi   = InW - 1
 ) (
   input  logic                    clk_i,
   input  logic                    en_i,
@@ -39,6 +47,9 @@ module specular_setup_lean_block #(
   if (InW < 2 || InW > 120 || Bits < 2) begin : gen_width_check
     `SPEC_PARAM_ERROR("specular_setup_lean_block: InW must be in 2..120, Bits >= 2")
   end
+  if (TopLo < 0 || TopLo > TopHi || TopHi >= InW) begin : gen_window_check
+    `SPEC_PARAM_ERROR("specular_setup_lean_block: the window needs 0 <= TopLo <= TopHi < InW")
+  end
 
   logic [N*InW-1:0] x1_q, x2_q, mag_q;
   logic [InW-1:0]   all_d;
@@ -48,19 +59,35 @@ module specular_setup_lean_block #(
       all_d = all_d | mag_q[i*InW +: InW];
     end
   end
-  // The top set bit: a tree, not a priority loop (specular_setup_prio).
-  localparam int PL = (InW > 1) ? $clog2(InW) : 1;
+  // The top set bit within the window: a tree, not a priority loop (specular_setup_prio).
   // For all_d = 0 every x_i is 0 and any shift gives 0: the index needs no zero case.
+  localparam int WW = TopHi - TopLo + 1;
+  localparam int PL = (WW > 1) ? $clog2(WW) : 1;
   logic          unused_any;
   logic [PL-1:0] top_d, top_q;
-  specular_setup_prio #(.W(InW), .FromTop(1'b0)) u_top (.a_i (all_d), .any_o (unused_any), .value_o (top_d));
-
-  logic [N*(InW+Bits)-1:0] x2;
-  logic [N*YW-1:0]         y_d;
-  for (genvar i = 0; i < N; i++) begin : gen_x2
-    assign x2[i*(InW+Bits) +: InW+Bits] = {x2_q[i*InW +: InW], Bits'(0)};
+  if (WW > 1) begin : gen_top
+    specular_setup_prio #(.W(WW), .FromTop(1'b0)) u_top (.a_i (all_d[TopHi:TopLo]), .any_o (unused_any), .value_o (top_d));
+  end else begin : gen_top_fixed
+    assign top_d      = '0;
+    assign unused_any = all_d[TopLo];
   end
-  specular_setup_rshift_n #(.N(N), .InW(InW + Bits), .OutW(YW), .SW(PL), .Signed(1'b1),
+`ifndef SYNTHESIS
+  /* verilator lint_off UNUSEDSIGNAL */  // read by name, by a caller that bounds the window
+  logic in_window;
+  /* verilator lint_on UNUSEDSIGNAL */
+  assign in_window = all_d == '0 || ((all_d >> (TopHi + 1)) == '0 && all_d[TopHi:TopLo] != '0);
+`endif
+
+  // (x_i 2^Bits) >> TopLo, exact or a floor, then the rest of the shift.
+  localparam int XW = InW + Bits - TopLo;
+  logic [N*XW-1:0]  x2;
+  logic [N*YW-1:0]  y_d;
+  for (genvar i = 0; i < N; i++) begin : gen_x2
+    logic signed [InW+Bits-1:0] full;
+    assign full = {x2_q[i*InW +: InW], Bits'(0)};
+    assign x2[i*XW +: XW] = XW'(full >>> TopLo);
+  end
+  specular_setup_rshift_n #(.N(N), .InW(XW), .OutW(YW), .SW(PL), .Signed(1'b1),
                             .SetupII(SetupII)) u_shift (
     .clk_i (clk_i), .en_i (en_i), .a_i (x2), .s_i (top_q), .y_o (y_d));
 

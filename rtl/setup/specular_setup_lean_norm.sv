@@ -18,7 +18,9 @@
 //   S, +1           s2 = rshift_round(seed^2, 8)
 //   S, +1, +2       xs2 = rshift_round(m s2, 30); e = 3 2^28 - xs2
 //   S, +1           r = rshift_round(seed e, 19) (Q28)
-//   S, +1, +2       u_i = rshift_round(v_i r, 17 - k): a shift by 16 - k, then (y + 1) >> 1
+//   S, +1, +2       u_i = rshift_round(v_i r, 17 - k): v_i shifted left by up to InW - 1
+//                   before the product, a shift by one of two constants after it, then
+//                   (y + 1) >> 1
 // (S: a specular_setup_smul; with SetupII > 1 a lane of the block's specular_setup_fmul, one
 // stage.) Stages: the localparam Stages (specular_setup_lean_pkg::norm_stages).
 // en_i freezes every stage. No reset.
@@ -281,36 +283,58 @@ module specular_setup_lean_norm #(
     end
   end
 
-  // ---- u_i = rshift_round(v_i r, 17 - k) ----
-  logic [3*InW-1:0] v_r;
-  specular_delay #(.Width(3 * InW), .Depth(TR), .Reset(1'b0), .Ram(1'b1)) u_dly_v (
+  // ---- u_i = rshift_round(v_i r, 17 - k), as rshift_round(v'_i r, PS + e) ----
+  // |v_i| 2^k <= sqrt(m) < 2^(B/2), and k >= KMin (a nonzero square has at most 2 InW bits), so
+  // for k > KMin the exact v'_i = v_i 2^(k - KMin - 1) fits InW signed bits, and v'_i = v_i for
+  // k = KMin: the shifter sits on the InW-bit operand before the product, and the product's
+  // shift is one of two constants, PS = C1 - KMin - 1 or PS + 1 (e: k = KMin), a multiplexer
+  // (docs/setup_hw.md#the-lean-rtl). The left shift by a = k - KMin - 1 is a right shift of
+  // v_i 2^(InW-1) by rs = InW - 1 - a = ush + B/2 - C1 (InW - 1 for k = KMin; the zero vector's
+  // rs is any: v_i = 0).
+  localparam int KMin = B / 2 - InW;
+  localparam int PS   = C1 - KMin - 1;
+  localparam int RsW  = $clog2(InW);
+  if (C1 - B / 2 < 0 || C1 - KMin >= (1 << UW)) begin : gen_rs_check
+    `SPEC_PARAM_ERROR("specular_setup_lean_norm: the pre-shift needs ush >= C1 - B/2 >= 0 and C1 - KMin within UW bits")
+  end
+  logic           e_k, e_u;
+  logic [RsW-1:0] rs_k, rs_v;
+  assign e_k  = ush_q == UW'(C1 - KMin);
+  assign rs_k = e_k ? RsW'(InW - 1) : RsW'(ush_q - UW'(C1 - B / 2));
+  specular_delay #(.Width(RsW), .Depth(TR - 1 - TK), .Reset(1'b0), .Ram(1'b1)) u_dly_rs (
+    .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (rs_k), .q_o (rs_v));
+  specular_delay #(.Width(1), .Depth(TR + LVr - TK), .Reset(1'b0), .Ram(1'b1)) u_dly_e (
+    .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (e_k), .q_o (e_u));
+  logic [3*InW-1:0]       v_r;
+  logic [3*(2*InW-1)-1:0] v_up;
+  logic [3*InW-1:0]       vs_d, vs_q;
+  specular_delay #(.Width(3 * InW), .Depth(TR - 1), .Reset(1'b0), .Ram(1'b1)) u_dly_v (
     .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i ({z_i, y_i, x_i}), .q_o (v_r));
-  logic [UW-1:0] ush_u;
-  specular_delay #(.Width(UW), .Depth(TR + LVr - TK), .Reset(1'b0), .Ram(1'b1)) u_dly_k (
-    .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (ush_q), .q_o (ush_u));
+  for (genvar i = 0; i < 3; i++) begin : gen_up
+    assign v_up[i*(2*InW-1) +: 2*InW-1] = {v_r[i*InW +: InW], (InW - 1)'(0)};
+  end
+  specular_setup_rshift_n #(.N(3), .InW(2 * InW - 1), .OutW(InW), .SW(RsW), .Signed(1'b1),
+                            .SetupII(SetupII)) u_pre (
+    .clk_i (clk_i), .en_i (en_i), .a_i (v_up), .s_i (rs_v), .y_o (vs_d));
+  always_ff @(posedge clk_i) begin
+    if (en_i) vs_q <= vs_d;
+  end
   logic signed [UnitW-1:0] u [3];
-  logic [3*PW-1:0]          vr3;
-  logic [3*(UnitW+2)-1:0]   y3;
-  specular_setup_rshift_n #(.N(3), .InW(PW), .OutW(UnitW + 2), .SW(UW), .Signed(1'b1),
-                            .SetupII(SetupII)) u_ush (
-    .clk_i (clk_i), .en_i (en_i), .a_i (vr3), .s_i (ush_u), .y_o (y3));
   for (genvar i = 0; i < 3; i++) begin : gen_scale
     logic signed [PW-1:0]      vr;
-    logic signed [UnitW+1:0]   y_d, y_q;
-    assign vr3[i*PW +: PW] = vr;
-    assign y_d = y3[i*(UnitW+2) +: UnitW+2];
+    logic signed [UnitW+1:0]   y_q;
     if (SetupII > 1) begin : gen_vr_fold
-      assign f_a[(7 + i)*FA +: FA] = FA'($signed(v_r[i*InW +: InW]));
+      assign f_a[(7 + i)*FA +: FA] = FA'($signed(vs_q[i*InW +: InW]));
       assign f_b[(7 + i)*FB +: FB] = FB'($signed(r_q));
       assign vr = (InW + RW)'(f_p[(7 + i)*(FA + FB) +: FA + FB]);
     end else begin : gen_vr_pipe
       specular_setup_smul #(.ABits(InW), .BBits(RW), .TileBits(TileBits)) u_vr (
-        .clk_i (clk_i), .en_i (en_i), .a_i (v_r[i*InW +: InW]), .b_i (r_q), .p_o (vr));
+        .clk_i (clk_i), .en_i (en_i), .a_i (vs_q[i*InW +: InW]), .b_i (r_q), .p_o (vr));
     end
     always_ff @(posedge clk_i) begin
       if (en_i) begin
-        // s = RFrac + B/2 - Frac - k >= 3: the shift by s - 1, then the rounding.
-        y_q  <= y_d;
+        // The shift by PS + e, then the rounding.
+        y_q  <= e_u ? (UnitW + 2)'(vr >>> (PS + 1)) : (UnitW + 2)'(vr >>> PS);
         u[i] <= UnitW'((y_q + (UnitW + 2)'(1)) >>> 1);
       end
     end

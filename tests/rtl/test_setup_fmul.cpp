@@ -8,6 +8,11 @@
 // for at most 12 steps, a one-hot token above). Each slot holds random operands (every width's
 // extremes among them) for SetupII clocks or, at random, longer (a stalled stage); after the
 // advance every p_o lane must be a_j * b_j, and pc_o must hold the same in the advancing clock.
+// The full-rate product specular_setup_smul (SetupII = 1) the same way in six configurations:
+// one tile, 2 x 2, 2 x 3 and 3 x 4 signed tiles (one to four adder levels), the 16-bit tiles of
+// the UP5K and the LUT tree of magnitudes; every enabled clock takes a new pair, a random third
+// of the clocks stall, and p_o must be the product of the pair taken smul_stages enabled
+// clocks earlier.
 #include "Vsetup_fmul_a18b18_ii5.h"
 #include "Vsetup_fmul_a18b69_ii16.h"
 #include "Vsetup_fmul_a20b20_ii6.h"
@@ -15,11 +20,18 @@
 #include "Vsetup_fmul_a35b35_ii8.h"
 #include "Vsetup_fmul_a35b52_ii8.h"
 #include "Vsetup_fmul_a52b52_ii8.h"
+#include "Vsetup_smul_a18b18_t18.h"
+#include "Vsetup_smul_a20b20_t16.h"
+#include "Vsetup_smul_a28b28_t0.h"
+#include "Vsetup_smul_a28b28_t18.h"
+#include "Vsetup_smul_a35b52_t18.h"
+#include "Vsetup_smul_a36b53_t18.h"
 #include "rtl_harness.hpp"
 
 #include <catch2/catch.hpp>
 
 #include <cstdint>
+#include <deque>
 #include <random>
 #include <string>
 #include <type_traits>
@@ -154,7 +166,68 @@ void check_unit(const Config& c, uint64_t seed, int slots) {
   CHECK(stalled > slots / 8);  // the stalled slots really occurred
 }
 
+// specular_setup_smul's latency, as docs/setup_hw.md#the-lean-rtl states it: three stages
+// around specular_pipe_mul's 1 + clog2(ceil(b / 2)).
+int smul_latency(int b_bits) {
+  int levels = 0;
+  while ((1 << levels) < (b_bits + 1) / 2) ++levels;
+  return 3 + 1 + levels;
+}
+
+template <class Model>
+void check_smul(int a_bits, int b_bits, uint64_t seed, int clocks) {
+  Model m;
+  const int p_bits = a_bits + b_bits;
+  const int latency = smul_latency(b_bits);
+  std::mt19937_64 rng(seed);
+  std::vector<uint32_t> a(words_of(a_bits)), b(words_of(b_bits));
+  std::deque<i128> taken;  // the products of the pairs taken, oldest first
+  m.clk_i = 0;
+  m.en_i = 0;
+  int checked = 0, stalls = 0;
+  i128 last = 0;
+  bool have_last = false;
+  for (int k = 0; k < clocks; ++k) {
+    const i128 av = operand(rng, a_bits), bv = operand(rng, b_bits);
+    set_field(a, 0, a_bits, av);
+    set_field(b, 0, b_bits, bv);
+    put_words(m.a_i, a);
+    put_words(m.b_i, b);
+    m.en_i = (rng() % 3 != 0) ? 1 : 0;
+    tick(m);
+    const i128 got = get_field(get_words(m.p_o, words_of(p_bits)), 0, p_bits);
+    if (m.en_i) {
+      taken.push_back(av * bv);
+      if (static_cast<int>(taken.size()) == latency) {
+        if (got != taken.front()) {
+          FAIL("clock " << k << ": p_o " << static_cast<double>(got) << ", want "
+                        << static_cast<double>(taken.front()));
+        }
+        taken.pop_front();
+        ++checked;
+        last = got;
+        have_last = true;
+      }
+    } else {
+      ++stalls;
+      if (have_last && got != last) FAIL("clock " << k << ": p_o moved in a stall");
+    }
+  }
+  CHECK(checked > clocks / 2);
+  CHECK(stalls > clocks / 4);
+}
+
 }  // namespace
+
+TEST_CASE("setup smul RTL: the product of the pair taken smul_stages enabled clocks earlier, exact") {
+  constexpr int kClocks = 20000;
+  SECTION("18 x 18, one signed tile") { check_smul<Vsetup_smul_a18b18_t18>(18, 18, 11, kClocks); }
+  SECTION("28 x 28, 2 x 2 tiles") { check_smul<Vsetup_smul_a28b28_t18>(28, 28, 12, kClocks); }
+  SECTION("35 x 52, 2 x 3 tiles") { check_smul<Vsetup_smul_a35b52_t18>(35, 52, 13, kClocks); }
+  SECTION("36 x 53, 3 x 4 tiles") { check_smul<Vsetup_smul_a36b53_t18>(36, 53, 14, kClocks); }
+  SECTION("20 x 20, 16-bit tiles") { check_smul<Vsetup_smul_a20b20_t16>(20, 20, 15, kClocks); }
+  SECTION("28 x 28, the LUT tree") { check_smul<Vsetup_smul_a28b28_t0>(28, 28, 16, kClocks); }
+}
 
 TEST_CASE("setup fmul RTL: every lane's product exact, each slot held SetupII clocks or stalled longer") {
   constexpr int kSlots = 3000;
