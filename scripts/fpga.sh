@@ -338,8 +338,11 @@ for top in "${tops[@]}"; do
     mkdir -p "$dir"
     noflat=""
     [ "$hier" = 1 ] && noflat=" -noflatten"
-    # After a hierarchical synthesis: the commands that make the netlist placed and counted.
-    prune="flatten; opt_clean -purge"
+    # After synthesis, the commands that make the netlist placed and counted: identical mapped
+    # cells merged (opt_merge -share_all; synth_* leaves them, rtl/fpga/README.md#merged-cells),
+    # what no output reads removed; a hierarchical netlist flattened first.
+    post="opt_merge -share_all; opt_clean -purge"
+    [ "$hier" = 1 ] && post="flatten; $post"
     case "$dev" in
       hx8k) pnr_dev="--hx8k --package ct256"; freq=$freq_hx8k; synth="synth_ice40$noflat" ;;
       up5k) pnr_dev="--up5k --package sg48";  freq=$freq_up5k; synth="synth_ice40 -dsp$noflat" ;;
@@ -362,11 +365,9 @@ for top in "${tops[@]}"; do
           # kept for the blocks; then the flat netlist without what no output reads (a block's
           # unused outputs, which -noflatten keeps), counted again: that is what is placed.
           echo "tee -q -o $dir/stat_hier.txt stat -top $harness"
-          echo "${prune//; /$'\n'}"
-          echo "tee -q -o $dir/stat.txt stat"
-        else
-          echo "tee -q -o $dir/stat.txt stat -top $harness"
         fi
+        echo "${post//; /$'\n'}"
+        echo "tee -q -o $dir/stat.txt stat -top $harness"
         echo "write_json $dir/$harness.json"
       fi
     } > "$dir/synth.ys"
@@ -483,7 +484,7 @@ PY3
     t1=$(date +%s)
     if [[ "$dev" == ecp5* ]]; then export FPGA_NEXTPNR_VERSION=$ecp5_version; else export FPGA_NEXTPNR_VERSION=$ice40_version; fi
     python3 - "$dir" "$top" "$dev" "$harness" "$core" "$freq" "$seed" "$synth_rc" "$pnr_rc" \
-      "$((t1 - t0))" "$((t_synth - t0))" "$synth${noflat:+; $prune}" "$phong_cfg" "$label" "${run_params[@]+"${run_params[@]}"}" <<'PY'
+      "$((t1 - t0))" "$((t_synth - t0))" "$synth; $post" "$phong_cfg" "$label" "${run_params[@]+"${run_params[@]}"}" <<'PY'
 import json, os, re, subprocess, sys
 d, top, dev, harness, core, freq, seed, synth_rc, pnr_rc, secs, synth_secs, synth, phong_cfg, label = sys.argv[1:15]
 params = sys.argv[15:]

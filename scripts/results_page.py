@@ -235,7 +235,8 @@ def section_fpga(f, rel):
                 "counts, harness included; smallest LFE5U: the smallest part whose LUT4 positions (LUT4 + 2 CCU2C), "
                 "flip-flops, MULT18X18D and DP16KD hold those counts."
                 + "".join(f" {', '.join(name(e) for e in ecp5 if e.get('synthesis') == syn)}: `{syn}` "
-                          "([hierarchical synthesis](../rtl/fpga/README.md#hierarchical-synthesis))."
+                          + ("([hierarchical synthesis](../rtl/fpga/README.md#hierarchical-synthesis))."
+                             if "-noflatten" in syn else "([merged cells](../rtl/fpga/README.md#merged-cells)).")
                           for syn in dict.fromkeys(e.get("synthesis", "synth_ecp5") for e in ecp5)
                           if syn != "synth_ecp5"), ""]
         rows = [[name(e), e["part"], e["multipliers"], f"`{e['rtl']}`", e["date"],
