@@ -288,6 +288,9 @@ core_of()    { case "$1" in unit) echo specular_unit ;; stream) echo specular_st
                             phong) echo phong_stream ;; setup) echo specular_setup ;; system) echo specular_system ;;
                             mul) echo specular_pipe_mul ;; setup_lean) echo specular_setup_lean ;; esac; }
 
+# The merge of identical mapped cells on the ECP5 (rtl/fpga/README.md#merged-cells).
+ecp5_merge="opt_merge -share_all t:LUT4 t:PFUMX %ci1:+[ALUT,BLUT] %ci1:+[Z] %d t:TRELLIS_FF t:MULT18X18D t:DP16KD %u %u %u"
+
 # Everything a run's result depends on: sources, ROM files (the defaults in roms/ and any
 # file named by a parameter), parameters, options, this script and the tool versions.
 run_key() {
@@ -338,11 +341,15 @@ for top in "${tops[@]}"; do
     mkdir -p "$dir"
     noflat=""
     [ "$hier" = 1 ] && noflat=" -noflatten"
-    # After synthesis, the commands that make the netlist placed and counted: identical mapped
-    # cells merged (opt_merge -share_all; synth_* leaves them, rtl/fpga/README.md#merged-cells),
-    # what no output reads removed; a hierarchical netlist flattened first.
-    post="opt_merge -share_all; opt_clean -purge"
-    [ "$hier" = 1 ] && post="flatten; $post"
+    # After synthesis, the commands that make the netlist placed and counted: on the ECP5,
+    # identical mapped cells merged (synth_ecp5 leaves them, rtl/fpga/README.md#merged-cells):
+    # LUT4s except those of a wide LUT (a PFUMX's inputs: nextpnr-ecp5 packs each with its
+    # own), flip-flops, MULT18X18D and DP16KD; then what no output reads removed; a
+    # hierarchical netlist flattened first.
+    post=""
+    [[ "$dev" == ecp5* ]] && post="$ecp5_merge"
+    [ "$hier" = 1 ] && post="flatten${post:+; $post}"
+    [ -z "$post" ] || post="$post; opt_clean -purge"
     case "$dev" in
       hx8k) pnr_dev="--hx8k --package ct256"; freq=$freq_hx8k; synth="synth_ice40$noflat" ;;
       up5k) pnr_dev="--up5k --package sg48";  freq=$freq_up5k; synth="synth_ice40 -dsp$noflat" ;;
@@ -366,7 +373,7 @@ for top in "${tops[@]}"; do
           # unused outputs, which -noflatten keeps), counted again: that is what is placed.
           echo "tee -q -o $dir/stat_hier.txt stat -top $harness"
         fi
-        echo "${post//; /$'\n'}"
+        [ -z "$post" ] || echo "${post//; /$'\n'}"
         echo "tee -q -o $dir/stat.txt stat -top $harness"
         echo "write_json $dir/$harness.json"
       fi
@@ -484,7 +491,7 @@ PY3
     t1=$(date +%s)
     if [[ "$dev" == ecp5* ]]; then export FPGA_NEXTPNR_VERSION=$ecp5_version; else export FPGA_NEXTPNR_VERSION=$ice40_version; fi
     python3 - "$dir" "$top" "$dev" "$harness" "$core" "$freq" "$seed" "$synth_rc" "$pnr_rc" \
-      "$((t1 - t0))" "$((t_synth - t0))" "$synth; $post" "$phong_cfg" "$label" "${run_params[@]+"${run_params[@]}"}" <<'PY'
+      "$((t1 - t0))" "$((t_synth - t0))" "$synth${post:+; $post}" "$phong_cfg" "$label" "${run_params[@]+"${run_params[@]}"}" <<'PY'
 import json, os, re, subprocess, sys
 d, top, dev, harness, core, freq, seed, synth_rc, pnr_rc, secs, synth_secs, synth, phong_cfg, label = sys.argv[1:15]
 params = sys.argv[15:]
