@@ -288,8 +288,10 @@ core_of()    { case "$1" in unit) echo specular_unit ;; stream) echo specular_st
                             phong) echo phong_stream ;; setup) echo specular_setup ;; system) echo specular_system ;;
                             mul) echo specular_pipe_mul ;; setup_lean) echo specular_setup_lean ;; esac; }
 
-# The merge of identical mapped cells on the ECP5 (rtl/fpga/README.md#merged-cells).
-ecp5_merge="opt_merge -share_all t:LUT4 t:PFUMX %ci1:+[ALUT,BLUT] %ci1:+[Z] %d t:TRELLIS_FF t:MULT18X18D t:DP16KD %u %u %u"
+# The merge of identical mapped cells on the ECP5 (rtl/fpga/README.md#merged-cells): LUT4s,
+# flip-flops, multipliers and block RAMs; not carry cells (nextpnr-ecp5 packs each chain
+# as it is) nor LUT RAM.
+ecp5_merge="opt_merge -share_all t:LUT4 t:TRELLIS_FF t:MULT18X18D t:DP16KD %u %u %u"
 
 # Everything a run's result depends on: sources, ROM files (the defaults in roms/ and any
 # file named by a parameter), parameters, options, this script and the tool versions.
@@ -342,10 +344,8 @@ for top in "${tops[@]}"; do
     noflat=""
     [ "$hier" = 1 ] && noflat=" -noflatten"
     # After synthesis, the commands that make the netlist placed and counted: on the ECP5,
-    # identical mapped cells merged (synth_ecp5 leaves them, rtl/fpga/README.md#merged-cells):
-    # LUT4s except those of a wide LUT (a PFUMX's inputs: nextpnr-ecp5 packs each with its
-    # own), flip-flops, MULT18X18D and DP16KD; then what no output reads removed; a
-    # hierarchical netlist flattened first.
+    # identical mapped cells merged (synth_ecp5 leaves them, rtl/fpga/README.md#merged-cells);
+    # then what no output reads removed; a hierarchical netlist flattened first.
     post=""
     [[ "$dev" == ecp5* ]] && post="$ecp5_merge"
     [ "$hier" = 1 ] && post="flatten${post:+; $post}"
@@ -353,7 +353,7 @@ for top in "${tops[@]}"; do
     case "$dev" in
       hx8k) pnr_dev="--hx8k --package ct256"; freq=$freq_hx8k; synth="synth_ice40$noflat" ;;
       up5k) pnr_dev="--up5k --package sg48";  freq=$freq_up5k; synth="synth_ice40 -dsp$noflat" ;;
-      ecp5*) pnr_dev="";                      freq=$freq_ecp5; synth="synth_ecp5$noflat" ;;
+      ecp5*) pnr_dev="";                      freq=$freq_ecp5; synth="synth_ecp5 -nowidelut$noflat" ;;
     esac
     {
       echo "read_verilog -sv -defer${incflags} ${sources[*]}"
