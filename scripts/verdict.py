@@ -151,17 +151,31 @@ def break_even(points, budget):
     return out
 
 
+# The ECP5 synthesis of the current flow (scripts/fpga.sh, rtl/fpga/README.md#merged-cells): a
+# comparison takes every core's entry of it where one is recorded.
+CURRENT_FLOW = "-nowidelut"
+
+
+def current_flow(e):
+    return CURRENT_FLOW in e.get("synthesis", "")
+
+
 def ecp5_entry(figs, core, config=None, setup_ii=None):
     """The docs/fpga_figures.json ECP5 entry of a core with MULT18X18D tiles: a placed and routed run
-    (ecp5_runs) first, else the synthesis counts (synthesis_runs, part ECP5)."""
-    for e in figs.get("ecp5_runs", []):
-        if (e.get("core") == core and e.get("config") == config and e.get("setup_ii") == setup_ii
-                and e.get("multipliers", "").startswith("MULT18X18D")):
-            return dict(e, placed=True)
-    for e in figs.get("synthesis_runs", []):
-        if (e.get("core") == core and e.get("part") == "ECP5" and e.get("config") == config
-                and (e.get("setup_ii") or 1) == (setup_ii or 1)):
-            return dict(e, placed=False, fmax_mhz=None)
+    (ecp5_runs) first, else the synthesis counts (synthesis_runs, part ECP5); of either, one of the
+    current flow first, then the latest."""
+    def best(entries):
+        return max(entries, key=lambda e: (current_flow(e), e.get("date", ""))) if entries else None
+    placed = best([e for e in figs.get("ecp5_runs", [])
+                   if e.get("core") == core and e.get("config") == config and e.get("setup_ii") == setup_ii
+                   and e.get("multipliers", "").startswith("MULT18X18D")])
+    synth = best([e for e in figs.get("synthesis_runs", [])
+                  if e.get("core") == core and e.get("part") == "ECP5" and e.get("config") == config
+                  and (e.get("setup_ii") or 1) == (setup_ii or 1)])
+    if placed and (current_flow(placed) or not synth or not current_flow(synth)):
+        return dict(placed, placed=True)
+    if synth:
+        return dict(synth, placed=False, fmax_mhz=None)
     return None
 
 

@@ -88,6 +88,26 @@ close(res["b1"][0]["host_ratio"], 13.0, "stream/phong")
 close(res["b1"][0]["host_ratio_at_clock"], 15.6, "stream/phong at each clock")
 close(res["b1"][0]["hw_ratio"], (0.25 / 0.5) / 2, "system at m = 1: 1/4 px/clock, share 0.5, over Phong's 2")
 
+# An entry of the current ECP5 flow is taken over an older one of the same core, whatever their
+# order; a placed entry over synthesis counts of the same flow; synthesis counts of the current
+# flow over an older placed run.
+old_run = {"core": "phong_stream", "config": "c", "setup_ii": None, "multipliers": "MULT18X18D tiles",
+           "synthesis": "synth_ecp5", "date": "2026-12-07", "lut4": 1}
+new_run = dict(old_run, synthesis="synth_ecp5 -nowidelut; opt_merge", date="2026-12-06", lut4=2)
+check(verdict.ecp5_entry({"ecp5_runs": [old_run, new_run]}, "phong_stream", "c")["lut4"] == 2,
+      "the current flow's entry first")
+check(verdict.ecp5_entry({"ecp5_runs": [new_run, old_run]}, "phong_stream", "c")["lut4"] == 2,
+      "the current flow's entry first, either order")
+syn_new = {"core": "specular_system", "part": "ECP5", "config": None, "setup_ii": 1,
+           "synthesis": "synth_ecp5 -nowidelut -noflatten", "lut4": 3}
+placed_old = {"core": "specular_system", "config": None, "setup_ii": None, "multipliers": "MULT18X18D tiles",
+              "synthesis": "synth_ecp5 -noflatten", "lut4": 4}
+e = verdict.ecp5_entry({"ecp5_runs": [placed_old], "synthesis_runs": [syn_new]}, "specular_system")
+check(e["lut4"] == 3 and not e["placed"], "current synthesis counts over an older placed run")
+e = verdict.ecp5_entry({"ecp5_runs": [dict(placed_old, synthesis="synth_ecp5 -nowidelut -noflatten")],
+                        "synthesis_runs": [syn_new]}, "specular_system")
+check(e["lut4"] == 4 and e["placed"], "a placed run over synthesis counts of the same flow")
+
 # The committed record: the section is written for every budget and span length.
 with open(os.path.join(ROOT, "docs", "fpga_figures.json")) as f:
     figs = json.load(f)
