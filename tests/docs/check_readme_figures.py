@@ -172,20 +172,27 @@ def verdict_figure(budget, span, field):
     return lambda d: verdict_rows(d)[budget][_VERDICT_SPANS.index(span)][field]
 
 
+def _ecp5_entry(d, core, config=None, setup_ii=None):
+    """The entry the verdict takes (scripts/verdict.py ecp5_entry: the current ECP5 flow's first)."""
+    sys.path.insert(0, os.path.join(d.root, "scripts"))
+    import verdict  # scripts/verdict.py
+    return verdict.ecp5_entry(d.fpga, core, config, setup_ii)
+
+
 def phong_entry(d, config):
-    return next(e for e in d.fpga["ecp5_runs"] if e.get("core") == "phong_stream" and e.get("config") == config)
+    return _ecp5_entry(d, "phong_stream", config)
 
 
 def device_entry(d, config):
-    return next(e for e in d.fpga["ecp5_runs"] if e.get("core") == "specular_stream" and e.get("config") == config)
+    return _ecp5_entry(d, "specular_stream", config)
 
 
 def hw_long_span_design(d, budget="b1", spans=16):
     """The ECP5 entry of the device system the verdict picks at the budget on spans of `spans` pixels (at each
     core's clock)."""
     name = verdict_rows(d)[budget][_VERDICT_SPANS.index(spans)]["hw_at_clock"]["name"]
-    return next(e for e in d.fpga["ecp5_runs"] if e.get("core") == "specular_system"
-                and f"SetupII={e.get('setup_ii', 1)}" in name)
+    k = int(re.search(r"SetupII=(\d+)", name).group(1))
+    return _ecp5_entry(d, "specular_system", None, None if k == 1 else k)
 
 
 def positions(e):
