@@ -18,19 +18,24 @@
 //
 // TileBits picks the resources (docs/pipeline.md#multiplier-styles): 0 is the LUT tree above,
 // for a part without DSPs (the iCE40-HX8K); 16 (the UP5K's SB_MAC16) or 18 (the ECP5's
-// MULT18X18D) cut a and b into TileBits-wide tiles, register the tiles and each tile product
-// (one DSP with its input and output registers), add the products in a registered binary tree
-// and delay the sum to the same pipe_mul_stages(BBits) clocks, so both styles are bit-exact
+// MULT18X18D) delay a and b by the clocks the shorter tree leaves over, cut them into
+// TileBits-wide tiles, register the tiles and each tile product (one DSP with its input and
+// output registers) and add the products in a registered binary tree: the same
+// pipe_mul_stages(BBits) clocks, so both styles are bit-exact
 // and interchangeable. a3_i is unused there (a caller may tie it to 0). The
 // tiles must be few enough that 2 + clog2(tiles) <= pipe_mul_stages(BBits); the block refuses
-// otherwise.
+// otherwise. Signed = 1 (DSP tiles only) takes a_i and b_i as signed and gives the signed
+// product: unsigned low tiles of TileBits - 1 bits and a signed top tile, so every tile product
+// is one signed TileBits x TileBits product and the rows add as they are (the lean setup's
+// products, rtl/setup/specular_setup_smul.sv).
 
 `include "specular_assert.svh"
 
 module specular_pipe_mul #(
   parameter int ABits    = 16,
   parameter int BBits    = 16,
-  parameter int TileBits = 0    // 0: LUT tree; else the DSP tile width (16 UP5K, 18 ECP5)
+  parameter int TileBits = 0,   // 0: LUT tree; else the DSP tile width (16 UP5K, 18 ECP5)
+  parameter bit Signed   = 1'b0 // signed operands and product (DSP tiles only)
 ) (
   input  logic                   clk_i,
   input  logic                   en_i,
@@ -43,14 +48,19 @@ module specular_pipe_mul #(
   localparam bit Tree   = TileBits == 0;
   localparam int PBits  = ABits + BBits;
   localparam int Levels = specular_pkg::pipe_mul_stages(BBits);
-  localparam int TilesA = Tree ? 1 : (ABits + TileBits - 1) / TileBits;
-  localparam int TilesB = Tree ? 1 : (BBits + TileBits - 1) / TileBits;
+  // Signed: 1 + ceil((w - TileBits) / (TileBits - 1)) tiles of a w-bit operand.
+  localparam int TilesA = Tree ? 1 : !Signed ? (ABits + TileBits - 1) / TileBits
+                        : (ABits <= TileBits) ? 1 : 1 + (ABits - 2) / (TileBits - 1);
+  localparam int TilesB = Tree ? 1 : !Signed ? (BBits + TileBits - 1) / TileBits
+                        : (BBits <= TileBits) ? 1 : 1 + (BBits - 2) / (TileBits - 1);
+  // A tile's step: its width, or the low tiles' TileBits - 1 when signed.
+  localparam int Step   = (Signed && !Tree) ? TileBits - 1 : TileBits;
   // Rows into the adder tree: the radix-4 digit rows, or the tile products.
   localparam int NRows  = Tree ? (BBits + 1) / 2 : TilesA * TilesB;
   // Level 1 registers the rows, the levels after it halve them until one is left. The DSP
   // style registers the tile operands first (the DSP's input registers: a ROM or a carry
-  // chain in front of a multiplier would otherwise share its stage) and then delays the sum
-  // to Levels.
+  // chain in front of a multiplier would otherwise share its stage), after its operands have
+  // waited out Levels - AddLevels clocks.
   localparam int TreeLevels = 1 + ((NRows > 1) ? $clog2(NRows) : 0);
   localparam int AddLevels  = TreeLevels + (Tree ? 0 : 1);
 
@@ -64,6 +74,9 @@ module specular_pipe_mul #(
   if (TileBits < 0 || TileBits == 1 || AddLevels > Levels) begin : gen_tile_check
     `SPEC_PARAM_ERROR("specular_pipe_mul: TileBits must be 0 or >= 2, with 2 + clog2(tiles) <= pipe_mul_stages(BBits)")
   end
+  if (Signed && Tree) begin : gen_signed_check
+    `SPEC_PARAM_ERROR("specular_pipe_mul: Signed needs DSP tiles (TileBits > 0)")
+  end
 
   // rows[l][j]: row j after level l; level 0 is combinational.
   logic [PBits-1:0] rows [TreeLevels+1][NRows];
@@ -71,23 +84,55 @@ module specular_pipe_mul #(
   if (!Tree) begin : gen_tiles
     logic unused_a3;
     assign unused_a3 = ^a3_i;
-    logic [TilesA*TileBits-1:0] a_pad;
+    // Tile i of an operand: TileBits bits from bit i Step; signed, the low tiles are the
+    // TileBits - 1 bits zero-extended and the top tile the rest sign-extended.
+    // The DSP style's tree is shorter than the radix-4 one: the operands wait out the
+    // difference before their tiles (where operands that several products share are the same
+    // registers, which a synthesis can merge; the sum is a product's own).
+    logic [ABits-1:0] a_al;
+    logic [BBits-1:0] b_al;
+    specular_delay #(.Width (ABits + BBits), .Depth (Levels - AddLevels), .Reset (1'b0)) u_align (
+      .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i ({a_i, b_i}), .q_o ({a_al, b_al}));
+    logic [TilesA*TileBits-1:0] a_tiles;
     logic [TilesB*TileBits-1:0] b_tiles;
-    assign a_pad   = (TilesA * TileBits)'(a_i);
-    assign b_tiles = (TilesB * TileBits)'(b_i);
+    if (Signed) begin : gen_signed_tiles
+      logic [TilesA*Step:0] a_ext;
+      logic [TilesB*Step:0] b_ext;
+      assign a_ext = (TilesA * Step + 1)'($signed(a_al));
+      assign b_ext = (TilesB * Step + 1)'($signed(b_al));
+      for (genvar i = 0; i < TilesA; i++) begin : gen_ta
+        assign a_tiles[i*TileBits +: TileBits] = (i == TilesA - 1) ? a_ext[i*Step +: TileBits]
+                                                                   : {1'b0, a_ext[i*Step +: Step]};
+      end
+      for (genvar j = 0; j < TilesB; j++) begin : gen_tb
+        assign b_tiles[j*TileBits +: TileBits] = (j == TilesB - 1) ? b_ext[j*Step +: TileBits]
+                                                                   : {1'b0, b_ext[j*Step +: Step]};
+      end
+    end else begin : gen_unsigned_tiles
+      assign a_tiles = (TilesA * TileBits)'(a_al);
+      assign b_tiles = (TilesB * TileBits)'(b_al);
+    end
     for (genvar i = 0; i < TilesA; i++) begin : gen_a
       for (genvar j = 0; j < TilesB; j++) begin : gen_b
         logic [TileBits-1:0]   ta_q, tb_q;
         logic [2*TileBits-1:0] tp;
         always_ff @(posedge clk_i) begin
           if (en_i) begin
-            ta_q <= a_pad[i*TileBits +: TileBits];
+            ta_q <= a_tiles[i*TileBits +: TileBits];
             tb_q <= b_tiles[j*TileBits +: TileBits];
           end
         end
-        assign tp = (2 * TileBits)'(ta_q) * (2 * TileBits)'(tb_q);
-        // The padding tiles' bits are 0, so every product fits the PBits of a * b.
-        assign rows[0][i*TilesB+j] = PBits'({{PBits{1'b0}}, tp} << ((i + j) * TileBits));
+        if (Signed) begin : gen_signed_tp
+          // Modulo 2^PBits the rows add to the exact product, which fits PBits signed bits.
+          logic signed [PBits+2*TileBits-1:0] tp_x;
+          assign tp   = $signed(ta_q) * $signed(tb_q);
+          assign tp_x = (PBits + 2 * TileBits)'($signed(tp));
+          assign rows[0][i*TilesB+j] = PBits'(tp_x <<< ((i + j) * Step));
+        end else begin : gen_unsigned_tp
+          assign tp = (2 * TileBits)'(ta_q) * (2 * TileBits)'(tb_q);
+          // The padding tiles' bits are 0, so every product fits the PBits of a * b.
+          assign rows[0][i*TilesB+j] = PBits'({{PBits{1'b0}}, tp} << ((i + j) * TileBits));
+        end
       end
     end
   end else begin : gen_digits
@@ -139,9 +184,7 @@ module specular_pipe_mul #(
     end
   end
 
-  // The DSP style's tree is shorter than the radix-4 one: the sum waits out the difference.
-  specular_delay #(.Width (PBits), .Depth (Levels - AddLevels), .Reset (1'b0)) u_align (
-    .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i (rows[TreeLevels][0]), .q_o (p_o));
+  assign p_o = rows[TreeLevels][0];
 
   // Assertions (rtl/prim/specular_assert.svh): the caller's 3a matches a (it registers both,
   // from the same a, on the same enable). No reset here: checked from the first enabled edge
