@@ -47,7 +47,9 @@ module specular_out_buf #(
   // (about 10 LUT4 a bit at Width 120, against 1 this way).
   logic head_en, tail_en;
   always_comb begin
-    // push alone into an empty buffer, push and pop, or pop alone
+    // push alone into an empty buffer, push and pop, or pop alone. Push and pop together find
+    // one pixel: a pop needs an entry, and a push needs adv_q, the registered room (count <= 1,
+    // AdvIsRoom_A), so the buffer is never full then.
     head_en = (push && (pop || count_q == 2'd0)) || (pop && !push);
     head_d  = push ? in_data_i : ((count_q == 2'd2) ? tail_q : '0);
     // push alone behind a held pixel

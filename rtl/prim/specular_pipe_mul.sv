@@ -48,11 +48,10 @@ module specular_pipe_mul #(
   localparam bit Tree   = TileBits == 0;
   localparam int PBits  = ABits + BBits;
   localparam int Levels = specular_pkg::pipe_mul_stages(BBits);
-  // Signed: 1 + ceil((w - TileBits) / (TileBits - 1)) tiles of a w-bit operand.
-  localparam int TilesA = Tree ? 1 : !Signed ? (ABits + TileBits - 1) / TileBits
-                        : (ABits <= TileBits) ? 1 : 1 + (ABits - 2) / (TileBits - 1);
-  localparam int TilesB = Tree ? 1 : !Signed ? (BBits + TileBits - 1) / TileBits
-                        : (BBits <= TileBits) ? 1 : 1 + (BBits - 2) / (TileBits - 1);
+  localparam int TilesA = Tree ? 1 : Signed ? specular_pkg::signed_tiles(ABits, TileBits)
+                                            : (ABits + TileBits - 1) / TileBits;
+  localparam int TilesB = Tree ? 1 : Signed ? specular_pkg::signed_tiles(BBits, TileBits)
+                                            : (BBits + TileBits - 1) / TileBits;
   // A tile's step: its width, or the low tiles' TileBits - 1 when signed.
   localparam int Step   = (Signed && !Tree) ? TileBits - 1 : TileBits;
   // Rows into the adder tree: the radix-4 digit rows, or the tile products.
@@ -84,8 +83,6 @@ module specular_pipe_mul #(
   if (!Tree) begin : gen_tiles
     logic unused_a3;
     assign unused_a3 = ^a3_i;
-    // Tile i of an operand: TileBits bits from bit i Step; signed, the low tiles are the
-    // TileBits - 1 bits zero-extended and the top tile the rest sign-extended.
     // The DSP style's tree is shorter than the radix-4 one: the operands wait out the
     // difference before their tiles (where operands that several products share are the same
     // registers, which a synthesis can merge; the sum is a product's own).
@@ -93,6 +90,8 @@ module specular_pipe_mul #(
     logic [BBits-1:0] b_al;
     specular_delay #(.Width (ABits + BBits), .Depth (Levels - AddLevels), .Reset (1'b0)) u_align (
       .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i ({a_i, b_i}), .q_o ({a_al, b_al}));
+    // Tile i of an operand: TileBits bits from bit i Step; signed, the low tiles are the
+    // TileBits - 1 bits zero-extended and the top tile the rest sign-extended.
     logic [TilesA*TileBits-1:0] a_tiles;
     logic [TilesB*TileBits-1:0] b_tiles;
     if (Signed) begin : gen_signed_tiles

@@ -45,6 +45,13 @@ package specular_pkg;
     pipe_mul_stages = 1 + ((((b_bits + 1) / 2) > 1) ? $clog2((b_bits + 1) / 2) : 0);
   endfunction
 
+  // Tiles of a w-bit signed operand cut into unsigned low tiles of tile_bits - 1 bits and a
+  // signed top tile, 1 + ceil((w - tile_bits) / (tile_bits - 1)) of them: specular_pipe_mul
+  // with Signed = 1 and the folded setup's specular_setup_fmul.
+  function automatic int signed_tiles(input int w, input int tile_bits);
+    signed_tiles = (w <= tile_bits) ? 1 : 1 + (w - 2) / (tile_bits - 1);
+  endfunction
+
   // Multiplier 11 (specular_angle_mul), psi_i to addr_o: the tree runs over the
   // 1 + psi_mul_frac bits of |psi|.
   function automatic int angle_mul_stages(input int psi_mul_frac);

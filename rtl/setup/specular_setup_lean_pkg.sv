@@ -112,8 +112,7 @@ package specular_setup_lean_pkg;
   endfunction
   // Tiles of a w-bit signed operand.
   function automatic int fmul_tiles_of(input int w, input int tile_bits);
-    fmul_tiles_of = (w <= fmul_tile(tile_bits)) ? 1
-                  : 1 + (w - fmul_tile(tile_bits) + fmul_tile(tile_bits) - 2) / (fmul_tile(tile_bits) - 1);
+    fmul_tiles_of = specular_pkg::signed_tiles(w, fmul_tile(tile_bits));
   endfunction
   // Tile products of one a_bits x b_bits product.
   function automatic int fmul_tiles(input int a_bits, input int b_bits, input int tile_bits);

@@ -108,6 +108,12 @@ e = verdict.ecp5_entry({"ecp5_runs": [dict(placed_old, synthesis="synth_ecp5 -no
                         "synthesis_runs": [syn_new]}, "specular_system")
 check(e["lut4"] == 4 and e["placed"], "a placed run over synthesis counts of the same flow")
 
+# The current flow is the one scripts/fpga.sh runs on the ECP5 (its synthesis command there).
+with open(os.path.join(ROOT, "scripts", "fpga.sh")) as f:
+    ecp5_synth = [line for line in f if 'ecp5*)' in line and "synth=" in line]
+check(len(ecp5_synth) == 1 and f'synth_ecp5 {verdict.CURRENT_FLOW}' in ecp5_synth[0],
+      f"verdict.CURRENT_FLOW {verdict.CURRENT_FLOW!r} is not in fpga.sh's ECP5 synthesis: {ecp5_synth}")
+
 # The committed record: the section is written for every budget and span length.
 with open(os.path.join(ROOT, "docs", "fpga_figures.json")) as f:
     figs = json.load(f)
