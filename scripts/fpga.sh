@@ -292,6 +292,8 @@ core_of()    { case "$1" in unit) echo specular_unit ;; stream) echo specular_st
 # flip-flops, multipliers and block RAMs; not carry cells (nextpnr-ecp5 packs each chain
 # as it is) nor LUT RAM.
 ecp5_merge="opt_merge -share_all t:LUT4 t:TRELLIS_FF t:MULT18X18D t:DP16KD %u %u %u"
+# The define that makes every DSP tile a registered MULT18X18D (rtl/prim/specular_mul_tile.sv).
+ecp5_tile_define="SPECULAR_ECP5_MULT18X18D"
 
 # Everything a run's result depends on: sources, ROM files (the defaults in roms/ and any
 # file named by a parameter), parameters, options, this script and the tool versions.
@@ -355,8 +357,13 @@ for top in "${tops[@]}"; do
       up5k) pnr_dev="--up5k --package sg48";  freq=$freq_up5k; synth="synth_ice40 -dsp$noflat" ;;
       ecp5*) pnr_dev="";                      freq=$freq_ecp5; synth="synth_ecp5 -nowidelut$noflat" ;;
     esac
+    # On the ECP5 a DSP tile is a MULT18X18D instance with its own registers
+    # (rtl/prim/specular_mul_tile.sv); its black box is read before the hierarchy is checked.
+    defines=""
+    [[ "$dev" == ecp5* ]] && defines=" -D$ecp5_tile_define"
     {
-      echo "read_verilog -sv -defer${incflags} ${sources[*]}"
+      echo "read_verilog -sv -defer${defines}${incflags} ${sources[*]}"
+      [ -z "$defines" ] || echo "read_verilog -lib +/ecp5/cells_bb.v"
       for a in "${core_chparam[@]+"${core_chparam[@]}"}"; do echo "chparam $a $core"; done
       [ -z "$style_param" ] || echo "chparam -set ${style_param%=*} ${style_param#*=} $core"
       echo "chparam -set Top $top_id $harness"
@@ -491,7 +498,7 @@ PY3
     t1=$(date +%s)
     if [[ "$dev" == ecp5* ]]; then export FPGA_NEXTPNR_VERSION=$ecp5_version; else export FPGA_NEXTPNR_VERSION=$ice40_version; fi
     python3 - "$dir" "$top" "$dev" "$harness" "$core" "$freq" "$seed" "$synth_rc" "$pnr_rc" \
-      "$((t1 - t0))" "$((t_synth - t0))" "$synth${post:+; $post}" "$phong_cfg" "$label" "${run_params[@]+"${run_params[@]}"}" <<'PY'
+      "$((t1 - t0))" "$((t_synth - t0))" "${defines:+read_verilog$defines; }$synth${post:+; $post}" "$phong_cfg" "$label" "${run_params[@]+"${run_params[@]}"}" <<'PY'
 import json, os, re, subprocess, sys
 d, top, dev, harness, core, freq, seed, synth_rc, pnr_rc, secs, synth_secs, synth, phong_cfg, label = sys.argv[1:15]
 params = sys.argv[15:]

@@ -151,13 +151,15 @@ def break_even(points, budget):
     return out
 
 
-# The ECP5 synthesis of the current flow (scripts/fpga.sh, rtl/fpga/README.md#merged-cells): a
-# comparison takes every core's entry of it where one is recorded.
-CURRENT_FLOW = "-nowidelut"
+# The ECP5 synthesis of the current flow (scripts/fpga.sh: rtl/fpga/README.md#merged-cells, the
+# DSP tiles' own registers of rtl/prim/specular_mul_tile.sv): a comparison takes every core's
+# entry of it where one is recorded. An entry is of the current flow when its synthesis string
+# holds every marker.
+CURRENT_FLOW = ("-DSPECULAR_ECP5_MULT18X18D", "synth_ecp5 -nowidelut")
 
 
 def current_flow(e):
-    return CURRENT_FLOW in e.get("synthesis", "")
+    return all(m in e.get("synthesis", "") for m in CURRENT_FLOW)
 
 
 def ecp5_entry(figs, core, config=None, setup_ii=None):

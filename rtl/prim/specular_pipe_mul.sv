@@ -54,6 +54,11 @@ module specular_pipe_mul #(
                                             : (BBits + TileBits - 1) / TileBits;
   // A tile's step: its width, or the low tiles' TileBits - 1 when signed.
   localparam int Step   = (Signed && !Tree) ? TileBits - 1 : TileBits;
+  // The bits of tile i (of n) of a Width-bit operand that are its own (the rest are zero or,
+  // signed, the sign's copies).
+  function automatic int tile_live(input int width, input int n, input int i);
+    tile_live = (i < n - 1) ? Step : width - i * Step;
+  endfunction
   // Rows into the adder tree: the radix-4 digit rows, or the tile products.
   localparam int NRows  = Tree ? (BBits + 1) / 2 : TilesA * TilesB;
   // Level 1 registers the rows, the levels after it halve them until one is left. The DSP
@@ -113,26 +118,33 @@ module specular_pipe_mul #(
     end
     for (genvar i = 0; i < TilesA; i++) begin : gen_a
       for (genvar j = 0; j < TilesB; j++) begin : gen_b
-        logic [TileBits-1:0]   ta_q, tb_q;
+        // Tile registers, product and product register: level 1 of the tree.
         logic [2*TileBits-1:0] tp;
-        always_ff @(posedge clk_i) begin
-          if (en_i) begin
-            ta_q <= a_tiles[i*TileBits +: TileBits];
-            tb_q <= b_tiles[j*TileBits +: TileBits];
-          end
-        end
+        specular_mul_tile #(
+          .Bits   (TileBits),
+          .Signed (Signed),
+          .ALive  (tile_live(ABits, TilesA, i)),
+          .BLive  (tile_live(BBits, TilesB, j))
+        ) u_tile (
+          .clk_i (clk_i),
+          .en_i  (en_i),
+          .a_i   (a_tiles[i*TileBits +: TileBits]),
+          .b_i   (b_tiles[j*TileBits +: TileBits]),
+          .p_o   (tp)
+        );
         if (Signed) begin : gen_signed_tp
           // Modulo 2^PBits the rows add to the exact product, which fits PBits signed bits.
           logic signed [PBits+2*TileBits-1:0] tp_x;
-          assign tp   = $signed(ta_q) * $signed(tb_q);
           assign tp_x = (PBits + 2 * TileBits)'($signed(tp));
-          assign rows[0][i*TilesB+j] = PBits'(tp_x <<< ((i + j) * Step));
+          assign rows[1][i*TilesB+j] = PBits'(tp_x <<< ((i + j) * Step));
         end else begin : gen_unsigned_tp
-          assign tp = (2 * TileBits)'(ta_q) * (2 * TileBits)'(tb_q);
           // The padding tiles' bits are 0, so every product fits the PBits of a * b.
-          assign rows[0][i*TilesB+j] = PBits'({{PBits{1'b0}}, tp} << ((i + j) * TileBits));
+          assign rows[1][i*TilesB+j] = PBits'({{PBits{1'b0}}, tp} << ((i + j) * TileBits));
         end
       end
+    end
+    for (genvar j = 0; j < NRows; j++) begin : gen_no_rows0
+      assign rows[0][j] = '0;
     end
   end else begin : gen_digits
     logic [2*NRows-1:0] b_pad;
@@ -153,7 +165,9 @@ module specular_pipe_mul #(
     end
   end
 
-  for (genvar l = 1; l <= TreeLevels; l++) begin : gen_level
+  // Level 1 of the DSP style is the tiles' product registers (above); the tree's own
+  // registers start at level 1 for the radix-4 rows and at level 2 for the tiles.
+  for (genvar l = Tree ? 1 : 2; l <= TreeLevels; l++) begin : gen_level
     // Level 1 registers the rows as they are; later levels add pairs.
     localparam bit Adds  = l != 1;
     localparam int Shift = l - 1;   // additions done up to this level

@@ -164,7 +164,7 @@ module specular_setup_fmul #(
     // decoded with them and travels beside the tile and its product: the accumulator's shift
     // select is then a register, not a decode of the count shared by every multiplier and
     // routed across the unit (docs/setup_hw.md#the-folded-lean-setup).
-    logic signed [T-1:0] ta_d, tb_d, ta_q, tb_q;
+    logic signed [T-1:0] ta_d, tb_d;
     logic                nd_d, nd1_q, nd2_q;
     if (Steps > TokenMinSteps) begin : gen_token
       // c = s: a one-hot token marks step s (set by the advance, shifted out after the last
@@ -232,13 +232,18 @@ module specular_setup_fmul #(
         if (zero) ta_d = '0;
       end
     end
+    // c = s and c = 1 + s above: the DSP's own input and product registers
+    // (rtl/prim/specular_mul_tile.sv).
     logic signed [2*T-1:0] pp_q;
+    specular_mul_tile #(.Bits (T), .Signed (1'b1)) u_tile (
+      .clk_i (clk_i),
+      .en_i  (1'b1),
+      .a_i   (ta_d),
+      .b_i   (tb_d),
+      .p_o   (pp_q)
+    );
     always_ff @(posedge clk_i) begin
-      ta_q  <= ta_d;
-      tb_q  <= tb_d;
       nd1_q <= nd_d;
-      // c = 1 + s
-      pp_q  <= ta_q * tb_q;
       nd2_q <= nd1_q;
     end
     // c = 2 + s: accumulate step s; when its tile starts a diagonal, the accumulator's low

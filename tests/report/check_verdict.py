@@ -93,26 +93,35 @@ close(res["b1"][0]["hw_ratio"], (0.25 / 0.5) / 2, "system at m = 1: 1/4 px/clock
 # flow over an older placed run.
 old_run = {"core": "phong_stream", "config": "c", "setup_ii": None, "multipliers": "MULT18X18D tiles",
            "synthesis": "synth_ecp5", "date": "2026-12-07", "lut4": 1}
-new_run = dict(old_run, synthesis="synth_ecp5 -nowidelut; opt_merge", date="2026-12-06", lut4=2)
+new_run = dict(old_run, synthesis="read_verilog -DSPECULAR_ECP5_MULT18X18D; synth_ecp5 -nowidelut; opt_merge",
+               date="2026-12-06", lut4=2)
 check(verdict.ecp5_entry({"ecp5_runs": [old_run, new_run]}, "phong_stream", "c")["lut4"] == 2,
       "the current flow's entry first")
 check(verdict.ecp5_entry({"ecp5_runs": [new_run, old_run]}, "phong_stream", "c")["lut4"] == 2,
       "the current flow's entry first, either order")
 syn_new = {"core": "specular_system", "part": "ECP5", "config": None, "setup_ii": 1,
-           "synthesis": "synth_ecp5 -nowidelut -noflatten", "lut4": 3}
+           "synthesis": "read_verilog -DSPECULAR_ECP5_MULT18X18D; synth_ecp5 -nowidelut -noflatten", "lut4": 3}
 placed_old = {"core": "specular_system", "config": None, "setup_ii": None, "multipliers": "MULT18X18D tiles",
-              "synthesis": "synth_ecp5 -noflatten", "lut4": 4}
+              "synthesis": "synth_ecp5 -nowidelut -noflatten", "lut4": 4}
 e = verdict.ecp5_entry({"ecp5_runs": [placed_old], "synthesis_runs": [syn_new]}, "specular_system")
 check(e["lut4"] == 3 and not e["placed"], "current synthesis counts over an older placed run")
-e = verdict.ecp5_entry({"ecp5_runs": [dict(placed_old, synthesis="synth_ecp5 -nowidelut -noflatten")],
+e = verdict.ecp5_entry({"ecp5_runs": [dict(placed_old, synthesis=syn_new["synthesis"])],
                         "synthesis_runs": [syn_new]}, "specular_system")
 check(e["lut4"] == 4 and e["placed"], "a placed run over synthesis counts of the same flow")
 
-# The current flow is the one scripts/fpga.sh runs on the ECP5 (its synthesis command there).
+# The current flow is the one scripts/fpga.sh runs on the ECP5: its synthesis command there and
+# the define of its DSP tiles.
 with open(os.path.join(ROOT, "scripts", "fpga.sh")) as f:
-    ecp5_synth = [line for line in f if 'ecp5*)' in line and "synth=" in line]
-check(len(ecp5_synth) == 1 and f'synth_ecp5 {verdict.CURRENT_FLOW}' in ecp5_synth[0],
-      f"verdict.CURRENT_FLOW {verdict.CURRENT_FLOW!r} is not in fpga.sh's ECP5 synthesis: {ecp5_synth}")
+    fpga_sh = f.read().splitlines()
+ecp5_synth = [line for line in fpga_sh if 'ecp5*)' in line and "synth=" in line]
+tile_define = [line for line in fpga_sh if line.startswith("ecp5_tile_define=")]
+flow_synth, flow_define = [m for m in verdict.CURRENT_FLOW if m.startswith("synth_")], \
+                          [m for m in verdict.CURRENT_FLOW if m.startswith("-D")]
+check(len(ecp5_synth) == 1 and len(flow_synth) == 1 and flow_synth[0] in ecp5_synth[0],
+      f"verdict.CURRENT_FLOW {verdict.CURRENT_FLOW!r} is not fpga.sh's ECP5 synthesis: {ecp5_synth}")
+check(len(tile_define) == 1 and len(flow_define) == 1
+      and tile_define[0] == f'ecp5_tile_define="{flow_define[0][2:]}"',
+      f"verdict.CURRENT_FLOW {verdict.CURRENT_FLOW!r} does not name fpga.sh's tile define: {tile_define}")
 
 # The committed record: the section is written for every budget and span length.
 with open(os.path.join(ROOT, "docs", "fpga_figures.json")) as f:
