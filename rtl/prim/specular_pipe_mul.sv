@@ -118,18 +118,22 @@ module specular_pipe_mul #(
     end
     for (genvar i = 0; i < TilesA; i++) begin : gen_a
       for (genvar j = 0; j < TilesB; j++) begin : gen_b
-        // Tile registers, product and product register: level 1 of the tree.
+        // Tile registers, product and product register: level 1 of the tree. Below the
+        // diagonal the operands go in swapped, so that a square's tiles (i, j) and (j, i) are
+        // one cell with the same inputs, which the merge of identical cells shares
+        // (rtl/fpga/README.md#merged-cells; Yosys orders a $mul's inputs, not a primitive's).
+        localparam bit Swap = i > j;
         logic [2*TileBits-1:0] tp;
         specular_mul_tile #(
           .Bits   (TileBits),
           .Signed (Signed),
-          .ALive  (tile_live(ABits, TilesA, i)),
-          .BLive  (tile_live(BBits, TilesB, j))
+          .ALive  (Swap ? tile_live(BBits, TilesB, j) : tile_live(ABits, TilesA, i)),
+          .BLive  (Swap ? tile_live(ABits, TilesA, i) : tile_live(BBits, TilesB, j))
         ) u_tile (
           .clk_i (clk_i),
           .en_i  (en_i),
-          .a_i   (a_tiles[i*TileBits +: TileBits]),
-          .b_i   (b_tiles[j*TileBits +: TileBits]),
+          .a_i   (Swap ? b_tiles[j*TileBits +: TileBits] : a_tiles[i*TileBits +: TileBits]),
+          .b_i   (Swap ? a_tiles[i*TileBits +: TileBits] : b_tiles[j*TileBits +: TileBits]),
           .p_o   (tp)
         );
         if (Signed) begin : gen_signed_tp
