@@ -4,10 +4,11 @@
 // specular_setup_rshift_n: N values shifted right by one common amount (specular_setup_rshift
 // each), for a pipeline stage that registers y_o on its enable en_i. With SetupII = 1 these are
 // N shifters and y_o is combinational. With SetupII > 1 (the folded setup, en_i the advance at
-// a slot's last clock, a_i and s_i still for the slot) one shifter takes value c in clock c of
-// the slot into a register of its own, so y_o is ready before the advance: N - 1 shifters
-// fewer for N multiplexer inputs (docs/setup_hw.md#the-folded-lean-setup). That needs
-// SetupII > N. A stalled slot only repeats the last value's shift.
+// a slot's last clock, a_i and s_i still for the slot) value c is selected into a register in
+// clock c of the slot and one shifter takes it into a register of its own in clock c + 1, so
+// y_o is ready before the advance: N - 1 shifters fewer for N multiplexer inputs
+// (docs/setup_hw.md#the-folded-lean-setup), and the selection and the shift are in clocks of
+// their own. That needs SetupII > N + 1. A stalled slot only repeats the last value's shift.
 
 `include "specular_assert.svh"
 
@@ -26,8 +27,8 @@ module specular_setup_rshift_n #(
   output logic [N*OutW-1:0] y_o
 );
 
-  if (N < 1 || SetupII < 1 || (SetupII > 1 && SetupII <= N)) begin : gen_param_check
-    `SPEC_PARAM_ERROR("specular_setup_rshift_n: N >= 1, and a folded SetupII must exceed N")
+  if (N < 1 || SetupII < 1 || (SetupII > 1 && N > 1 && SetupII <= N + 1)) begin : gen_param_check
+    `SPEC_PARAM_ERROR("specular_setup_rshift_n: N >= 1, and a folded SetupII must exceed N + 1")
   end
 
   if (SetupII == 1 || N == 1) begin : gen_par
@@ -38,30 +39,35 @@ module specular_setup_rshift_n #(
         .a_i (a_i[i*InW +: InW]), .s_i (s_i), .y_o (y_o[i*OutW +: OutW]));
     end
   end else begin : gen_fold
-    localparam int CW = $clog2(N);
     // The slot's clock, restarted by the advance and held at the last value. No reset: it
     // realigns at the first advance, before any value that matters.
-    logic [CW-1:0]  c_q;
-    logic [InW-1:0] a_c;
+    // c_q counts to N: value c is selected at c_q = c, shifted and held at c_q = c + 1.
+    localparam int CW = $clog2(N + 1);
+    logic [CW-1:0]   c_q;
+    logic [InW-1:0]  a_c, a_c_q;
     logic [OutW-1:0] y_c;
     always_ff @(posedge clk_i) begin
       if (en_i) begin
         c_q <= '0;
-      end else if (c_q != CW'(N - 1)) begin
+      end else if (c_q != CW'(N)) begin
         c_q <= c_q + CW'(1);
       end
     end
+    // From c_q = N - 1 on the last value stays selected: a stalled slot repeats its shift.
     always_comb begin
-      a_c = a_i[InW-1:0];
-      for (int i = 1; i < N; i++) begin
+      a_c = a_i[(N-1)*InW +: InW];
+      for (int i = 0; i < N - 1; i++) begin
         if (c_q == CW'(i)) a_c = a_i[i*InW +: InW];
       end
     end
+    always_ff @(posedge clk_i) begin
+      a_c_q <= a_c;
+    end
     specular_setup_rshift #(.InW(InW), .OutW(OutW), .SW(SW), .Signed(Signed)) u_shift (
-      .a_i (a_c), .s_i (s_i), .y_o (y_c));
+      .a_i (a_c_q), .s_i (s_i), .y_o (y_c));
     for (genvar i = 0; i < N; i++) begin : gen_hold
       always_ff @(posedge clk_i) begin
-        if (!en_i && c_q == CW'(i)) y_o[i*OutW +: OutW] <= y_c;
+        if (!en_i && c_q == CW'(i + 1)) y_o[i*OutW +: OutW] <= y_c;
       end
     end
   end
