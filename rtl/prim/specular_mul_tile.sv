@@ -88,7 +88,10 @@ module specular_mul_tile #(
   end
 `endif
   if (!Prim) begin : gen_fabric
-    logic [Bits-1:0]   a_q, b_q;
+    // Only the live bits are registered and multiplied (a synthesis of this module alone, as
+    // a hierarchical one is, cannot see that the rest are extensions).
+    logic [ALive-1:0]  a_q;
+    logic [BLive-1:0]  b_q;
     logic [2*Bits-1:0] p_d, p_q;
     if (Signed) begin : gen_signed
       assign p_d = (2 * Bits)'($signed(a_q) * $signed(b_q));
@@ -97,12 +100,22 @@ module specular_mul_tile #(
     end
     always_ff @(posedge clk_i) begin
       if (en_i) begin
-        a_q <= a_i;
-        b_q <= b_i;
+        a_q <= a_i[ALive-1:0];
+        b_q <= b_i[BLive-1:0];
         p_q <= p_d;
       end
     end
     assign p_o = p_q;
   end
+
+  // Assertions (rtl/prim/specular_assert.svh): the bits above ALive / BLive are the extension
+  // of the live ones, as the caller states (on known operands: a bubble's may be X).
+`ifndef SYNTHESIS
+  logic [Bits-1:0] a_ext, b_ext;
+  assign a_ext = Signed ? Bits'($signed(a_i[ALive-1:0])) : Bits'(a_i[ALive-1:0]);
+  assign b_ext = Signed ? Bits'($signed(b_i[BLive-1:0])) : Bits'(b_i[BLive-1:0]);
+  `SPEC_ASSERT_IF(ALive_A, en_i && `SPEC_KNOWN(a_i), a_i == a_ext, clk_i, 1'b1)
+  `SPEC_ASSERT_IF(BLive_A, en_i && `SPEC_KNOWN(b_i), b_i == b_ext, clk_i, 1'b1)
+`endif
 
 endmodule

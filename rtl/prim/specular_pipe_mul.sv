@@ -54,10 +54,11 @@ module specular_pipe_mul #(
                                             : (BBits + TileBits - 1) / TileBits;
   // A tile's step: its width, or the low tiles' TileBits - 1 when signed.
   localparam int Step   = (Signed && !Tree) ? TileBits - 1 : TileBits;
-  // The bits of tile i (of n) of a Width-bit operand that are its own (the rest are zero or,
-  // signed, the sign's copies).
+  // The bits of tile i (of n) of a width-bit operand that are its own, the rest being zero
+  // (unsigned) or copies of the sign (signed): a low tile's all (signed, its top bit is a 0
+  // that is not the sign's copy), the top tile's those of the operand.
   function automatic int tile_live(input int width, input int n, input int i);
-    tile_live = (i < n - 1) ? Step : width - i * Step;
+    tile_live = (i < n - 1) ? TileBits : width - i * Step;
   endfunction
   // Rows into the adder tree: the radix-4 digit rows, or the tile products.
   localparam int NRows  = Tree ? (BBits + 1) / 2 : TilesA * TilesB;
