@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
-// One DSP tile: p = a * b with both operands and the product registered (latency 2), en_i the
-// clock enable of all three registers. Signed takes both operands and the product as two's
+// One DSP tile: p = a * b, both operands registered and then the product, en_i the clock
+// enable of all three registers. Signed takes both operands and the product as two's
 // complement. No reset: a tile carries data only.
 //
 // The registers are the DSP's own (docs/pipeline.md#multiplier-styles): with
