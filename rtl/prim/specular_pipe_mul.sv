@@ -20,7 +20,8 @@
 // for a part without DSPs (the iCE40-HX8K); 16 (the UP5K's SB_MAC16) or 18 (the ECP5's
 // MULT18X18D) delay a and b by the clocks the shorter tree leaves over, cut them into
 // TileBits-wide tiles, register the tiles and each tile product (one DSP with its input and
-// output registers) and add the products in a registered binary tree: the same
+// output registers, rtl/prim/specular_mul_tile.sv) and add the products in a registered
+// binary tree: the same
 // pipe_mul_stages(BBits) clocks, so both styles are bit-exact
 // and interchangeable. a3_i is unused there (a caller may tie it to 0). The
 // tiles must be few enough that 2 + clog2(tiles) <= pipe_mul_stages(BBits); the block refuses
