@@ -52,8 +52,8 @@ module mul_ecp5_check #(
   function automatic logic [127:0] operand(input int width);
     logic [127:0] v;
     int           kind;
-    v    = {$urandom(seed), $urandom(seed), $urandom(seed), $urandom(seed)};
-    kind = $urandom(seed) % 32;
+    v    = {$unsigned($random(seed)), $unsigned($random(seed)), $unsigned($random(seed)), $unsigned($random(seed))};
+    kind = $unsigned($random(seed)) % 32;
     if (kind == 0) v = '1;
     if (kind == 1) v = 128'd1 << (width - 1);
     if (kind == 2) v = '0;
@@ -80,7 +80,7 @@ module mul_ecp5_check #(
     end
     a  <= ABits'(operand(ABits));
     b  <= BBits'(operand(BBits));
-    en <= run && ($urandom(seed) % 4 != 0);
+    en <= run && ($unsigned($random(seed)) % 4 != 0);
   end
 
   always @(negedge clk) begin
