@@ -34,13 +34,17 @@ module specular_setup_fmul #(
   parameter int ABits    = 18,
   parameter int BBits    = 18,
   parameter int TileBits = 18,  // 0 (LUT multiplier) or the DSP tile width; T = 18 for 0
-  parameter int SetupII  = 8
+  parameter int SetupII  = 8,
+  // The product's stages: 1, p_o registered on en_i; 0, p_o is pc_o (one chunk a product, so
+  // no adder: the caller registers what it derives from it on en_i,
+  // specular_setup_lean_pkg::fold_mul_stages).
+  parameter int Stages   = 1
 ) (
   input  logic                          clk_i,
   input  logic                          en_i,   // the stage advance: the slot's last clock
   input  logic [N*ABits-1:0]            a_i,    // N signed operands, still for the slot
   input  logic [N*BBits-1:0]            b_i,
-  output logic [N*(ABits+BBits)-1:0]    p_o,    // N signed products (registered on en_i)
+  output logic [N*(ABits+BBits)-1:0]    p_o,    // N signed products (Stages = 1: registered on en_i)
   // The same before the register, final from clock SetupII - 2 of the slot on: a caller that
   // rounds or adds a product in its own stage (log2, exp2) reads it there.
   output logic [N*(ABits+BBits)-1:0]    pc_o
@@ -105,6 +109,9 @@ module specular_setup_fmul #(
   end
   if (TA > 4 && TB > 4) begin : gen_acc_check
     `SPEC_PARAM_ERROR("specular_setup_fmul: at most four tiles a diagonal (min(TA, TB) <= 4)")
+  end
+  if (Stages < 0 || Stages > 1 || (Stages == 0 && Q != 1)) begin : gen_stages_check
+    `SPEC_PARAM_ERROR("specular_setup_fmul: Stages is 1, or 0 where every product is one chunk (TA TB <= SetupII - FmulOverhead)")
   end
   if (P < 1) begin : gen_slot_check
     `SPEC_PARAM_ERROR("specular_setup_fmul: half a product's tiles must fit the slot (TA TB <= 2 (SetupII - FmulOverhead))")
@@ -316,8 +323,12 @@ module specular_setup_fmul #(
   end
 
   assign pc_o = p_d;
-  always_ff @(posedge clk_i) begin
-    if (en_i) p_o <= p_d;
+  if (Stages == 1) begin : gen_p_reg
+    always_ff @(posedge clk_i) begin
+      if (en_i) p_o <= p_d;
+    end
+  end else begin : gen_p_wire
+    assign p_o = p_d;
   end
 
 endmodule

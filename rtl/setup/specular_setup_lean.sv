@@ -19,7 +19,7 @@
 //   0        the input register; step 1, decode: invalid_input, undefined_halfway
 //   TN       step 2: N1, N2, H1 normalized (three specular_setup_lean_norm)
 //   TM..TQ   step 3: m = N1 + N2; q = m.m, hm = He.m (six multipliers, two sums)
-//   TON      opposite normals: q < 2^40
+//   TON      opposite normals: q < 2^40 (TON = TQ)
 //   TGP      G' = q He - 2 hm m (He for opposite normals); TG1: block-normalized
 //   TS       s = G'.N1 (Q26);  TGV: G' - rshift_round(s N1, 25);  TG: block-normalized
 //   TX2      step 4: x = H1.G, c = H1 x G (wide), p = H1 x N1 (Q26); TXC: x, c block-normalized
@@ -123,7 +123,7 @@ module specular_setup_lean #(
   localparam int TN    = NS18;
   localparam int TM    = TN + 1;
   localparam int TQ    = TM + LMM + 2;
-  localparam int TON   = TQ + 1;
+  localparam int TON   = TQ;
   localparam int TGP   = TQ + LQ + 1;
   localparam int TG1   = TGP + BS;
   localparam int TS    = TG1 + LS + 3;
@@ -229,11 +229,14 @@ module specular_setup_lean #(
     logic [N44*(F44A+F44B)-1:0] f44_pc;
     logic [N18*(F18A+F18B)-1:0] f18_pc;
     logic [N6*(F6A+F6B)-1:0]    f6_pc;
-    specular_setup_fmul #(.N(N44), .ABits(F44A), .BBits(F44B), .TileBits(TileBits), .SetupII(SetupII)) u_f44 (
+    specular_setup_fmul #(.N(N44), .ABits(F44A), .BBits(F44B), .TileBits(TileBits), .SetupII(SetupII),
+                          .Stages(specular_setup_lean_pkg::fold_mul_stages(SetupII))) u_f44 (
       .clk_i (clk_i), .en_i (adv), .a_i (f44_a), .b_i (f44_b), .p_o (f44_p), .pc_o (f44_pc));
-    specular_setup_fmul #(.N(N18), .ABits(F18A), .BBits(F18B), .TileBits(TileBits), .SetupII(SetupII)) u_f18 (
+    specular_setup_fmul #(.N(N18), .ABits(F18A), .BBits(F18B), .TileBits(TileBits), .SetupII(SetupII),
+                          .Stages(specular_setup_lean_pkg::fold_mul_stages(SetupII))) u_f18 (
       .clk_i (clk_i), .en_i (adv), .a_i (f18_a), .b_i (f18_b), .p_o (f18_p), .pc_o (f18_pc));
-    specular_setup_fmul #(.N(N6), .ABits(F6A), .BBits(F6B), .TileBits(TileBits), .SetupII(SetupII)) u_f6 (
+    specular_setup_fmul #(.N(N6), .ABits(F6A), .BBits(F6B), .TileBits(TileBits), .SetupII(SetupII),
+                          .Stages(specular_setup_lean_pkg::fold_mul_stages(SetupII))) u_f6 (
       .clk_i (clk_i), .en_i (adv), .a_i (f6_a), .b_i (f6_b), .p_o (f6_p), .pc_o (f6_pc));
     // Each lane reads only its own product's width.
     assign unused_fold = ^{f44_p, f18_p, f6_p, f44_pc, f18_pc, f6_pc};
@@ -342,10 +345,16 @@ module specular_setup_lean #(
       hm_q   <= hm01_q + hm2_q;
     end
   end
-  // Opposite normals (tau TON): |N1 + N2|^2 < 2^-12.
+  // Opposite normals (tau TON, beside q_q): |N1 + N2|^2 < 2^-12, q = q01 + q2 < 2^OnB. Both
+  // are sums of squares, so that holds when neither has a bit from OnB up and their low OnB
+  // bits do not carry out: one carry chain from the registers, and the decision is ready with
+  // q for G' in the next stage even when its products take no stage (the folded setup).
+  localparam int OnB = 2 * F - specular_setup_lean_pkg::OppNormLog2;
+  logic [OnB:0] q_low_sum;
+  assign q_low_sum = {1'b0, q01_q[OnB-1:0]} + {1'b0, q2_q[OnB-1:0]};
   logic opposite_normals_q, opp_n_gp;
   always_ff @(posedge clk_i) begin
-    if (adv) opposite_normals_q <= q_q < QW'(64'sd1 <<< (2 * F - specular_setup_lean_pkg::OppNormLog2));
+    if (adv) opposite_normals_q <= !(|q01_q[QW-1:OnB]) && !(|q2_q[QW-1:OnB]) && !q_low_sum[OnB];
   end
   specular_delay #(.Width(1), .Depth(TQ + LQ - TON), .Reset(1'b0), .Ram(RamLines)) u_dly_oppn_gp (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (opposite_normals_q), .q_o (opp_n_gp));

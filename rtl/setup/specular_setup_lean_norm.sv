@@ -94,7 +94,8 @@ module specular_setup_lean_norm #(
   logic                  unused_fold;
   if (SetupII > 1) begin : gen_fold_unit
     logic [FN*(FA+FB)-1:0] f_pc;
-    specular_setup_fmul #(.N(FN), .ABits(FA), .BBits(FB), .TileBits(TileBits), .SetupII(SetupII)) u_fmul (
+    specular_setup_fmul #(.N(FN), .ABits(FA), .BBits(FB), .TileBits(TileBits), .SetupII(SetupII),
+                          .Stages(specular_setup_lean_pkg::fold_mul_stages(SetupII))) u_fmul (
       .clk_i (clk_i), .en_i (en_i), .a_i (f_a), .b_i (f_b), .p_o (f_p), .pc_o (f_pc));
     assign unused_fold = ^{f_p, f_pc};  // each lane reads its own product's width
   end else begin : gen_no_fold_unit

@@ -80,31 +80,23 @@ package specular_setup_lean_pkg;
     endcase
   endfunction
 
-  // ---- Stage counts ----
-  // specular_pipe_mul's stages for a BBits-wide multiplier operand (specular_pkg::pipe_mul_stages).
-  function automatic int pipe_mul_stages(input int b_bits);
-    pipe_mul_stages = 1 + ((((b_bits + 1) / 2) > 1) ? $clog2((b_bits + 1) / 2) : 0);
-  endfunction
-  // specular_setup_smul (signed, B bits): magnitudes, 3|a|, the multiplier, the sign. With
-  // SetupII > 1 a product is one slot's work of a specular_setup_fmul: one stage.
-  function automatic int smul_stages(input int b_bits, input int setup_ii);
-    smul_stages = (setup_ii > 1) ? 1 : 3 + pipe_mul_stages(b_bits);
-  endfunction
-  // specular_setup_lean_norm for InW-bit components (the module checks its own count).
-  function automatic int norm_stages(input int in_w, input int setup_ii);
-    norm_stages = smul_stages(in_w, setup_ii) + 6 + smul_stages(SeedW + 1, setup_ii) + 2
-                + smul_stages(SeedW + 1, setup_ii) + 1
-                + smul_stages(2 * SeedW - (2 * SeedFrac - RsqrtFrac) + 2, setup_ii) + 2
-                + smul_stages(RsqrtFrac + 5, setup_ii) + 1 + smul_stages(RW, setup_ii) + 2;
-  endfunction
-
   // ---- The folded products (SetupII > 1, specular_setup_fmul) ----
   // Clocks of a slot that are not tile steps: the tile product register, the last
   // accumulation and the advance edge (p_o).
   localparam int FmulOverhead = 3;
-  // The smallest folding: the widest product (35 x 52 bits, 2 x 3 tiles) in two chunks of
-  // three tile steps each.
-  localparam int MinFoldII = FmulOverhead + 3;
+  // The widest product's tiles (35 x 52 bits, 2 x 3).
+  localparam int WidestTiles = 6;
+  // The smallest folding: the widest product in two chunks of three tile steps each.
+  localparam int MinFoldII = FmulOverhead + WidestTiles / 2;
+  // From this folding on every product is one chunk, so a unit's pc_o is its chunk registers
+  // with no adder behind them, final before the slot's last clock: the product's consumer
+  // reads it there and registers its own result on the advance, and the product takes no
+  // stage of its own (no p_o register, docs/setup_hw.md#the-folded-lean-setup). Below it a
+  // product takes one stage (p_o, after the sum of its two chunks).
+  localparam int OneChunkII = FmulOverhead + WidestTiles;
+  function automatic int fold_mul_stages(input int setup_ii);
+    fold_mul_stages = (setup_ii >= OneChunkII) ? 0 : 1;
+  endfunction
   // The signed tile width: the DSP's (18) or, for the LUT style, the same 18. An operand is
   // cut into unsigned low tiles of fmul_tile - 1 bits and a signed top tile.
   function automatic int fmul_tile(input int tile_bits);
@@ -145,6 +137,24 @@ package specular_setup_lean_pkg;
     fmul_mults = (n * fmul_split(a_bits, b_bits, tile_bits, setup_ii)
                   + fmul_per_mult(a_bits, b_bits, tile_bits, setup_ii) - 1)
                / fmul_per_mult(a_bits, b_bits, tile_bits, setup_ii);
+  endfunction
+
+  // ---- Stage counts ----
+  // specular_pipe_mul's stages for a BBits-wide multiplier operand (specular_pkg::pipe_mul_stages).
+  function automatic int pipe_mul_stages(input int b_bits);
+    pipe_mul_stages = 1 + ((((b_bits + 1) / 2) > 1) ? $clog2((b_bits + 1) / 2) : 0);
+  endfunction
+  // specular_setup_smul (signed, B bits): magnitudes, 3|a|, the multiplier, the sign. With
+  // SetupII > 1 a product is one slot's work of a specular_setup_fmul: fold_mul_stages.
+  function automatic int smul_stages(input int b_bits, input int setup_ii);
+    smul_stages = (setup_ii > 1) ? fold_mul_stages(setup_ii) : 3 + pipe_mul_stages(b_bits);
+  endfunction
+  // specular_setup_lean_norm for InW-bit components (the module checks its own count).
+  function automatic int norm_stages(input int in_w, input int setup_ii);
+    norm_stages = smul_stages(in_w, setup_ii) + 6 + smul_stages(SeedW + 1, setup_ii) + 2
+                + smul_stages(SeedW + 1, setup_ii) + 1
+                + smul_stages(2 * SeedW - (2 * SeedFrac - RsqrtFrac) + 2, setup_ii) + 2
+                + smul_stages(RsqrtFrac + 5, setup_ii) + 1 + smul_stages(RW, setup_ii) + 2;
   endfunction
 
   localparam int BlockStages  = 4;                // specular_setup_lean_block

@@ -37,8 +37,9 @@ module specular_setup_smul #(
 );
 
   if (SetupII > 1) begin : gen_fold
-    logic [ABits+BBits-1:0] pc_unused;  // p_o is the registered product
-    specular_setup_fmul #(.N(1), .ABits(ABits), .BBits(BBits), .TileBits(TileBits), .SetupII(SetupII)) u_fmul (
+    logic [ABits+BBits-1:0] pc_unused;  // p_o is the product after its stages
+    specular_setup_fmul #(.N(1), .ABits(ABits), .BBits(BBits), .TileBits(TileBits), .SetupII(SetupII),
+                          .Stages(specular_setup_lean_pkg::fold_mul_stages(SetupII))) u_fmul (
       .clk_i (clk_i), .en_i (en_i), .a_i (a_i), .b_i (b_i), .p_o (p_o), .pc_o (pc_unused));
   end else if (TileBits > 0) begin : gen_dsp
     // The operands wait out the three stages the magnitudes take in the LUT style, then
