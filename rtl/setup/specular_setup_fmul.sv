@@ -3,8 +3,9 @@
 //
 // specular_setup_fmul: N exact signed products p_j = a_j * b_j in one slot of SetupII clocks
 // on a few tile multipliers, for the folded lean setup (SetupII > 1,
-// docs/setup_hw.md#the-lean-datapath): its stages advance once per slot (en_i, the last
-// clock of the slot) and a product takes one stage. The operands must hold still for the
+// docs/setup_hw.md#the-folded-lean-setup): its stages advance once per slot (en_i, the last
+// clock of the slot) and a product takes Stages stages, 1 (p_o registered) or 0 (p_o final in
+// the slot's last clock, for a caller that registers its own result). The operands must hold still for the
 // whole slot (they are the stages' registers), so the unit reads them tile by tile and
 // serves products of different stages alike.
 //
@@ -23,7 +24,7 @@
 //   c = 1 + s   its tile product registered
 //   c = 2 + s   accumulated (a new diagonal first moves the low bits out; a chunk's last
 //               step moves the sum out and clears the sum)
-//   advance     p_o registered
+//   advance     p_o registered (Stages = 1), or read by the caller (Stages = 0)
 // s < P * H <= SetupII - specular_setup_lean_pkg::FmulOverhead. Exact, so bit-exact with
 // specular_setup_smul. No reset: the counter realigns at the first advance.
 

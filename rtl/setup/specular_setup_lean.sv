@@ -33,10 +33,11 @@
 // The three decisions are the signals opposite_normals_q (tau TON), flat_q and
 // opposite_halfway_q (tau TD), for a test to peek at.
 //
-// SetupII = K >= 6 folds it in time (docs/setup_hw.md#the-lean-datapath): the same stages
+// SetupII = K >= 6 folds it in time (docs/setup_hw.md#the-folded-lean-setup): the same stages
 // advance once per slot of K clocks (a slot counter; the advance is the slot's last clock
 // with room in the output buffer, so geo_ready_o stays a register function and one span
-// enters per slot). A product then takes one stage: every product is a lane of a shared
+// enters per slot). A product then takes one stage, or none from K = 9 on (its consumer
+// reads the unit's chunk registers in the slot's last clock): every product is a lane of a shared
 // specular_setup_fmul (three here, one per normalizer, one each in log2 and exp2) whose
 // tile multipliers, ceil(lanes / per-multiplier lanes) of them, fall as K grows; each CORDIC
 // is ceil(30 / K) specular_setup_cordic_iter copies of one iteration a clock, taking the
