@@ -21,7 +21,9 @@
 // A vector accepted in clock c gives out_valid_o in clock c + Rounds + 1 (Latency), and the
 // next vector is accepted in that same clock when out_ready_i is high: the initiation
 // interval is II = Rounds + 1 clocks (5 at PerClock = 7, Iters = 28; 8 at PerClock = 4;
-// 2 at PerClock = Iters, one clock of iterations).
+// 2 at PerClock = Iters, one clock of iterations). With OpReg (PerClock = 1) round r takes
+// clocks 1 + 2r (its operands selected into registers) and 2 + 2r (the sums): Latency =
+// II = 2 Rounds + 1.
 //
 // Handshake: AXI4-Stream rules on both sides. in_ready_o is high when the unit is empty or
 // its result leaves in this clock (in_ready_o = !busy || (out_valid_o && out_ready_i), so it
@@ -48,7 +50,11 @@ module specular_setup_cordic_iter #(
   parameter int W        = 34,  // register bits: x, y, z, angle_o
   parameter int Frac     = 29,  // fraction bits of x, y and the angle
   parameter int Iters    = 28,  // CORDIC iterations
-  parameter int PerClock = 4    // iterations per clock, 1..Iters
+  parameter int PerClock = 4,   // iterations per clock, 1..Iters
+  // 1 (with PerClock = 1): two clocks an iteration, the selected operands registered in the
+  // first, the sums in the second, so no clock holds both the round's multiplexer and a carry
+  // chain (docs/setup_hw.md#the-folded-cordic).
+  parameter bit OpReg    = 1'b0
 ) (
   input  logic                clk_i,
   input  logic                rst_ni,
@@ -68,8 +74,8 @@ module specular_setup_cordic_iter #(
   // Latency are the figures of the header, public for the block test, which measures them.
   localparam int Rounds  = ParamsOk ? (Iters + PerClock - 1) / PerClock : 1;
   /* verilator lint_off UNUSEDPARAM */
-  localparam int II      /*verilator public*/ = Rounds + 1;
-  localparam int Latency /*verilator public*/ = Rounds + 1;
+  localparam int II      /*verilator public*/ = (OpReg ? 2 : 1) * Rounds + 1;
+  localparam int Latency /*verilator public*/ = (OpReg ? 2 : 1) * Rounds + 1;
   /* verilator lint_on UNUSEDPARAM */
   localparam int CntW    = (Rounds > 1) ? $clog2(Rounds) : 1;
   localparam int Slots   = 1 << CntW;  // the multiplexers' words: Rounds, padded to 2^CntW
@@ -91,6 +97,9 @@ module specular_setup_cordic_iter #(
   if (PerClock < 1 || PerClock > Iters) begin : gen_per_clock_check
     `SPEC_PARAM_ERROR("specular_setup_cordic_iter: PerClock must be in 1..Iters")
   end
+  if (OpReg && PerClock != 1) begin : gen_op_reg_check
+    `SPEC_PARAM_ERROR("specular_setup_cordic_iter: OpReg needs PerClock = 1")
+  end
 
   // a + b when sub = 0, a - b when sub = 1, modulo 2^W: one adder, b inverted and the carry in
   // set by sub (docs/setup_hw.md#the-cordics-adders).
@@ -109,21 +118,29 @@ module specular_setup_cordic_iter #(
   // ---------------------------------------------------------------------------------
   logic            busy_q, busy_d, out_valid_q, out_valid_d;
   logic [CntW-1:0] cnt_q, cnt_d;
-  logic            load, iterate;
+  logic            load, iterate, step;
+  // OpReg: ph_q is the iteration's second clock (the sums); 1 always without OpReg.
+  logic            ph_q, ph_d;
 
   assign in_ready_o = !busy_q || (out_valid_q && out_ready_i);
   assign load       = in_valid_i && in_ready_o;
   assign iterate    = busy_q && !out_valid_q;
+  assign step       = iterate && ph_q;
 
   always_comb begin
     busy_d      = busy_q;
     out_valid_d = out_valid_q;
     cnt_d       = cnt_q;
+    ph_d        = ph_q;
     if (load) begin
       busy_d      = 1'b1;
       out_valid_d = 1'b0;
       cnt_d       = '0;
+      ph_d        = !OpReg;
+    end else if (iterate && !ph_q) begin
+      ph_d = 1'b1;
     end else if (iterate) begin
+      ph_d = !OpReg;
       if (cnt_q == CntW'(Rounds - 1)) begin
         out_valid_d = 1'b1;
       end else begin
@@ -140,10 +157,12 @@ module specular_setup_cordic_iter #(
       busy_q      <= 1'b0;
       out_valid_q <= 1'b0;
       cnt_q       <= '0;
+      ph_q        <= !OpReg;
     end else begin
       busy_q      <= busy_d;
       out_valid_q <= out_valid_d;
       cnt_q       <= cnt_d;
+      ph_q        <= ph_d;
     end
   end
 
@@ -199,7 +218,24 @@ module specular_setup_cordic_iter #(
     end
 
     logic [W-1:0] dx, dy, atan;
-    assign {atan, dy, dx} = tree[0 +: 3*W];  // the root
+    logic         up_sel;
+    if (OpReg) begin : gen_op_reg
+      // The first clock of the iteration registers the root and the direction (x, y, z
+      // hold); the second adds them.
+      logic [3*W-1:0] op_q;
+      logic           up_q;
+      always_ff @(posedge clk_i) begin
+        if (iterate && !ph_q) begin
+          op_q <= tree[0 +: 3*W];
+          up_q <= y[W-1];
+        end
+      end
+      assign {atan, dy, dx} = op_q;
+      assign up_sel         = up_q;
+    end else begin : gen_op_wire
+      assign {atan, dy, dx} = tree[0 +: 3*W];  // the root
+      assign up_sel         = y[W-1];
+    end
 
     // up: y < 0, the vector turns up: x - dx, y + dy, z - atan (else x + dx, y - dy, z + atan).
     // z's sum is add_sub written as one (W+1)-bit sum whose bit 0 makes the carry in,
@@ -208,7 +244,7 @@ module specular_setup_cordic_iter #(
     // from LUTs instead of PerClock carry chains.
     logic       up;
     logic [W:0] z_sum;
-    assign up       = y[W-1];
+    assign up       = up_sel;
     assign z_sum    = {z, 1'b1} + {atan ^ {W{up}}, up};
     assign x_s[(k+1)*W +: W] = add_sub(x, dx, up);
     assign y_s[(k+1)*W +: W] = add_sub(y, dy, !up);
@@ -226,7 +262,7 @@ module specular_setup_cordic_iter #(
       x_d = x_ld;
       y_d = y_ld;
       z_d = z_ld;
-    end else if (iterate) begin
+    end else if (step) begin
       x_d = x_s[PerClock*W +: W];
       y_d = y_s[PerClock*W +: W];
       z_d = z_s[PerClock*W +: W];
@@ -247,5 +283,6 @@ module specular_setup_cordic_iter #(
   // ---------------------------------------------------------------------------------
   `SPEC_ASSERT(CntInRange, cnt_q <= CntW'(Rounds - 1), clk_i, rst_ni)
   `SPEC_ASSERT(ValidOnlyBusy, !out_valid_q || busy_q, clk_i, rst_ni)
+  `SPEC_ASSERT(PhaseOnlyOpReg, OpReg || ph_q, clk_i, rst_ni)
 
 endmodule

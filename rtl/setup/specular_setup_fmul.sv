@@ -176,26 +176,38 @@ module specular_setup_fmul #(
     logic                nd_d, nd1_q, nd2_q;
     if (Steps > TokenMinSteps) begin : gen_token
       // c = s: a one-hot token marks step s (set by the advance, shifted out after the last
-      // step); each tile's select is the OR of its steps' token bits, and the tile registers
-      // take the AND-OR of the selected tiles (no decode of the count, no priority chain).
+      // step). Each tile's select is a register, the OR of its steps' token bits a clock
+      // ahead (step 0's set by the advance itself), and the tile registers take the AND-OR of
+      // the selected tiles (no decode of the count, no priority chain). Registered, a select
+      // leaves a flip-flop straight for its multiplexers: the merge makes one register of the
+      // units' identical selects, and a select decoded from the token in the same clock was a
+      // gate shared by units across the part, two long routes in one clock
+      // (docs/setup_hw.md#the-folded-lean-setup).
       logic [Steps-1:0]  tok_q;
       always_ff @(posedge clk_i) begin
         if (en_i) tok_q <= Steps'(1);
         else      tok_q <= tok_q << 1;
       end
-      logic [Pm*TA-1:0] sel_a;
-      logic [Pm*TB-1:0] sel_b;
+      logic [Pm*TA-1:0] sel_a, sel_a_d;
+      logic [Pm*TB-1:0] sel_b, sel_b_d;
+      logic             nd_n;
       always_comb begin
-        sel_a = '0;
-        sel_b = '0;
-        nd_d  = 1'b0;
+        sel_a_d = '0;
+        sel_b_d = '0;
+        nd_n    = 1'b0;
         for (int s = 0; s < Steps; s++) begin
-          if (starts_diag(s, K0)) nd_d |= tok_q[s];
+          // Step s comes next: the advance (s = 0) or the token on step s - 1.
+          if (starts_diag(s, K0)) nd_n |= (s == 0) ? en_i : (!en_i && tok_q[(s > 0) ? s - 1 : 0]);
           if (step_r(s, K0) < TP) begin
-            sel_a[(s / H) * TA + tile_at(step_r(s, K0)) / TB] |= tok_q[s];
-            sel_b[(s / H) * TB + tile_at(step_r(s, K0)) % TB] |= tok_q[s];
+            sel_a_d[(s / H) * TA + tile_at(step_r(s, K0)) / TB] |= (s == 0) ? en_i : (!en_i && tok_q[(s > 0) ? s - 1 : 0]);
+            sel_b_d[(s / H) * TB + tile_at(step_r(s, K0)) % TB] |= (s == 0) ? en_i : (!en_i && tok_q[(s > 0) ? s - 1 : 0]);
           end
         end
+      end
+      always_ff @(posedge clk_i) begin
+        sel_a <= sel_a_d;
+        sel_b <= sel_b_d;
+        nd_d  <= nd_n;
       end
       always_comb begin
         ta_d = '0;

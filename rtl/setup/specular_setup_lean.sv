@@ -645,8 +645,8 @@ module specular_setup_lean #(
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (cos_x3), .q_o (cos_nu));
   logic signed [CW-1:0] gamma_raw, lambda;
   if (SetupII > 1) begin : gen_cordic_fold
-    // Copies of one iteration a clock take the slots' vectors in turn (ld_q, advanced with
-    // the slots): the copy loaded at a slot's first clock (the operands hold still for the
+    // Copies of one iteration a clock (two from SetupII 58 on, cordic_op_reg) take the
+    // slots' vectors in turn (ld_q, advanced with the slots): the copy loaded at a slot's first clock (the operands hold still for the
     // slot) retires on the advance Copies - 1 slots later, its angle registered there. A copy
     // never loaded since reset (the first Copies - 1 slots) retires nothing.
     localparam int Copies = specular_setup_lean_pkg::cordic_copies(SetupII);
@@ -667,12 +667,14 @@ module specular_setup_lean #(
     logic [Copies*CW-1:0] g_angle, l_angle;
     for (genvar u = 0; u < Copies; u++) begin : gen_copy
       specular_setup_cordic_iter #(.W(CW), .Frac(CFrac), .Iters(specular_setup_lean_pkg::CordicIters),
-                                   .PerClock(1)) u_cordic_gamma (
+                                   .PerClock(1),
+                                   .OpReg(specular_setup_lean_pkg::cordic_op_reg(SetupII) == 1)) u_cordic_gamma (
         .clk_i (clk_i), .rst_ni (rst_ni), .in_valid_i (slot_first && ld_q == CpW'(u)),
         .in_ready_o (g_in_ready[u]), .x_i (CW'(x_nu) <<< Up), .y_i (CW'(cl_q) <<< Up),
         .out_valid_o (g_valid[u]), .out_ready_i (adv && rt == CpW'(u)), .angle_o (g_angle[u*CW +: CW]));
       specular_setup_cordic_iter #(.W(CW), .Frac(CFrac), .Iters(specular_setup_lean_pkg::CordicIters),
-                                   .PerClock(1)) u_cordic_lambda (
+                                   .PerClock(1),
+                                   .OpReg(specular_setup_lean_pkg::cordic_op_reg(SetupII) == 1)) u_cordic_lambda (
         .clk_i (clk_i), .rst_ni (rst_ni), .in_valid_i (slot_first && ld_q == CpW'(u)),
         .in_ready_o (l_in_ready[u]), .x_i (CW'(cos_nu) <<< Up), .y_i (CW'(nu_q) <<< Up),
         .out_valid_o (l_valid[u]), .out_ready_i (adv && rt == CpW'(u)), .angle_o (l_angle[u*CW +: CW]));

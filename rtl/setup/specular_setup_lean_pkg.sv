@@ -167,6 +167,12 @@ package specular_setup_lean_pkg;
   function automatic int cordic_copies(input int setup_ii);
     cordic_copies = (CordicIters + 2 + setup_ii - 1) / setup_ii;
   endfunction
+  // 1 where a copy can take two clocks an iteration (specular_setup_cordic_iter OpReg: no
+  // clock holds the round's multiplexer and an add) in the same number of copies: its
+  // 2 Iters + 1 clocks fit copies * setup_ii - 1 (setup_ii >= 58).
+  function automatic int cordic_op_reg(input int setup_ii);
+    cordic_op_reg = (cordic_copies(setup_ii) * setup_ii - 1 >= 2 * CordicIters + 1) ? 1 : 0;
+  endfunction
   function automatic int cordic_stages(input int setup_ii);
     cordic_stages = (setup_ii > 1) ? cordic_copies(setup_ii) : CordicStages;
   endfunction

@@ -127,6 +127,7 @@ Stats run(M& m, const std::vector<device::GeoSpan>& spans, double p_valid, doubl
       prev_stalled = false;
     }
     const bool accept = offering && m.geo_ready_o;
+    const bool taken = m.span_valid_o && m.span_ready_i;
     tick(m);
     if (accept) {
       device::GeoSpan g = spans[next];
@@ -140,7 +141,10 @@ Stats run(M& m, const std::vector<device::GeoSpan>& spans, double p_valid, doubl
       prev_stalled = false;
       ++st.resets;
     }
-    if (++idle > static_cast<long>(40 * spans.size() + 10000)) break;  // a hang fails below
+    // A hang (no span accepted and no descriptor taken for 10,000 clocks, far beyond any
+    // SetupII and latency) fails below.
+    if (accept || taken) idle = 0;
+    if (++idle > 10000) break;
   }
   return st;
 }

@@ -1,15 +1,20 @@
 // SPDX-License-Identifier: Apache-2.0
 // The folded CORDIC (rtl/setup/specular_setup_cordic_iter.sv) against its golden model
-// host::lean::cordic_angle(x, y, Frac, Iters, W), bit for bit, in four configurations (each its
-// own Verilator model, tests/rtl/CMakeLists.txt): PerClock = 4, 7 and 28 at W 34 / Frac 29 /
-// Iters 28 (the lean setup's widths), and PerClock = 5 at W 40 / Frac 33 / Iters 32, where
-// PerClock divides no Iters and the last round's stages idle. Each gets 20,000 random vectors of
+// host::lean::cordic_angle(x, y, Frac, Iters, W), bit for bit, in six configurations (each its
+// own Verilator model, tests/rtl/CMakeLists.txt): PerClock = 1, 4, 7 and 28 at W 34 / Frac 29 /
+// Iters 28 (the lean setup's widths), PerClock = 1 with OpReg (two clocks an iteration, the
+// folded lean setup's copies from SetupII 58 on), and PerClock = 5 at W 40 / Frac 33 / Iters 32,
+// where PerClock divides no Iters and the last round's stages idle. Each gets 20,000 random vectors of
 // every magnitude and quadrant (the axes, the half turn's cases x < 0 with y = 0, tiny vectors,
 // vectors near the width limit |(x, y)| K < 2^(W-1-Frac)) under random input gaps, output
 // backpressure and resets; the AXI4-Stream rules on the output (valid and data hold until the
 // transfer); the initiation interval and latency, measured, equal to the module's II and Latency
-// and to ceil(Iters / PerClock) + 1; and a reset in the middle of a vector and while its result
+// and to ceil(Iters / PerClock) + 1 (2 ceil(Iters / PerClock) + 1 with OpReg); and a reset in the middle of a vector and while its result
 // waits.
+#include "Vcordic_iter_pc1.h"
+#include "Vcordic_iter_pc1_opreg.h"
+#include "Vcordic_iter_pc1_opreg_specular_setup_cordic_iter.h"
+#include "Vcordic_iter_pc1_specular_setup_cordic_iter.h"
 #include "Vcordic_iter_pc28.h"
 #include "Vcordic_iter_pc28_specular_setup_cordic_iter.h"
 #include "Vcordic_iter_pc4.h"
@@ -42,7 +47,8 @@ namespace hl = specular::host::lean;
 // The configuration of a model (its -G parameters in tests/rtl/CMakeLists.txt).
 struct Config {
   int w, frac, iters, per_clock;
-  int ii() const { return (iters + per_clock - 1) / per_clock + 1; }
+  bool op_reg = false;  // two clocks an iteration
+  int ii() const { return (op_reg ? 2 : 1) * ((iters + per_clock - 1) / per_clock) + 1; }
 };
 
 struct Vec2 {
@@ -344,7 +350,8 @@ void check_random(M& m, const Config& c) {
 }
 
 // The configurations of the models (tests/rtl/CMakeLists.txt).
-constexpr Config kPc4{34, 29, 28, 4}, kPc7{34, 29, 28, 7}, kPc28{34, 29, 28, 28}, kW40Pc5{40, 33, 32, 5};
+constexpr Config kPc1{34, 29, 28, 1}, kPc1OpReg{34, 29, 28, 1, true}, kPc4{34, 29, 28, 4}, kPc7{34, 29, 28, 7},
+    kPc28{34, 29, 28, 28}, kW40Pc5{40, 33, 32, 5};
 
 }  // namespace
 
@@ -362,6 +369,8 @@ constexpr Config kPc4{34, 29, 28, 4}, kPc7{34, 29, 28, 7}, kPc28{34, 29, 28, 28}
     check_reset(m, cfg);                                                                                       \
   }
 
+CORDIC_ITER_TESTS(Vcordic_iter_pc1, kPc1, "W 34 Frac 29 Iters 28 PerClock 1")
+CORDIC_ITER_TESTS(Vcordic_iter_pc1_opreg, kPc1OpReg, "W 34 Frac 29 Iters 28 PerClock 1 OpReg")
 CORDIC_ITER_TESTS(Vcordic_iter_pc4, kPc4, "W 34 Frac 29 Iters 28 PerClock 4")
 CORDIC_ITER_TESTS(Vcordic_iter_pc7, kPc7, "W 34 Frac 29 Iters 28 PerClock 7")
 CORDIC_ITER_TESTS(Vcordic_iter_pc28, kPc28, "W 34 Frac 29 Iters 28 PerClock 28")

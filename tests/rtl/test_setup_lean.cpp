@@ -10,6 +10,7 @@
 #include "Vsetup_lean.h"
 #include "Vsetup_lean_ii16.h"
 #include "Vsetup_lean_ii32.h"
+#include "Vsetup_lean_ii64.h"
 #include "Vsetup_lean_ii8.h"
 #if SPECULAR_SETUP_VARIANTS
 #include "Vsetup_lean_lut.h"
@@ -143,7 +144,12 @@ struct FoldII32 {
   using Model = Vsetup_lean_ii32;
   static constexpr long kII = 32;
 };
-using FoldModels = std::tuple<FoldII8, FoldII16, FoldII32>;
+// Two clocks a CORDIC iteration (specular_setup_lean_pkg::cordic_op_reg).
+struct FoldII64 {
+  using Model = Vsetup_lean_ii64;
+  static constexpr long kII = 64;
+};
+using FoldModels = std::tuple<FoldII8, FoldII16, FoldII32, FoldII64>;
 
 size_t fold_spans() {
   const char* e = std::getenv("SPECULAR_SETUP_RTL_SPANS");
