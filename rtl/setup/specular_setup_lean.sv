@@ -761,9 +761,12 @@ module specular_setup_lean #(
   logic flat_cor, opph_cor;
   specular_delay #(.Width(2), .Depth(TCOR - TD), .Reset(1'b0), .Ram(RamLines)) u_dly_flags_cor (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({flat_q, opposite_halfway_q}), .q_o ({flat_cor, opph_cor}));
-  logic [LenBits-1:0] len_cor;
-  specular_delay #(.Width(LenBits), .Depth(TCOR), .Reset(1'b0), .Ram(RamLines)) u_dly_len_cor (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (len_q), .q_o (len_cor));
+  logic [LenBits-1:0] len_pre, len_cor;
+  specular_delay #(.Width(LenBits), .Depth(TCOR - 1), .Reset(1'b0), .Ram(RamLines)) u_dly_len_cor (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (len_q), .q_o (len_pre));
+  always_ff @(posedge clk_i) begin
+    if (adv) len_cor <= len_pre;
+  end
   logic signed [CW-1:0] gamma_q;
   logic [AngleBits-1:0] psi0_q, psi0_out;
   logic [3:0]           lshift_d, lshift_q, lshift_dp;
@@ -781,9 +784,15 @@ module specular_setup_lean #(
       lshift_q <= lshift_d;
     end
   end
-  logic [RecipLenFrac:0] recip;
+  // 1/l read a stage early and registered again in the fabric, so the block RAM's
+  // clock-to-output (5.61 ns) ends in a flip-flop beside it, not in a shared unit's
+  // operand multiplexer (docs/setup_hw.md#the-folded-lean-setup).
+  logic [RecipLenFrac:0] recip_rd, recip;
   specular_rom #(.Width(RecipLenFrac + 1), .AddrBits(LenBits), .File(RecipLenFile)) u_recip_len_rom (
-    .clk_i (clk_i), .en_i (adv), .addr_i (len_cor), .data_o (recip));
+    .clk_i (clk_i), .en_i (adv), .addr_i (len_pre), .data_o (recip_rd));
+  always_ff @(posedge clk_i) begin
+    if (adv) recip <= recip_rd;
+  end
   logic signed [GW+RLW-1:0] gr;
   logic signed [GW-1:0]     gamma2;  // rshift_round(gamma, CFrac - GammaFrac): gamma 2^1
   assign gamma2 = GW'(gamma_q) <<< (GammaFrac - CFrac);
