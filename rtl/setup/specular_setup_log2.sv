@@ -80,15 +80,23 @@ module specular_setup_log2 #(
   assign p_rel = nz_q ? 32'(PTop) - 32'(lz_q) : -32'(UnitFrac + 1);
   logic unused_norm;  // below mant: truncated; the sign (a > 0)
   assign unused_norm = ^{a_norm[AmpW-3-UnitFrac:0], a_i[AmpW-1]};
-  logic [AddrBits-1:0] idx;
+  logic [AddrBits-1:0] idx, idx_rd;
   assign idx = mant_d[UnitFrac-1 -: AddrBits];
+  if (SetupII > 1) begin : gen_idx_reg
+    // Folded, the tables read on the slot's last clock, and the stage's registers hold for the
+    // slot: the address is registered on every clock, so the block RAM's address input ends a
+    // route from a flip-flop, not the normalizing shift (docs/setup_hw.md#the-folded-lean-setup).
+    always_ff @(posedge clk_i) idx_rd <= idx;
+  end else begin : gen_idx_wire
+    assign idx_rd = idx;
+  end
   logic [RecipFrac-1:0] recip;   // r_i < 2^12
   logic [LogFrac:0]     value;   // -log2 r_i in [0, 1], Q30
   specular_rom #(.Width(RecipFrac), .AddrBits(AddrBits), .File(LogRecipFile)) u_recip_rom (
-    .clk_i (clk_i), .en_i (en_i), .addr_i (idx), .data_o (recip)
+    .clk_i (clk_i), .en_i (en_i), .addr_i (idx_rd), .data_o (recip)
   );
   specular_rom #(.Width(LogFrac + 1), .AddrBits(AddrBits), .File(LogValueFile)) u_value_rom (
-    .clk_i (clk_i), .en_i (en_i), .addr_i (idx), .data_o (value)
+    .clk_i (clk_i), .en_i (en_i), .addr_i (idx_rd), .data_o (value)
   );
 
   logic [UnitFrac:0]   mant_q;
