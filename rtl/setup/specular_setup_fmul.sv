@@ -5,9 +5,9 @@
 // on a few tile multipliers, for the folded lean setup (SetupII > 1,
 // docs/setup_hw.md#the-folded-lean-setup): its stages advance once per slot (en_i, the last
 // clock of the slot) and a product takes Stages stages, 1 (p_o registered) or 0 (p_o final in
-// the slot's last clock, for a caller that registers its own result). The operands must hold still for the
-// whole slot (they are the stages' registers), so the unit reads them tile by tile and
-// serves products of different stages alike.
+// the slot's last clock, for a caller that registers its own result). The operands must hold
+// still for the whole slot (they are the stages' registers), so the unit reads them tile by
+// tile and serves products of different stages alike.
 //
 // An operand is cut into unsigned low tiles of T - 1 bits and a signed top tile of at most
 // T bits (T = 18), so every tile product is one signed 18x18 product (registered tiles and

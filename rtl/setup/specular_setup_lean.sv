@@ -646,9 +646,10 @@ module specular_setup_lean #(
   logic signed [CW-1:0] gamma_raw, lambda;
   if (SetupII > 1) begin : gen_cordic_fold
     // Copies of one iteration a clock (two from SetupII 58 on, cordic_op_reg) take the
-    // slots' vectors in turn (ld_q, advanced with the slots): the copy loaded at a slot's first clock (the operands hold still for the
-    // slot) retires on the advance Copies - 1 slots later, its angle registered there. A copy
-    // never loaded since reset (the first Copies - 1 slots) retires nothing.
+    // slots' vectors in turn (ld_q, advanced with the slots): the copy loaded at a slot's
+    // first clock (the operands hold still for the slot) retires on the advance Copies - 1
+    // slots later, its angle registered there. A copy never loaded since reset (the first
+    // Copies - 1 slots) retires nothing.
     localparam int Copies = specular_setup_lean_pkg::cordic_copies(SetupII);
     localparam int CpW    = (Copies > 1) ? $clog2(Copies) : 1;
     logic [CpW-1:0] ld_q, rt;
