@@ -22,7 +22,8 @@
 //                   before the product, a shift by one of two constants after it, then
 //                   (y + 1) >> 1
 // (S: a specular_setup_smul; with SetupII > 1 a lane of the block's specular_setup_fmul,
-// specular_setup_lean_pkg::fold_mul_stages stages.) Stages: the localparam Stages (specular_setup_lean_pkg::norm_stages).
+// specular_setup_lean_pkg::fold_mul_stages stages.) Stages: the localparam Stages
+// (specular_setup_lean_pkg::norm_stages).
 // en_i freezes every stage. No reset.
 
 `include "specular_assert.svh"

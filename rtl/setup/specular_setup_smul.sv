@@ -3,8 +3,9 @@
 //
 // specular_setup_smul: an exact signed product p = a * b, one pair per clock
 // (docs/setup_hw.md#the-lean-datapath: every product of the lean setup goes through one).
-// Stages: specular_setup_lean_pkg::smul_stages(BBits, SetupII) in every style; en_i freezes
-// every stage. No reset.
+// Stages: specular_setup_lean_pkg::smul_stages(BBits, 1) in every style; en_i freezes every
+// stage. No reset. The folded setup (SetupII > 1) takes its products from shared
+// specular_setup_fmul units instead.
 //
 // With DSP tiles (TileBits > 0) the operands wait three stages and go to specular_pipe_mul
 // with Signed = 1: cut as specular_setup_fmul cuts them, unsigned low tiles of TileBits - 1
@@ -19,15 +20,11 @@
 //   second stage  3|a| (the tree's digit row)
 //   then          specular_pipe_mul (specular_pkg::pipe_mul_stages(BBits))
 //   last stage    the sign put back (negate or not)
-//
-// With SetupII > 1 (the folded setup, en_i once per slot) the product is a one-product
-// specular_setup_fmul instead: one stage, one tile multiplier.
 
 module specular_setup_smul #(
   parameter int ABits    = 18,
   parameter int BBits    = 18,
-  parameter int TileBits = 18,  // specular_pipe_mul's: 0 LUT tree, 18 ECP5 MULT18X18D tiles
-  parameter int SetupII  = 1
+  parameter int TileBits = 18   // specular_pipe_mul's: 0 LUT tree, 18 ECP5 MULT18X18D tiles
 ) (
   input  logic                           clk_i,
   input  logic                           en_i,
@@ -36,15 +33,10 @@ module specular_setup_smul #(
   output logic signed [ABits+BBits-1:0]  p_o
 );
 
-  if (SetupII > 1) begin : gen_fold
-    logic [ABits+BBits-1:0] pc_unused;  // p_o is the product after its stages
-    specular_setup_fmul #(.N(1), .ABits(ABits), .BBits(BBits), .TileBits(TileBits), .SetupII(SetupII),
-                          .Stages(specular_setup_lean_pkg::fold_mul_stages(SetupII))) u_fmul (
-      .clk_i (clk_i), .en_i (en_i), .a_i (a_i), .b_i (b_i), .p_o (p_o), .pc_o (pc_unused));
-  end else if (TileBits > 0) begin : gen_dsp
+  if (TileBits > 0) begin : gen_dsp
     // The operands wait out the three stages the magnitudes take in the LUT style, then
     // specular_pipe_mul multiplies them as signed tiles.
-    localparam int Wait = specular_setup_lean_pkg::smul_stages(BBits, SetupII)
+    localparam int Wait = specular_setup_lean_pkg::smul_stages(BBits, 1)
                         - specular_setup_lean_pkg::pipe_mul_stages(BBits);
     logic [ABits-1:0] a_w;
     logic [BBits-1:0] b_w;
