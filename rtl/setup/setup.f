@@ -10,7 +10,7 @@ rtl/setup/specular_setup_rshift.sv
 rtl/setup/specular_setup_rshift_n.sv
 rtl/setup/specular_setup_norm.sv
 rtl/setup/specular_setup_cordic.sv
-rtl/setup/specular_setup_cordic_iter.sv
+rtl/setup/specular_setup_cordic_fold.sv
 rtl/setup/specular_setup_log2.sv
 rtl/setup/specular_setup_exp2.sv
 rtl/setup/specular_setup.sv

@@ -40,8 +40,7 @@
 // reads the unit's chunk registers in the slot's last clock): every product is a lane of a shared
 // specular_setup_fmul (three here, one per normalizer, one each in log2 and exp2) whose
 // tile multipliers, ceil(lanes / per-multiplier lanes) of them, fall as K grows; each CORDIC
-// is ceil(30 / K) specular_setup_cordic_iter copies of one iteration a clock, taking the
-// slots' vectors in turn. The stage counts are the
+// is a specular_setup_cordic_fold, a chain of segments of two-clock iterations, one a stage. The stage counts are the
 // package's functions of K, so the T* below and every delay line follow.
 
 `include "specular_assert.svh"
@@ -645,53 +644,28 @@ module specular_setup_lean #(
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (cos_x3), .q_o (cos_nu));
   logic signed [CW-1:0] gamma_raw, lambda;
   if (SetupII > 1) begin : gen_cordic_fold
-    // Copies of one iteration a clock (two from SetupII 58 on, cordic_op_reg) take the
-    // slots' vectors in turn (ld_q, advanced with the slots): the copy loaded at a slot's
-    // first clock (the operands hold still for the slot) retires on the advance Copies - 1
-    // slots later, its angle registered there. A copy never loaded since reset (the first
-    // Copies - 1 slots) retires nothing.
-    localparam int Copies = specular_setup_lean_pkg::cordic_copies(SetupII);
-    localparam int CpW    = (Copies > 1) ? $clog2(Copies) : 1;
-    logic [CpW-1:0] ld_q, rt;
-    logic [Copies-1:0] fed_q;
-    always_ff @(posedge clk_i or negedge rst_ni) begin
-      if (!rst_ni) begin
-        ld_q  <= '0;
-        fed_q <= '0;
-      end else begin
-        if (slot_first) fed_q[ld_q] <= 1'b1;
-        if (adv) ld_q <= (ld_q == CpW'(Copies - 1)) ? '0 : ld_q + CpW'(1);
-      end
-    end
-    assign rt = (ld_q == CpW'(Copies - 1)) ? '0 : ld_q + CpW'(1);
-    logic [Copies-1:0]    g_in_ready, g_valid, l_in_ready, l_valid;
-    logic [Copies*CW-1:0] g_angle, l_angle;
-    for (genvar u = 0; u < Copies; u++) begin : gen_copy
-      specular_setup_cordic_iter #(.W(CW), .Frac(CFrac), .Iters(specular_setup_lean_pkg::CordicIters),
-                                   .PerClock(1),
-                                   .OpReg(specular_setup_lean_pkg::cordic_op_reg(SetupII) == 1)) u_cordic_gamma (
-        .clk_i (clk_i), .rst_ni (rst_ni), .in_valid_i (slot_first && ld_q == CpW'(u)),
-        .in_ready_o (g_in_ready[u]), .x_i (CW'(x_nu) <<< Up), .y_i (CW'(cl_q) <<< Up),
-        .out_valid_o (g_valid[u]), .out_ready_i (adv && rt == CpW'(u)), .angle_o (g_angle[u*CW +: CW]));
-      specular_setup_cordic_iter #(.W(CW), .Frac(CFrac), .Iters(specular_setup_lean_pkg::CordicIters),
-                                   .PerClock(1),
-                                   .OpReg(specular_setup_lean_pkg::cordic_op_reg(SetupII) == 1)) u_cordic_lambda (
-        .clk_i (clk_i), .rst_ni (rst_ni), .in_valid_i (slot_first && ld_q == CpW'(u)),
-        .in_ready_o (l_in_ready[u]), .x_i (CW'(cos_nu) <<< Up), .y_i (CW'(nu_q) <<< Up),
-        .out_valid_o (l_valid[u]), .out_ready_i (adv && rt == CpW'(u)), .angle_o (l_angle[u*CW +: CW]));
-    end
+    // Segments of two-clock iterations (docs/setup_hw.md#the-folded-cordic): every segment
+    // starts on the slot's first clock (the operands hold still for the slot) and is done
+    // before its last, whose advance registers the last segment's angle.
+    localparam int Rounds = specular_setup_lean_pkg::cordic_rounds(SetupII);
+    logic signed [CW-1:0] g_angle, l_angle;
+    logic                 g_done, l_done;
+    specular_setup_cordic_fold #(.W(CW), .Frac(CFrac), .Iters(specular_setup_lean_pkg::CordicIters),
+                                 .Rounds(Rounds)) u_cordic_gamma (
+      .clk_i (clk_i), .rst_ni (rst_ni), .start_i (slot_first), .x_i (CW'(x_nu) <<< Up),
+      .y_i (CW'(cl_q) <<< Up), .angle_o (g_angle), .done_o (g_done));
+    specular_setup_cordic_fold #(.W(CW), .Frac(CFrac), .Iters(specular_setup_lean_pkg::CordicIters),
+                                 .Rounds(Rounds)) u_cordic_lambda (
+      .clk_i (clk_i), .rst_ni (rst_ni), .start_i (slot_first), .x_i (CW'(cos_nu) <<< Up),
+      .y_i (CW'(nu_q) <<< Up), .angle_o (l_angle), .done_o (l_done));
     always_ff @(posedge clk_i) begin
       if (adv) begin
-        gamma_raw <= g_angle[rt*CW +: CW];
-        lambda    <= l_angle[rt*CW +: CW];
+        gamma_raw <= g_angle;
+        lambda    <= l_angle;
       end
     end
-    logic unused_cordic;
-    assign unused_cordic = ^{g_in_ready, g_valid, l_in_ready, l_valid};
-    // The schedule's premise: each slot's copy takes its vector at the slot's first clock, and
-    // the retiring copy's angle is there at the advance.
-    `SPEC_ASSERT(CordicStarts_A, !slot_first || (g_in_ready[ld_q] && l_in_ready[ld_q]), clk_i, rst_ni)
-    `SPEC_ASSERT(CordicDone_A, !adv || !fed_q[rt] || (g_valid[rt] && l_valid[rt]), clk_i, rst_ni)
+    // The schedule's premise: the angles are final at every advance.
+    `SPEC_ASSERT(CordicDone_A, !adv || (g_done && l_done), clk_i, rst_ni)
   end else begin : gen_cordic_pipe
     logic unused_first;
     assign unused_first = slot_first;

@@ -159,22 +159,19 @@ package specular_setup_lean_pkg;
 
   localparam int BlockStages  = 4;                // specular_setup_lean_block
   localparam int CordicStages = 1 + CordicIters;  // specular_setup_lean_cordic
-  // Folded (SetupII > 1) a CORDIC is cordic_copies specular_setup_cordic_iter instances of one
-  // iteration a clock (one carry chain a stage) taking the slots' vectors in turn: a copy
-  // starts at its slot's first clock and has cordic_copies slots for its Iters + 1 clocks up
-  // to its result, registered on the advance of the last of them (copies * setup_ii - 1 >=
-  // Iters + 1). The CORDIC takes cordic_copies stages.
-  function automatic int cordic_copies(input int setup_ii);
-    cordic_copies = (CordicIters + 2 + setup_ii - 1) / setup_ii;
+  // Folded (SetupII > 1) a CORDIC is a specular_setup_cordic_fold, cordic_segs segments of
+  // cordic_rounds iterations, two clocks an iteration: a segment starts on its slot's first
+  // clock and its 2 Rounds clocks end before the slot's last, on whose advance the last
+  // segment's angle is registered (2 Rounds <= setup_ii - 2). The CORDIC takes cordic_segs
+  // stages.
+  function automatic int cordic_rounds(input int setup_ii);
+    cordic_rounds = ((setup_ii - 2) / 2 < CordicIters) ? (setup_ii - 2) / 2 : CordicIters;
   endfunction
-  // 1 where a copy can take two clocks an iteration (specular_setup_cordic_iter OpReg: no
-  // clock holds the round's multiplexer and an add) in the same number of copies: its
-  // 2 Iters + 1 clocks fit copies * setup_ii - 1 (setup_ii >= 58).
-  function automatic int cordic_op_reg(input int setup_ii);
-    cordic_op_reg = (cordic_copies(setup_ii) * setup_ii - 1 >= 2 * CordicIters + 1) ? 1 : 0;
+  function automatic int cordic_segs(input int setup_ii);
+    cordic_segs = (CordicIters + cordic_rounds(setup_ii) - 1) / cordic_rounds(setup_ii);
   endfunction
   function automatic int cordic_stages(input int setup_ii);
-    cordic_stages = (setup_ii > 1) ? cordic_copies(setup_ii) : CordicStages;
+    cordic_stages = (setup_ii > 1) ? cordic_segs(setup_ii) : CordicStages;
   endfunction
 
 endpackage

@@ -144,7 +144,7 @@ struct FoldII32 {
   using Model = Vsetup_lean_ii32;
   static constexpr long kII = 32;
 };
-// Two clocks a CORDIC iteration (specular_setup_lean_pkg::cordic_op_reg).
+// The CORDICs of one segment each (specular_setup_lean_pkg::cordic_segs).
 struct FoldII64 {
   using Model = Vsetup_lean_ii64;
   static constexpr long kII = 64;
