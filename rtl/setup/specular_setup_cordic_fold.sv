@@ -13,8 +13,8 @@
 // Schedule: start_i loads segment 0 with (x_i, y_i) turned into the right half plane (x < 0:
 // (x, y) negated, z = +pi when y >= 0, else -pi; z = 0 otherwise) and segment s > 0 with
 // segment s - 1's registers. Round r of every segment takes two clocks: the shifted operands
-// of iteration s Rounds + r and the direction are selected into registers (op_q, up_q), then
-// the three sums are registered. With start_i high in clock c, done_o is high from clock
+// of iteration s Rounds + r, its angle constant and the direction are selected into
+// registers, then the three sums are registered. With start_i high in clock c, done_o is high from clock
 // c + Latency (Latency = 2 Rounds + 1) until the next start_i, which must wait for it. The vector given at start j leaves at
 // angle_o while done_o is high after start j + Segs - 1. Iterations from Iters on (the last
 // segment's when Rounds does not divide Iters) leave the vector as it is.
@@ -170,17 +170,23 @@ module specular_setup_cordic_fold #(
       assign tree[(n-1)*3*W +: 3*W] = cnt_q[Sel] ? tree[2*n*3*W +: 3*W] : tree[(2*n-1)*3*W +: 3*W];
     end
 
-    // The first clock of a round registers the shifted operands and the direction; the angle
-    // constant depends on cnt_q alone, which holds over both clocks.
-    logic [W-1:0] dx_q, dy_q, atan;
-    logic         up_q;
+    // The first clock of a round registers the shifted operands, the angle constant and the
+    // direction. The constants fall with i, so the segment's first is its largest and sets the
+    // register's width (AtW bits, the rest zero).
+    localparam int AtW = (s * Rounds < Iters && atan_word(s * Rounds) > 1) ? $clog2(atan_word(s * Rounds) + 1) : 1;
+    logic [W-1:0]   dx_q, dy_q, atan;
+    logic [AtW-1:0] atan_q;
+    logic           up_q;
     always_ff @(posedge clk_i) begin
       if (select) begin
         {dy_q, dx_q} <= tree[0 +: 2*W];
+        atan_q       <= tree[2*W +: AtW];
         up_q         <= y[W-1];
       end
     end
-    assign atan = tree[2*W +: W];
+    assign atan = W'(atan_q);
+    logic unused_atan_top;
+    assign unused_atan_top = ^tree[2*W+AtW +: W-AtW];
 
     // up: y < 0, the vector turns up: x - dx, y + dy, z - atan (else x + dx, y - dy, z + atan).
     // z's sum is add_sub written as one (W+1)-bit sum whose bit 0 makes the carry in, so that
