@@ -118,13 +118,20 @@ module specular_setup_fmul #(
     `SPEC_PARAM_ERROR("specular_setup_fmul: half a product's tiles must fit the slot (TA TB <= 2 (SetupII - FmulOverhead))")
   end
 
-  // The slot's clock count.
-  logic [CW-1:0] cnt_q;
+  // The slot's clock count, and the same one-hot (at_q[c]: clock c of the slot): the
+  // accumulators' enables are its flip-flops, or registers set from it a clock ahead, not
+  // decodes of the count (the decode of a clear, shared by the merge across units, and its
+  // route to every accumulator's synchronous reset in one clock were the system's critical
+  // path at SetupII = 16, docs/setup_hw.md#the-folded-lean-setup).
+  logic [CW-1:0]      cnt_q;
+  logic [SetupII-1:0] at_q;
   always_ff @(posedge clk_i) begin
     if (en_i) begin
       cnt_q <= '0;
+      at_q  <= SetupII'(1);
     end else if (cnt_q < CW'(SetupII - 1)) begin
       cnt_q <= cnt_q + CW'(1);
+      at_q  <= at_q << 1;
     end
   end
 
@@ -275,17 +282,26 @@ module specular_setup_fmul #(
     always_comb begin
       acc_d = (nd2_q ? (acc_q >>> (T - 1)) : acc_q) + AccW'(pp_q);
     end
-    logic acc_clr;
-    always_comb begin
-      acc_clr = cnt_q == '0;
-      for (int l = 0; l < Pm - 1; l++) begin
-        if (32'(cnt_q) == (l + 1) * H + 1) acc_clr = 1'b1;
+    // acc_clr_q: clock 0 or (l + 1) H + 1 comes next; acc_en_q: clocks 2 .. Steps + 1 (each
+    // before the slot's last, Steps <= SetupII - FmulOverhead).
+    logic acc_clr_q, acc_en_q;
+    always_ff @(posedge clk_i) begin
+      if (en_i) begin
+        acc_clr_q <= 1'b1;
+        acc_en_q  <= 1'b0;
+      end else begin
+        acc_clr_q <= 1'b0;
+        for (int l = 0; l < Pm - 1; l++) begin
+          if (at_q[(l + 1) * H]) acc_clr_q <= 1'b1;
+        end
+        if (at_q[1]) acc_en_q <= 1'b1;
+        else if (at_q[Steps + 1]) acc_en_q <= 1'b0;
       end
     end
     always_ff @(posedge clk_i) begin
-      if (acc_clr) begin
+      if (acc_clr_q) begin
         acc_q <= '0;
-      end else if (cnt_q >= CW'(2) && cnt_q < CW'(Steps + 2)) begin
+      end else if (acc_en_q) begin
         acc_q <= acc_d;
       end
     end
@@ -300,7 +316,7 @@ module specular_setup_fmul #(
       end else begin : gen_res
         logic signed [AccW-1:0] top_q;
         always_ff @(posedge clk_i) begin
-          if (32'(cnt_q) == (l + 1) * H + 1) top_q <= acc_d;
+          if (at_q[(l + 1) * H + 1]) top_q <= acc_d;
         end
         assign top = top_q;
       end
@@ -316,7 +332,7 @@ module specular_setup_fmul #(
         for (genvar e = 0; e < NSeg; e++) begin : gen_seg
           localparam int SE = l * H + (diag_start(D0 + e + 1) - R0);  // that step
           always_ff @(posedge clk_i) begin
-            if (32'(cnt_q) == SE + 2) seg_q[e*(T-1) +: T-1] <= acc_q[T-2:0];
+            if (at_q[SE + 2]) seg_q[e*(T-1) +: T-1] <= acc_q[T-2:0];
           end
         end
         assign csum[(K0 + l)*PBits +: PBits] = (PBits'(top) << ((T - 1) * DL))
