@@ -82,18 +82,28 @@ module specular_setup_log2 #(
   assign unused_norm = ^{a_norm[AmpW-3-UnitFrac:0], a_i[AmpW-1]};
   logic [AddrBits-1:0] idx, idx_rd;
   assign idx = mant_d[UnitFrac-1 -: AddrBits];
+  logic [RecipFrac-1:0] recip, recip_rd;   // r_i < 2^12
+  logic                 recip_en;
   if (SetupII > 1) begin : gen_idx_reg
-    // Folded, the tables read on the slot's last clock, and the stage's registers hold for the
-    // slot: the address is registered on every clock, so the block RAM's address input ends a
-    // route from a flip-flop, not the normalizing shift (docs/setup_hw.md#the-folded-lean-setup).
+    // Folded, the stage's registers hold for the slot: the address is registered on every
+    // clock, so the block RAM's address input ends a route from a flip-flop, not the
+    // normalizing shift. r_i is read on every clock and its stage register is in the fabric,
+    // loaded on the advance from the RAM's output (valid from clock 2 of the slot): it is a
+    // shared unit's operand, and the RAM's 5.61 ns clock-to-output ended in the unit's tile
+    // multiplexer (docs/setup_hw.md#the-folded-lean-setup).
     always_ff @(posedge clk_i) idx_rd <= idx;
+    always_ff @(posedge clk_i) begin
+      if (en_i) recip <= recip_rd;
+    end
+    assign recip_en = 1'b1;
   end else begin : gen_idx_wire
-    assign idx_rd = idx;
+    assign idx_rd   = idx;
+    assign recip    = recip_rd;
+    assign recip_en = en_i;
   end
-  logic [RecipFrac-1:0] recip;   // r_i < 2^12
   logic [LogFrac:0]     value;   // -log2 r_i in [0, 1], Q30
   specular_rom #(.Width(RecipFrac), .AddrBits(AddrBits), .File(LogRecipFile)) u_recip_rom (
-    .clk_i (clk_i), .en_i (en_i), .addr_i (idx_rd), .data_o (recip)
+    .clk_i (clk_i), .en_i (recip_en), .addr_i (idx_rd), .data_o (recip_rd)
   );
   specular_rom #(.Width(LogFrac + 1), .AddrBits(AddrBits), .File(LogValueFile)) u_value_rom (
     .clk_i (clk_i), .en_i (en_i), .addr_i (idx_rd), .data_o (value)
