@@ -150,10 +150,22 @@ module specular_setup_lean_norm #(
   // RFrac + B/2 - Frac - 1 - k = (b + par + 2 (RFrac + B/2 - Frac - 1) - B + 1) / 2.
   localparam int PL = $clog2(SqW);
   localparam int C1 = RFrac + B / 2 - Frac - 1;
-  logic          sq_any;
-  logic [PL-1:0] sq_top;
+  logic          sq_any, sq_any_c;
+  logic [PL-1:0] sq_top, sq_top_c;
   logic          par;
-  specular_setup_prio #(.W(SqW), .FromTop(1'b0)) u_top (.a_i (sq_q), .any_o (sq_any), .value_o (sq_top));
+  specular_setup_prio #(.W(SqW), .FromTop(1'b0)) u_top (.a_i (sq_q), .any_o (sq_any_c), .value_o (sq_top_c));
+  if (SetupII > 1) begin : gen_top_reg
+    // Folded, sq_q holds for the slot: the tree's result is registered on every clock (valid
+    // from the slot's second), so the stage's registers take the narrow sums from flip-flops,
+    // not the tree and a sum in one clock (docs/setup_hw.md#the-folded-lean-setup).
+    always_ff @(posedge clk_i) begin
+      sq_any <= sq_any_c;
+      sq_top <= sq_top_c;
+    end
+  end else begin : gen_top_wire
+    assign sq_any = sq_any_c;
+    assign sq_top = sq_top_c;
+  end
   assign par = sq_top[0] ^ 1'(B - 1);
   // KZ - 2k lies in 0 .. 2 InW + 2 and is even: its half j in JW bits; the other in 1 .. InW + 2.
   // The narrow sums keep the shifters below as narrow as the amounts.
