@@ -66,7 +66,16 @@ module specular_setup_lean_block #(
   logic          unused_any;
   logic [PL-1:0] top_d, top_q;
   if (WW > 1) begin : gen_top
-    specular_setup_prio #(.W(WW), .FromTop(1'b0)) u_top (.a_i (all_d[TopHi:TopLo]), .any_o (unused_any), .value_o (top_d));
+    // Folded, mag_q holds for the slot: the window's OR is registered on every clock (valid
+    // from the slot's second), so the tree starts at flip-flops, not after the OR of the
+    // components (docs/setup_hw.md#the-folded-lean-setup).
+    logic [WW-1:0] win;
+    if (SetupII > 1) begin : gen_win_reg
+      always_ff @(posedge clk_i) win <= all_d[TopHi:TopLo];
+    end else begin : gen_win_wire
+      assign win = all_d[TopHi:TopLo];
+    end
+    specular_setup_prio #(.W(WW), .FromTop(1'b0)) u_top (.a_i (win), .any_o (unused_any), .value_o (top_d));
   end else begin : gen_top_fixed
     assign top_d      = '0;
     assign unused_any = all_d[TopLo];
