@@ -40,8 +40,9 @@
 // reads the unit's chunk registers in the slot's last clock): every product is a lane of a shared
 // specular_setup_fmul (three here, one per normalizer, one each in log2 and exp2) whose
 // tile multipliers, ceil(lanes / per-multiplier lanes) of them, fall as K grows; each CORDIC
-// is a specular_setup_cordic_fold, a chain of segments of two-clock iterations, one a stage. The stage counts are the
-// package's functions of K, so the T* below and every delay line follow.
+// is a specular_setup_cordic_fold, a chain of segments of two-clock iterations, a segment a
+// stage. The stage counts are the package's functions of K, so the T* below and every delay
+// line follow.
 
 `include "specular_assert.svh"
 `include "specular_geo_ports.svh"
