@@ -15,9 +15,9 @@
 // segment s - 1's registers. Round r of every segment takes two clocks: the shifted operands
 // of iteration s Rounds + r, its angle constant and the direction are selected into
 // registers, then the three sums are registered. With start_i high in clock c, done_o is
-// high from clock c + Latency (Latency = 2 Rounds + 1) until the next start_i, which must wait
-// for it. The vector given at start j leaves at angle_o while done_o is high after start
-// j + Segs - 1. Iterations from Iters on (the last segment's when Rounds does not divide
+// high from clock c + Latency (two clocks a round, and one) until the next start_i, which
+// must wait for it. The vector given at start j leaves at angle_o while done_o is high after
+// start j + Segs - 1. Iterations from Iters on (the last segment's when Rounds does not divide
 // Iters) leave the vector as it is.
 //
 // rst_ni (asynchronous, active low) clears the control only: the vectors in the chain are

@@ -7,8 +7,8 @@
 // Frac 33 / Iters 32. Each gets 20,000 random vectors of every magnitude and quadrant (the axes,
 // the half turn's cases x < 0 with y = 0, tiny vectors, vectors near the width limit
 // |(x, y)| K < 2^(W-1-Frac)) with random gaps between the starts, garbage on the inputs between
-// them, and resets; done_o rises exactly Latency = 2 Rounds + 1 clocks after a start and holds, with
-// angle_o, until the next; the vector of start j leaves after start j + Segs - 1; after a
+// them, and resets; done_o rises exactly Latency clocks after a start (two a round, and one)
+// and holds, with angle_o, until the next; the vector of start j leaves after start j + Segs - 1; after a
 // reset in the middle of the rounds, every vector started after it comes out right.
 #include "Vcordic_fold_r15.h"
 #include "Vcordic_fold_r15_specular_setup_cordic_fold.h"
