@@ -57,12 +57,15 @@ module specular_system #(
     `SPEC_PARAM_ERROR("specular_system: the lean setup (LeanSetup = 1) has no HeEqH1 variant")
   end
 
-  logic                 span_valid, span_ready;
-  logic [CBits-1:0]     span_c;
-  logic [AngleBits-1:0] span_psi0, span_dpsi;
-  logic [NBits-1:0]     span_n;
-  logic [LenBits-1:0]   span_len;
-  logic [TagBits-1:0]   span_tag;
+  localparam int SpanW = CBits + 2 * AngleBits + NBits + LenBits + TagBits;
+
+  // The setup's descriptors (_s), then the span slice's, which the stream takes.
+  logic                 span_valid_s, span_ready_s, span_valid, span_ready;
+  logic [CBits-1:0]     span_c_s, span_c;
+  logic [AngleBits-1:0] span_psi0_s, span_dpsi_s, span_psi0, span_dpsi;
+  logic [NBits-1:0]     span_n_s, span_n;
+  logic [LenBits-1:0]   span_len_s, span_len;
+  logic [TagBits-1:0]   span_tag_s, span_tag;
   logic [2:0]           span_status;
 
   if (LeanSetup) begin : gen_lean
@@ -80,7 +83,7 @@ module specular_system #(
       .clk_i         (clk_i),
       .rst_ni        (rst_ni),
       `SPECULAR_GEO_PORT_MAP,
-      `SPECULAR_SPAN_MAP(_o, _i, span_, , ),
+      `SPECULAR_SPAN_MAP(_o, _i, span_, _s, _s),
       .span_status_o (span_status)
     );
   end else begin : gen_q44
@@ -98,10 +101,32 @@ module specular_system #(
       .clk_i         (clk_i),
       .rst_ni        (rst_ni),
       `SPECULAR_GEO_PORT_MAP,
-      `SPECULAR_SPAN_MAP(_o, _i, span_, , ),
+      `SPECULAR_SPAN_MAP(_o, _i, span_, _s, _s),
       .span_status_o (span_status)
     );
   end
+
+  // The span slice: the stream's span_ready_o (a function of its counter and control) reaches
+  // only these flip-flops, placed beside the stream, and the setup sees a registered ready.
+  // Without it the accept crossed the part twice in one clock, from the stream's counter to the
+  // setup's output buffer and back to the counter's load (docs/setup_hw.md#the-system). One
+  // clock of latency; a descriptor per clock with span_ready high.
+  logic             unused_slice_adv_d;
+  logic [SpanW-1:0] span_data;
+  specular_out_buf #(
+    .Width (SpanW)
+  ) u_span_slice (
+    .clk_i      (clk_i),
+    .rst_ni     (rst_ni),
+    .adv_o      (span_ready_s),
+    .adv_d_o    (unused_slice_adv_d),
+    .in_valid_i (span_valid_s),
+    .in_data_i  (`SPECULAR_SPAN_DATA(span_, _s)),
+    .px_valid_o (span_valid),
+    .px_ready_i (span_ready),
+    .px_data_o  (span_data)
+  );
+  assign `SPECULAR_SPAN_DATA(span_, ) = span_data;
 
   specular_stream #(
     `SPECULAR_CORE_PARAM_MAP,
