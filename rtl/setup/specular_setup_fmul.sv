@@ -18,15 +18,15 @@
 // adder behind a shifter of every diagonal). A product is one chunk, or two (Q = 2, summed before p_o) when its
 // tiles exceed a slot's steps; a multiplier owns whole chunks, P of them per slot, so the
 // unit has M = ceil(N Q / P) multipliers (specular_setup_lean_pkg::fmul_mults): the tile
-// count falls as SetupII grows. The clock of a slot (count c, restarted by en_i, held at
-// SetupII - 1 while the stage waits):
+// count falls as SetupII grows. The clock of a slot (c, one-hot in at_q, restarted by en_i,
+// held at SetupII - 1 while the stage waits):
 //   c = s       tile step s into its multiplier's input registers
 //   c = 1 + s   its tile product registered
 //   c = 2 + s   accumulated (a new diagonal first moves the low bits out; a chunk's last
 //               step moves the sum out and clears the sum)
 //   advance     p_o registered (Stages = 1), or read by the caller (Stages = 0)
 // s < P * H <= SetupII - specular_setup_lean_pkg::FmulOverhead. Exact, so bit-exact with
-// specular_setup_smul. No reset: the counter realigns at the first advance.
+// specular_setup_smul. No reset: the slot's clock realigns at the first advance.
 
 `include "specular_assert.svh"
 
@@ -171,7 +171,7 @@ module specular_setup_fmul #(
     // tile registers, for many registered selects set a clock ahead (each is the smaller there
     // in the ECP5 synthesis). nd_d (this step starts a diagonal) is
     // decoded with them and travels beside the tile and its product: the accumulator's shift
-    // select is then a register, not a decode of the count shared by every multiplier and
+    // select is then a register, not a decode of the slot's clock shared by every multiplier and
     // routed across the unit (docs/setup_hw.md#the-folded-lean-setup).
     logic signed [T-1:0] ta_d, tb_d;
     logic                nd_d, nd1_q, nd2_q;
@@ -191,7 +191,7 @@ module specular_setup_fmul #(
         sel_b_d = '0;
         nd_n    = 1'b0;
         for (int s = 0; s < Steps; s++) begin
-          // Step s comes next: the advance (s = 0) or the token on step s - 1.
+          // Step s comes next: the advance (s = 0) or the slot on clock s - 1.
           if (starts_diag(s, K0)) nd_n |= (s == 0) ? en_i : (!en_i && at_q[(s > 0) ? s - 1 : 0]);
           if (step_r(s, K0) < TP) begin
             sel_a_d[(s / H) * TA + tile_at(step_r(s, K0)) / TB] |= (s == 0) ? en_i : (!en_i && at_q[(s > 0) ? s - 1 : 0]);
