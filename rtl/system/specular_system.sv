@@ -13,8 +13,8 @@
 // docs/setup_hw.md#sharing-over-setupii-clocks and #the-folded-lean-setup) and the stream a
 // pixel per clock, so with
 // px_ready_i high and SetupII = 1 the system shades one pixel per clock, one-pixel spans back
-// to back included; the setup's two-entry output buffer holds the descriptors while the
-// stream works on a long span. The setup's status is not on the pixel side: a span it resolves to C = 0 gives l + 1
+// to back included; the setup's two-entry output buffer and the span slice's two entries hold
+// the descriptors while the stream works on a long span. The setup's status is not on the pixel side: a span it resolves to C = 0 gives l + 1
 // pixels of 0.
 //
 // Parameters: the core's list (rtl/core/specular_params.svh) with the register formats the setup
