@@ -18,15 +18,15 @@
 // adder behind a shifter of every diagonal). A product is one chunk, or two (Q = 2, summed before p_o) when its
 // tiles exceed a slot's steps; a multiplier owns whole chunks, P of them per slot, so the
 // unit has M = ceil(N Q / P) multipliers (specular_setup_lean_pkg::fmul_mults): the tile
-// count falls as SetupII grows. The clock of a slot (c, one-hot in at_q, restarted by en_i,
-// held at SetupII - 1 while the stage waits):
+// count falls as SetupII grows. The clock of a slot (count c, restarted by en_i, held at
+// SetupII - 1 while the stage waits):
 //   c = s       tile step s into its multiplier's input registers
 //   c = 1 + s   its tile product registered
 //   c = 2 + s   accumulated (a new diagonal first moves the low bits out; a chunk's last
 //               step moves the sum out and clears the sum)
 //   advance     p_o registered (Stages = 1), or read by the caller (Stages = 0)
 // s < P * H <= SetupII - specular_setup_lean_pkg::FmulOverhead. Exact, so bit-exact with
-// specular_setup_smul. No reset: the slot's clock realigns at the first advance.
+// specular_setup_smul. No reset: the counter realigns at the first advance.
 
 `include "specular_assert.svh"
 
@@ -60,6 +60,7 @@ module specular_setup_fmul #(
   localparam int H     = specular_setup_lean_pkg::fmul_chunk(ABits, BBits, TileBits, SetupII);
   localparam int P     = specular_setup_lean_pkg::fmul_per_mult(ABits, BBits, TileBits, SetupII);
   localparam int M     = specular_setup_lean_pkg::fmul_mults(N, ABits, BBits, TileBits, SetupII);
+  localparam int CW    = $clog2(SetupII);
   localparam int TokenMinSteps = 12;
   // The accumulator: a diagonal's at most min(TA, TB) tile products (each |p| <= 2^(2T - 2))
   // plus the carry of the diagonals below it (< 2^(T + 1)) fit 2T + 2 signed bits for up to
@@ -117,15 +118,21 @@ module specular_setup_fmul #(
     `SPEC_PARAM_ERROR("specular_setup_fmul: half a product's tiles must fit the slot (TA TB <= 2 (SetupII - FmulOverhead))")
   end
 
-  // The slot's clock, one-hot (at_q[c]: clock c of the slot; it stays on the last clock): the
-  // tile selects and the accumulators' enables are its flip-flops, or registers set from it a
-  // clock ahead, not decodes of a binary count (the decode of a clear, shared by the merge across
-  // units, and its route to every accumulator's synchronous reset in one clock were the system's
-  // critical path at SetupII = 16, docs/setup_hw.md#the-folded-lean-setup).
+  // The slot's clock count, and the same one-hot (at_q[c]: clock c of the slot): the
+  // accumulators' enables are its flip-flops, or registers set from it a clock ahead, not
+  // decodes of the count (the decode of a clear, shared by the merge across units, and its
+  // route to every accumulator's synchronous reset in one clock were the system's critical
+  // path at SetupII = 16, docs/setup_hw.md#the-folded-lean-setup).
+  logic [CW-1:0]      cnt_q;
   logic [SetupII-1:0] at_q;
   always_ff @(posedge clk_i) begin
-    if (en_i)                    at_q <= SetupII'(1);
-    else if (!at_q[SetupII - 1]) at_q <= at_q << 1;
+    if (en_i) begin
+      cnt_q <= '0;
+      at_q  <= SetupII'(1);
+    end else if (cnt_q < CW'(SetupII - 1)) begin
+      cnt_q <= cnt_q + CW'(1);
+      at_q  <= at_q << 1;
+    end
   end
 
   // The operands' tiles, each T bits signed: tile i of a is bits (T-1) i .. (T-1) i + T - 2
@@ -167,22 +174,27 @@ module specular_setup_fmul #(
       assign asrc[l*TA*T +: TA*T] = atile[((K0 + l) / Q)*TA*T +: TA*T];
       assign bsrc[l*TB*T +: TB*T] = btile[((K0 + l) / Q)*TB*T +: TB*T];
     end
-    // The tile selects: for a few steps a decode of the slot's clock in the clock before the
-    // tile registers, for many registered selects set a clock ahead (each is the smaller there
-    // in the ECP5 synthesis). nd_d (this step starts a diagonal) is
+    // The tile selects: a decode of the slot count for a few steps, a one-hot token for many
+    // (each is the smaller there in the ECP5 synthesis). nd_d (this step starts a diagonal) is
     // decoded with them and travels beside the tile and its product: the accumulator's shift
-    // select is then a register, not a decode of the slot's clock shared by every multiplier and
+    // select is then a register, not a decode of the count shared by every multiplier and
     // routed across the unit (docs/setup_hw.md#the-folded-lean-setup).
     logic signed [T-1:0] ta_d, tb_d;
     logic                nd_d, nd1_q, nd2_q;
     if (Steps > TokenMinSteps) begin : gen_token
-      // c = s: at_q[s] marks step s. Each tile's select is a register, the OR of its steps'
-      // at_q bits a clock ahead (step 0's set by the advance itself), and the tile registers
-      // take the AND-OR of the selected tiles (no decode of a count, no priority chain).
-      // Registered, a select leaves a flip-flop straight for its multiplexers: the merge makes
-      // one register of the units' identical selects, and a select decoded in the same clock
-      // was a gate shared by units across the part, two long routes in one clock
+      // c = s: a one-hot token marks step s (set by the advance, shifted out after the last
+      // step). Each tile's select is a register, the OR of its steps' token bits a clock
+      // ahead (step 0's set by the advance itself), and the tile registers take the AND-OR of
+      // the selected tiles (no decode of the count, no priority chain). Registered, a select
+      // leaves a flip-flop straight for its multiplexers: the merge makes one register of the
+      // units' identical selects, and a select decoded from the token in the same clock was a
+      // gate shared by units across the part, two long routes in one clock
       // (docs/setup_hw.md#the-folded-lean-setup).
+      logic [Steps-1:0]  tok_q;
+      always_ff @(posedge clk_i) begin
+        if (en_i) tok_q <= Steps'(1);
+        else      tok_q <= tok_q << 1;
+      end
       logic [Pm*TA-1:0] sel_a, sel_a_d;
       logic [Pm*TB-1:0] sel_b, sel_b_d;
       logic             nd_n;
@@ -191,11 +203,11 @@ module specular_setup_fmul #(
         sel_b_d = '0;
         nd_n    = 1'b0;
         for (int s = 0; s < Steps; s++) begin
-          // Step s comes next: the advance (s = 0) or the slot on clock s - 1.
-          if (starts_diag(s, K0)) nd_n |= (s == 0) ? en_i : (!en_i && at_q[(s > 0) ? s - 1 : 0]);
+          // Step s comes next: the advance (s = 0) or the token on step s - 1.
+          if (starts_diag(s, K0)) nd_n |= (s == 0) ? en_i : (!en_i && tok_q[(s > 0) ? s - 1 : 0]);
           if (step_r(s, K0) < TP) begin
-            sel_a_d[(s / H) * TA + tile_at(step_r(s, K0)) / TB] |= (s == 0) ? en_i : (!en_i && at_q[(s > 0) ? s - 1 : 0]);
-            sel_b_d[(s / H) * TB + tile_at(step_r(s, K0)) % TB] |= (s == 0) ? en_i : (!en_i && at_q[(s > 0) ? s - 1 : 0]);
+            sel_a_d[(s / H) * TA + tile_at(step_r(s, K0)) / TB] |= (s == 0) ? en_i : (!en_i && tok_q[(s > 0) ? s - 1 : 0]);
+            sel_b_d[(s / H) * TB + tile_at(step_r(s, K0)) % TB] |= (s == 0) ? en_i : (!en_i && tok_q[(s > 0) ? s - 1 : 0]);
           end
         end
       end
@@ -227,7 +239,7 @@ module specular_setup_fmul #(
         zero  = 1'b1;
         nd_d  = 1'b0;
         for (int s = 0; s < Steps; s++) begin
-          if (at_q[s]) begin
+          if (32'(cnt_q) == s) begin
             ia    = IAW'((s / H) * TA + tile_at(step_r(s, K0) % TP) / TB);
             ib    = IBW'((s / H) * TB + tile_at(step_r(s, K0) % TP) % TB);
             zero  = step_r(s, K0) >= TP;
