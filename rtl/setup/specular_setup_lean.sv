@@ -752,9 +752,22 @@ module specular_setup_lean #(
       if (len_cor[b]) lshift_d = 4'(b);
     end
   end
+  // gamma's clamp to [0, pi]. Folded, gamma_raw holds for the slot: its compares are registered
+  // on every clock (valid from the slot's second), so the advance's clock holds the multiplexer
+  // alone (docs/setup_hw.md#the-folded-lean-setup).
+  logic g_neg, g_big;
+  if (SetupII > 1) begin : gen_gclamp_reg
+    always_ff @(posedge clk_i) begin
+      g_neg <= gamma_raw < 0;
+      g_big <= gamma_raw > Pi;
+    end
+  end else begin : gen_gclamp_wire
+    assign g_neg = gamma_raw < 0;
+    assign g_big = gamma_raw > Pi;
+  end
   always_ff @(posedge clk_i) begin
     if (adv) begin
-      gamma_q  <= opph_cor ? Pi : flat_cor ? '0 : gamma_raw < 0 ? '0 : gamma_raw > Pi ? Pi : gamma_raw;
+      gamma_q  <= opph_cor ? Pi : flat_cor ? '0 : g_neg ? '0 : g_big ? Pi : gamma_raw;
       // rshift_round(-lambda, 1) = (1 - lambda) >> 1 = (~lambda + 2) >> 1.
       psi0_q   <= AngleBits'((~lambda + CW'(2)) >>> (CFrac - AngleFrac));
       lshift_q <= lshift_d;

@@ -96,8 +96,10 @@ module specular_setup_lean_block #(
     assign full = {x2_q[i*InW +: InW], Bits'(0)};
     assign x2[i*XW +: XW] = XW'(full >>> TopLo);
   end
+  // Folded, a shifter over the full range (more than four steps: G', whose length is not
+  // bounded) takes two clocks (docs/setup_hw.md#the-folded-lean-setup).
   specular_setup_rshift_n #(.N(N), .InW(XW), .OutW(YW), .SW(PL), .Signed(1'b1),
-                            .SetupII(SetupII)) u_shift (
+                            .SetupII(SetupII), .Split(SetupII > 1 && PL > 4)) u_shift (
     .clk_i (clk_i), .en_i (en_i), .a_i (x2), .s_i (top_q), .y_o (y_d));
 
   for (genvar i = 0; i < N; i++) begin : gen_comp

@@ -13,8 +13,8 @@
 // docs/setup_hw.md#sharing-over-setupii-clocks and #the-folded-lean-setup) and the stream a
 // pixel per clock, so with
 // px_ready_i high and SetupII = 1 the system shades one pixel per clock, one-pixel spans back
-// to back included; the setup's two-entry output buffer and the span slice's two entries hold
-// the descriptors while the stream works on a long span. The setup's status is not on the pixel side: a span it resolves to C = 0 gives l + 1
+// to back included; the setup's two-entry output buffer and the span slice hold the
+// descriptors while the stream works on a long span. The setup's status is not on the pixel side: a span it resolves to C = 0 gives l + 1
 // pixels of 0.
 //
 // Parameters: the core's list (rtl/core/specular_params.svh) with the register formats the setup
@@ -110,22 +110,46 @@ module specular_system #(
   // only these flip-flops, placed beside the stream, and the setup sees a registered ready.
   // Without it the accept crossed the part twice in one clock, from the stream's counter to the
   // setup's output buffer and back to the counter's load (docs/setup_hw.md#the-system). One
-  // clock of latency; a descriptor per clock with span_ready high.
-  logic             unused_slice_adv_d;
+  // clock of latency.
   logic [SpanW-1:0] span_data;
-  specular_out_buf #(
-    .Width (SpanW)
-  ) u_span_slice (
-    .clk_i      (clk_i),
-    .rst_ni     (rst_ni),
-    .adv_o      (span_ready_s),
-    .adv_d_o    (unused_slice_adv_d),
-    .in_valid_i (span_valid_s),
-    .in_data_i  (`SPECULAR_SPAN_DATA(span_, _s)),
-    .px_valid_o (span_valid),
-    .px_ready_i (span_ready),
-    .px_data_o  (span_data)
-  );
+  if (SetupII == 1) begin : gen_slice_two
+    // A descriptor per clock: two entries (specular_out_buf).
+    logic unused_slice_adv_d;
+    specular_out_buf #(
+      .Width (SpanW)
+    ) u_span_slice (
+      .clk_i      (clk_i),
+      .rst_ni     (rst_ni),
+      .adv_o      (span_ready_s),
+      .adv_d_o    (unused_slice_adv_d),
+      .in_valid_i (span_valid_s),
+      .in_data_i  (`SPECULAR_SPAN_DATA(span_, _s)),
+      .px_valid_o (span_valid),
+      .px_ready_i (span_ready),
+      .px_data_o  (span_data)
+    );
+  end else begin : gen_slice_one
+    // At most a descriptor every SetupII >= 6 clocks: one entry, which takes a descriptor every
+    // two clocks at most (it is free the clock after the stream takes it), keeps the rate for
+    // half the flip-flops.
+    logic             full_q;
+    logic [SpanW-1:0] data_q;
+    always_ff @(posedge clk_i or negedge rst_ni) begin
+      if (!rst_ni) begin
+        full_q <= 1'b0;
+      end else if (!full_q) begin
+        full_q <= span_valid_s;
+      end else if (span_ready) begin
+        full_q <= 1'b0;
+      end
+    end
+    always_ff @(posedge clk_i) begin
+      if (!full_q && span_valid_s) data_q <= `SPECULAR_SPAN_DATA(span_, _s);
+    end
+    assign span_ready_s = !full_q;
+    assign span_valid   = full_q;
+    assign span_data    = data_q;
+  end
   assign `SPECULAR_SPAN_DATA(span_, ) = span_data;
 
   specular_stream #(
