@@ -125,9 +125,10 @@ def verdict(points, spans):
     return res
 
 
-def break_even(points, budget):
+def break_even(points, budget, phong=None):
     """The mean span length from which the device with its setup in hardware gives as many pixels
-    per clock per part as the best Phong core meeting `budget` (docs/phong_hw.md#verdict). With
+    per clock per part as the best Phong core meeting `budget`, or as the Phong point `phong`
+    (docs/phong_hw.md#verdict). With
     SetupII = k and share s_k it gives min(1, m / k) pixels per clock from s_k, a Phong core 1 from
     s_P: it ties at m = k s_k / s_P, and only where s_k <= s_P (from m >= k its figure is 1 / s_k).
     Returns {"span": m or None, "design": name, "phong": name, "ratio_at_long_spans": s_P / s_k of
@@ -137,7 +138,7 @@ def break_even(points, budget):
     ph = [p for p in cand if p["kind"] == "phong"]
     if not hw or not ph:
         return None
-    best_p = min(ph, key=lambda p: (share(p["ecp5"])[0], p["name"]))
+    best_p = phong if phong is not None else min(ph, key=lambda p: (share(p["ecp5"])[0], p["name"]))
     s_p = share(best_p["ecp5"])[0]
     ties = [(p["setup_ii"] * share(p["ecp5"])[0] / s_p, p["name"]) for p in hw if share(p["ecp5"])[0] <= s_p]
     long_best = min(hw, key=lambda p: (share(p["ecp5"])[0], p["name"]))
@@ -149,6 +150,15 @@ def break_even(points, budget):
     else:
         out.update(span=None, design=None)
     return out
+
+
+def break_even_each(points, budget):
+    """break_even against every Phong core meeting `budget`, smallest share first ([] when a side
+    has no design)."""
+    cand = candidates(points, budget)
+    ph = sorted((p for p in cand if p["kind"] == "phong"), key=lambda p: (share(p["ecp5"])[0], p["name"]))
+    out = [break_even(points, budget, p) for p in ph]
+    return [be for be in out if be is not None]
 
 
 # The ECP5 synthesis of the current flow (scripts/fpga.sh: rtl/fpga/README.md#merged-cells, the
@@ -331,6 +341,11 @@ def write(w, res, points):
               f"pixels per clock per part of {be['phong']}.\n")
         else:
             w(f"Break-even span length: {be['span']:.1f} pixels ({be['design']} against {be['phong']}).\n")
+        each = break_even_each(points, b)
+        if len(each) > 1:
+            w("Against each Phong core that meets it: " + "; ".join(
+                f"{e['phong']}: {e['span']:.1f} pixels ({e['design']})" if e["span"] is not None else
+                f"{e['phong']}: none ({e['ratio_at_long_spans']:.2f} times on long spans)" for e in each) + ".\n")
 
 
 def budget_text(b):

@@ -70,6 +70,15 @@ small = dict(pts[1], name="system8 small", setup_ii=8, ecp5=entry(20000, 1000, 1
 be = verdict.break_even([pts[1], small, pts[2]], "b1")
 close(be["span"], 4.0, "the smaller of 4 * 0.5 / 0.5 and 8 * 0.25 / 0.5")
 check(verdict.break_even([pts[2]], "b1") is None, "no hardware-setup design: no break-even")
+# Against each Phong core: a second core of share 1 (FF 83,640) ties with system4 at
+# m = 4 * 0.5 / 1 = 2, the best core (share 0.5) at 4; the best-core figure stays 4.
+phong_big = dict(pts[2], name="phong big", ecp5=entry(100, 10, 83640, 10, 1, 100.0))
+each = verdict.break_even_each(pts + [phong_big], "b1")
+check([e["phong"] for e in each] == ["phong", "phong big"], f"each Phong core, smallest first: {each}")
+close(each[0]["span"], 4.0, "break-even against the smaller core")
+close(each[1]["span"], 2.0, "break-even against the larger core")
+close(verdict.break_even(pts + [phong_big], "b1")["span"], 4.0, "the best core's break-even unchanged")
+check(verdict.break_even_each([pts[2]], "b1") == [], "no hardware-setup design: no break-even against any core")
 
 # Only the system and the Phong core: at m = 2 the system gives 0.5 / 0.5 = 1 px/clock per part
 # against Phong's 2 (ratio 0.5); at m = 8, 2 against 2 (ratio 1). A measured 0.25 at m = 2 gives 0.25.
