@@ -129,9 +129,9 @@ module specular_system #(
       .px_data_o  (span_data)
     );
   end else begin : gen_slice_one
-    // At most a descriptor every SetupII >= 6 clocks: one entry, which takes a descriptor every
-    // two clocks at most (it is free the clock after the stream takes it), keeps the rate for
-    // half the flip-flops.
+    // At most a descriptor every SetupII >= 2 clocks (either setup): one entry, which takes a
+    // descriptor every two clocks at most (it is free the clock after the stream takes it),
+    // keeps the rate for half the flip-flops.
     logic             full_q;
     logic [SpanW-1:0] data_q;
     always_ff @(posedge clk_i or negedge rst_ni) begin
