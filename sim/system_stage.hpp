@@ -3,8 +3,8 @@
 // specular_stream; docs/setup_hw.md#the-system) from geometry spans to pixels.
 //   scenes   every scene's spans (scene_stage.hpp's rasterization) quantized to the geometry
 //            span interface (device::quantize_geo), back to back with px_ready_i high: every
-//            pixel bit-exact against the golden models (host::lean::setup_lean, then
-//            DeviceModel::stream); clocks per pixel; the setup error (the lean setup's registers
+//            pixel bit-exact against the golden models (host::fixed::setup_fixed, then
+//            DeviceModel::stream); clocks per pixel; the setup error (the setup's registers
 //            against the reference of its contract on the same inputs, host::check_contract:
 //            0.01 % + 1 LSB, and the decisions outside the guard bands) and the end-to-end error
 //            (the RTL's pixels against C cos^n(psi_i) of that reference: the device budget + 1 LSB)
@@ -57,7 +57,7 @@ struct SystemStats {
 
 // `bc`: the default build configuration (specular_system has its parameter defaults).
 // random_spans: random geometry spans of the random run (0: none). setup_ii: specular_system's
-// SetupII (docs/setup_hw.md#the-folded-lean-setup); 1 is always built, 8, 16, 32 and 64 with the
+// SetupII (docs/setup_hw.md#the-folded-setup); 1 is always built, 8, 16, 32 and 64 with the
 // CMake option SPECULAR_SYSTEM_SETUP_II (system_setup_ii_built). Throws std::invalid_argument
 // for a SetupII that is not built.
 bool system_setup_ii_built(int setup_ii);

@@ -1,19 +1,19 @@
 // SPDX-License-Identifier: Apache-2.0
-// The lean setup's contract, docs/setup_hw.md#the-contract.
+// The setup's contract, docs/setup_hw.md#the-contract.
 #include "setup_contract.hpp"
 
-#include "setup_lean.hpp"
+#include "setup_fixed.hpp"
 
 #include <cmath>
 
 namespace specular::host {
 
-SetupRule lean_rule() {
+SetupRule hardware_rule() {
   SetupRule r;
   r.hardware = true;
-  r.q_min = std::ldexp(1.0, -lean::kOppNormLog2);
-  r.flat_sin = std::ldexp(1.0, -lean::kFlatLog2 / 2);
-  r.opposite_sin = std::ldexp(1.0, -lean::kOppHalfLog2 / 2);
+  r.q_min = std::ldexp(1.0, -fixed::kOppNormLog2);
+  r.flat_sin = std::ldexp(1.0, -fixed::kFlatLog2 / 2);
+  r.opposite_sin = std::ldexp(1.0, -fixed::kOppHalfLog2 / 2);
   return r;
 }
 
@@ -21,7 +21,7 @@ ContractCheck check_contract(const device::GeoSpan& g, SetupStatus hw_status, co
                              const device::GeoFormat& gf, const device::Format& f) {
   ContractCheck out;
   const ScanlineInput in = device::geo_input(g, gf, f);
-  SetupRule rule = lean_rule();
+  SetupRule rule = hardware_rule();
   auto band = [](double metric, double threshold) { return metric >= threshold / 2 && metric <= threshold * 2; };
   auto force = [](bool took) { return took ? SetupRule::Force::yes : SetupRule::Force::no; };
   ScanlineSetup s = scanline_setup(in, rule);

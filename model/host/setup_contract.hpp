@@ -1,5 +1,5 @@
 // SPDX-License-Identifier: Apache-2.0
-// The contract of the lean hardware setup (docs/setup_hw.md#the-contract): the reference is the
+// The contract of the hardware setup (docs/setup_hw.md#the-contract): the reference is the
 // scalar double setup on the exact values of the codes under the hardware's stated rule
 // (thresholds on |N1 + N2|^2 and sin gamma); inside a decision's guard band (a factor of 2 on
 // its metric) either outcome is accepted and the reference takes the hardware's branch;
@@ -15,8 +15,8 @@
 
 namespace specular::host {
 
-// The lean setup's rule (the thresholds of host::lean, as values of the exact metrics).
-SetupRule lean_rule();
+// The setup's rule (the thresholds of host::fixed, as values of the exact metrics).
+SetupRule hardware_rule();
 
 struct ContractCheck {
   SetupStatus ref_status = SetupStatus::ok;

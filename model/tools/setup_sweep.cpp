@@ -1,17 +1,17 @@
 // SPDX-License-Identifier: Apache-2.0
-// setup_sweep: the lean hardware setup's unit width F against its contract
-// (docs/setup_hw.md#lean-widths): for each F, host::lean::setup_lean on the hard and
+// setup_sweep: the hardware setup's unit width F against its contract
+// (docs/setup_hw.md#widths): for each F, host::fixed::setup_fixed on the hard and
 // near-degenerate spans, on random spans and on every span of the scenes, each checked by
 // host::check_contract (the worst error as a fraction of the 0.01 % + 1 LSB allowance, the
 // decisions that differ outside the guard bands, the decisions inside one).
 //   setup_sweep [--frac 20,22,...] [--spans N] [--scenes DIR] [--json FILE]
-// Exit 1 when the default F (host::lean::kFrac) misses the contract on any span.
+// Exit 1 when the default F (host::fixed::kFrac) misses the contract on any span.
 #include "cli_parse.hpp"
 #include "geo_cases.hpp"
 #include "raster.hpp"
 #include "scene.hpp"
 #include "setup_contract.hpp"
-#include "setup_lean.hpp"
+#include "setup_fixed.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -36,9 +36,9 @@ struct Tally {
   }
 };
 
-void run(const std::vector<device::GeoSpan>& spans, const host::lean::Widths& w, Tally& t) {
+void run(const std::vector<device::GeoSpan>& spans, const host::fixed::Widths& w, Tally& t) {
   for (const auto& g : spans) {
-    const host::lean::Result r = host::lean::setup_lean(g, geo_cases::kGeo, geo_cases::kFmt, w);
+    const host::fixed::Result r = host::fixed::setup_fixed(g, geo_cases::kGeo, geo_cases::kFmt, w);
     const host::ContractCheck c = host::check_contract(
         g, r.status, {r.trace.opposite_normals, r.trace.flat, r.trace.opposite_halfway}, r.span.reg, geo_cases::kGeo,
         geo_cases::kFmt);
@@ -54,7 +54,7 @@ void run(const std::vector<device::GeoSpan>& spans, const host::lean::Widths& w,
 }  // namespace
 
 int main(int argc, char** argv) {
-  CLI::App app{"The lean hardware setup's unit width against its contract (docs/setup_hw.md#lean-widths)"};
+  CLI::App app{"The hardware setup's unit width against its contract (docs/setup_hw.md#widths)"};
   std::vector<int> fracs{20, 22, 24, 26, 28, 30};
   size_t n_random = 200000;
   std::string scenes_dir, json_path;
@@ -65,7 +65,7 @@ int main(int argc, char** argv) {
   if (auto code = parse_command_line(app, argc, argv, "setup_sweep")) return *code;
   for (int f : fracs) {
     try {
-      host::lean::check_widths({f});
+      host::fixed::check_widths({f});
     } catch (const std::invalid_argument& e) {
       std::cerr << "setup_sweep: error: --frac: " << e.what() << "\n";
       return 2;
@@ -95,12 +95,12 @@ int main(int argc, char** argv) {
   nlohmann::json flat = nlohmann::json::object();
   for (const auto& [name, spans] : scenes)
     flat[name] = {{"spans", spans.size()},
-                  {"flat_path", std::count_if(spans.begin(), spans.end(), host::lean::takes_flat_path)},
+                  {"flat_path", std::count_if(spans.begin(), spans.end(), host::fixed::takes_flat_path)},
                   {"one_pixel", std::count_if(spans.begin(), spans.end(), [](const auto& g) { return g.len == 0; })}};
   nlohmann::json out = nlohmann::json::array();
   bool default_ok = true;
   for (int f : fracs) {
-    const host::lean::Widths w{f};
+    const host::fixed::Widths w{f};
     Tally th, tr;
     run(hard, w, th);
     run(random, w, tr);
@@ -118,12 +118,12 @@ int main(int argc, char** argv) {
     }
     std::cout << (ok ? "" : "  MISSES THE CONTRACT") << "\n";
     row["meets"] = ok;
-    if (f == host::lean::kFrac) default_ok = ok;
+    if (f == host::fixed::kFrac) default_ok = ok;
     out.push_back(row);
   }
   if (!json_path.empty()) {
     std::ofstream os(json_path + ".tmp");
-    os << nlohmann::json{{"widths", out}, {"scene_spans", flat}, {"random_spans", n_random}, {"default_frac", host::lean::kFrac}}.dump(2) << "\n";
+    os << nlohmann::json{{"widths", out}, {"scene_spans", flat}, {"random_spans", n_random}, {"default_frac", host::fixed::kFrac}}.dump(2) << "\n";
     if (!os) {
       std::cerr << "setup_sweep: error: cannot write " << json_path << "\n";
       return 2;

@@ -13,7 +13,7 @@
 // enabled edge, read (registered, same enable) at the word written Depth - 2 enabled edges
 // earlier, then registered once more in the fabric (same enable), so q_o is the register
 // chain's clock for clock, stalls included. The second register takes the RAM's slow
-// clock-to-output off the path to the line's user (docs/setup_hw.md#the-folded-lean-setup). The pointer
+// clock-to-output off the path to the line's user (docs/setup_hw.md#the-folded-setup). The pointer
 // needs no reset (every value of it is a valid ring position), so rst_ni stays unused.
 // The style applies from RamMinDepth and RamMinBits on: a 36-bit-wide ECP5 DP16KD port
 // replaces about 36 * Depth flip-flops, so short lines stay in registers, and narrow ones

@@ -10,7 +10,7 @@
 //   adv_o     registered: 1 when the buffer will hold at most one pixel at the next edge,
 //             so that a pixel pushed then always has room (two entries suffice)
 //   adv_d_o   adv_o's value after the next edge (combinational), for a caller that gates the
-//             advance and registers the result (the folded lean setup)
+//             advance and registers the result (the folded setup)
 //   push      in_valid_i at an edge where adv_o is high (the pipeline's last stage moves)
 //   pop       px_valid_o && px_ready_i (AXI4-Stream transfer)
 // px_valid_o and px_data_o are registers: once valid, they hold until the transfer, and

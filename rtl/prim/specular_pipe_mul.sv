@@ -27,7 +27,7 @@
 // tiles must be few enough that 2 + clog2(tiles) <= pipe_mul_stages(BBits); the block refuses
 // otherwise. Signed = 1 (DSP tiles only) takes a_i and b_i as signed and gives the signed
 // product: unsigned low tiles of TileBits - 1 bits and a signed top tile, so every tile product
-// is one signed TileBits x TileBits product and the rows add as they are (the lean setup's
+// is one signed TileBits x TileBits product and the rows add as they are (the setup's
 // products, rtl/setup/specular_setup_smul.sv).
 
 `include "specular_assert.svh"

@@ -1,12 +1,12 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
-// specular_setup_cordic_fold: CORDIC vectoring, angle only, folded in time for the folded lean
+// specular_setup_cordic_fold: CORDIC vectoring, angle only, folded in time for the folded
 // setup (docs/setup_hw.md#the-folded-cordic): a chain of Segs segments, segment s holding
 // iterations s Rounds .. (s + 1) Rounds - 1 of one vector, two clocks an iteration. On every
 // start_i each segment takes the vector of the segment before it (segment 0: x_i, y_i), so a
 // vector passes one segment per start. The golden model is
-// host::lean::cordic_angle(x, y, Frac, Iters, W) in model/host/setup_lean.hpp, bit for bit: for
+// host::fixed::cordic_angle(x, y, Frac, Iters, W) in model/host/setup_fixed.hpp, bit for bit: for
 // (x, y) in Q(Frac) with |(x, y)| K < 2^(W-1-Frac) (K ~ 1.6468, the CORDIC gain) the angle is
 // atan2(y, x) in (-pi, pi] up to the residual atan(2^-(Iters-1)), Q(Frac).
 //
@@ -26,7 +26,7 @@
 // Why segments of two-clock iterations: a segment's shift takes only its Rounds amounts, a
 // multiplexer tree of clog2(Rounds) levels over fixed shifts (not a barrel shifter), and the
 // clock that holds the tree holds no carry chain; the clock that holds the sums holds no
-// multiplexer of data. The angle constants are a ROM in LUTs, lean::atan_word: the package's
+// multiplexer of data. The angle constants are a ROM in LUTs, fixed::atan_word: the package's
 // Q50 atan_q(i) rounded half up to Frac bits at elaboration (Yosys 0.23 cannot evaluate a
 // real $atan). Each register is one sum, a + (b ^ {W{sub}}) + sub
 // (docs/setup_hw.md#the-cordics-adders).
@@ -48,8 +48,8 @@ module specular_setup_cordic_fold #(
   output logic                done_o
 );
 
-  localparam bit ParamsOk = Iters >= 1 && Iters <= specular_setup_pkg::CordicIters &&
-                            Frac >= 1 && Frac <= specular_setup_pkg::CordicFrac &&
+  localparam bit ParamsOk = Iters >= 1 && Iters <= specular_setup_pkg::AtanIters &&
+                            Frac >= 1 && Frac <= specular_setup_pkg::AtanFrac &&
                             W >= Frac + 3 && Rounds >= 1 && Rounds <= Iters;
   /* verilator lint_off UNUSEDPARAM */
   // Segments and the clock of done_o after start_i's: the header's figures, public for the
@@ -59,18 +59,18 @@ module specular_setup_cordic_fold #(
   /* verilator lint_on UNUSEDPARAM */
   localparam int CntW    = (Rounds > 1) ? $clog2(Rounds) : 1;
   localparam int Slots   = 1 << CntW;  // the multiplexers' words: Rounds, padded to 2^CntW
-  localparam int PiFrac  = ParamsOk ? specular_setup_pkg::CordicFrac - Frac : 0;
+  localparam int PiFrac  = ParamsOk ? specular_setup_pkg::AtanFrac - Frac : 0;
   localparam logic signed [W-1:0] Pi =
-      W'(specular_setup_pkg::rshift_round(128'(specular_setup_pkg::Pi), PiFrac));
+      W'(specular_setup_pkg::rshift_round(128'(specular_setup_pkg::PiQ50), PiFrac));
 
   if (W < Frac + 3) begin : gen_width_check
     `SPEC_PARAM_ERROR("specular_setup_cordic_fold: W must be >= Frac + 3 (pi in Q(Frac) with its sign)")
   end
-  if (Frac < 1 || Frac > specular_setup_pkg::CordicFrac) begin : gen_frac_check
-    `SPEC_PARAM_ERROR("specular_setup_cordic_fold: Frac must be in 1..specular_setup_pkg::CordicFrac (50)")
+  if (Frac < 1 || Frac > specular_setup_pkg::AtanFrac) begin : gen_frac_check
+    `SPEC_PARAM_ERROR("specular_setup_cordic_fold: Frac must be in 1..specular_setup_pkg::AtanFrac (50)")
   end
-  if (Iters < 1 || Iters > specular_setup_pkg::CordicIters) begin : gen_iters_check
-    `SPEC_PARAM_ERROR("specular_setup_cordic_fold: Iters must be in 1..specular_setup_pkg::CordicIters (48)")
+  if (Iters < 1 || Iters > specular_setup_pkg::AtanIters) begin : gen_iters_check
+    `SPEC_PARAM_ERROR("specular_setup_cordic_fold: Iters must be in 1..specular_setup_pkg::AtanIters (48)")
   end
   if (Rounds < 1 || Rounds > Iters) begin : gen_rounds_check
     `SPEC_PARAM_ERROR("specular_setup_cordic_fold: Rounds must be in 1..Iters")
@@ -83,7 +83,7 @@ module specular_setup_cordic_fold #(
   endfunction
 
   function automatic logic [W-1:0] atan_word(input int i);
-    atan_word = W'(specular_setup_pkg::rshift_round(128'(specular_setup_pkg::atan_q(i)), PiFrac));
+    atan_word = W'(specular_setup_pkg::rshift_round(128'(specular_setup_pkg::atan_q50(i)), PiFrac));
   endfunction
 
   // ---------------------------------------------------------------------------------

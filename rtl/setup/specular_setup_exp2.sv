@@ -10,7 +10,7 @@
 //   stage 1  ei, g; the ROM is read        stages 2, 3, 4: the Horner steps
 //   stage 5  mant = 2^(j/1024) 2^g         stage 6: mant scale registered
 //   stage 7  shifted by 29 - ei            stage 8: rounded (the last bit), saturated
-// Each stage holds one carry chain at most (docs/setup_hw.md#the-lean-rtl): a rounding and
+// Each stage holds one carry chain at most (docs/setup_hw.md#the-rtl): a rounding and
 // an added constant are one addend, and the shift is decoded from ei in stage 2, beside the
 // Horner steps. Stages: specular_setup_pkg::ExpStages. en_i freezes
 // every stage. No reset.
@@ -20,7 +20,7 @@
 module specular_setup_exp2 #(
   parameter int CBits   = 16,
   parameter     Exp2File = "roms/setup/exp2.hex",
-  // The lean setup's folding (as specular_setup_log2's): the five products share a
+  // The setup's folding (as specular_setup_log2's): the five products share a
   // specular_setup_fmul, the Horner steps' read before its register, mant scale after it
   // (stage 6). 1: the inline products.
   parameter int SetupII  = 1,

@@ -2,8 +2,8 @@
 // Copyright (c) the specular_device authors.
 //
 // specular_setup_fmul: N exact signed products p_j = a_j * b_j in one slot of SetupII clocks
-// on a few tile multipliers, for the folded lean setup (SetupII > 1,
-// docs/setup_hw.md#the-folded-lean-setup): its stages advance once per slot (en_i, the last
+// on a few tile multipliers, for the folded setup (SetupII > 1,
+// docs/setup_hw.md#the-folded-setup): its stages advance once per slot (en_i, the last
 // clock of the slot) and a product takes Stages stages, 1 (p_o registered) or 0 (p_o final in
 // the slot's last clock, for a caller that registers its own result). The operands must hold
 // still for the whole slot (they are the stages' registers), so the unit reads them tile by
@@ -17,7 +17,7 @@
 // the accumulator shifts right by T - 1 (a fixed shift, AccW bits instead of a product-wide
 // adder behind a shifter of every diagonal). A product is one chunk, or two (Q = 2, summed before p_o) when its
 // tiles exceed a slot's steps; a multiplier owns whole chunks, P of them per slot, so the
-// unit has M = ceil(N Q / P) multipliers (specular_setup_lean_pkg::fmul_mults): the tile
+// unit has M = ceil(N Q / P) multipliers (specular_setup_pkg::fmul_mults): the tile
 // count falls as SetupII grows. The clock of a slot (count c, restarted by en_i, held at
 // SetupII - 1 while the stage waits):
 //   c = s       tile step s into its multiplier's input registers
@@ -25,7 +25,7 @@
 //   c = 2 + s   accumulated (a new diagonal first moves the low bits out; a chunk's last
 //               step moves the sum out and clears the sum)
 //   advance     p_o registered (Stages = 1), or read by the caller (Stages = 0)
-// s < P * H <= SetupII - specular_setup_lean_pkg::FmulOverhead. Exact, so bit-exact with
+// s < P * H <= SetupII - specular_setup_pkg::FmulOverhead. Exact, so bit-exact with
 // specular_setup_smul. No reset: the counter realigns at the first advance.
 
 `include "specular_assert.svh"
@@ -38,7 +38,7 @@ module specular_setup_fmul #(
   parameter int SetupII  = 8,
   // The product's stages: 1, p_o registered on en_i; 0, p_o is pc_o (one chunk a product, so
   // no adder: the caller registers what it derives from it on en_i,
-  // specular_setup_lean_pkg::fold_mul_stages).
+  // specular_setup_pkg::fold_mul_stages).
   parameter int Stages   = 1
 ) (
   input  logic                          clk_i,
@@ -51,15 +51,15 @@ module specular_setup_fmul #(
   output logic [N*(ABits+BBits)-1:0]    pc_o
 );
 
-  localparam int T     = specular_setup_lean_pkg::fmul_tile(TileBits);
+  localparam int T     = specular_setup_pkg::fmul_tile(TileBits);
   localparam int PBits = ABits + BBits;
-  localparam int TA    = specular_setup_lean_pkg::fmul_tiles_of(ABits, TileBits);
-  localparam int TB    = specular_setup_lean_pkg::fmul_tiles_of(BBits, TileBits);
+  localparam int TA    = specular_setup_pkg::fmul_tiles_of(ABits, TileBits);
+  localparam int TB    = specular_setup_pkg::fmul_tiles_of(BBits, TileBits);
   localparam int TP    = TA * TB;
-  localparam int Q     = specular_setup_lean_pkg::fmul_split(ABits, BBits, TileBits, SetupII);
-  localparam int H     = specular_setup_lean_pkg::fmul_chunk(ABits, BBits, TileBits, SetupII);
-  localparam int P     = specular_setup_lean_pkg::fmul_per_mult(ABits, BBits, TileBits, SetupII);
-  localparam int M     = specular_setup_lean_pkg::fmul_mults(N, ABits, BBits, TileBits, SetupII);
+  localparam int Q     = specular_setup_pkg::fmul_split(ABits, BBits, TileBits, SetupII);
+  localparam int H     = specular_setup_pkg::fmul_chunk(ABits, BBits, TileBits, SetupII);
+  localparam int P     = specular_setup_pkg::fmul_per_mult(ABits, BBits, TileBits, SetupII);
+  localparam int M     = specular_setup_pkg::fmul_mults(N, ABits, BBits, TileBits, SetupII);
   localparam int CW    = $clog2(SetupII);
   localparam int TokenMinSteps = 12;
   // The accumulator: a diagonal's at most min(TA, TB) tile products (each |p| <= 2^(2T - 2))
@@ -122,7 +122,7 @@ module specular_setup_fmul #(
   // accumulators' enables are its flip-flops, or registers set from it a clock ahead, not
   // decodes of the count (the decode of a clear, shared by the merge across units, and its
   // route to every accumulator's synchronous reset in one clock were the system's critical
-  // path at SetupII = 16, docs/setup_hw.md#the-folded-lean-setup).
+  // path at SetupII = 16, docs/setup_hw.md#the-folded-setup).
   logic [CW-1:0]      cnt_q;
   logic [SetupII-1:0] at_q;
   always_ff @(posedge clk_i) begin
@@ -178,7 +178,7 @@ module specular_setup_fmul #(
     // (each is the smaller there in the ECP5 synthesis). nd_d (this step starts a diagonal) is
     // decoded with them and travels beside the tile and its product: the accumulator's shift
     // select is then a register, not a decode of the count shared by every multiplier and
-    // routed across the unit (docs/setup_hw.md#the-folded-lean-setup).
+    // routed across the unit (docs/setup_hw.md#the-folded-setup).
     logic signed [T-1:0] ta_d, tb_d;
     logic                nd_d, nd1_q, nd2_q;
     if (Steps > TokenMinSteps) begin : gen_token
@@ -189,7 +189,7 @@ module specular_setup_fmul #(
       // leaves a flip-flop straight for its multiplexers: the merge makes one register of the
       // units' identical selects, and a select decoded from the token in the same clock was a
       // gate shared by units across the part, two long routes in one clock
-      // (docs/setup_hw.md#the-folded-lean-setup).
+      // (docs/setup_hw.md#the-folded-setup).
       logic [Steps-1:0]  tok_q;
       always_ff @(posedge clk_i) begin
         if (en_i) tok_q <= Steps'(1);

@@ -11,7 +11,7 @@
 //   stage 2  mant, a shifted left by lz, and p - 44; both ROMs are read
 //   stage 3  e = mant r_i - 1             stages 4, 5: the Horner steps
 //   stage 6  (p - 44) + (-log2 r_i) + e (...)
-// Each stage holds one carry chain at most (docs/setup_hw.md#the-lean-rtl): a rounding and
+// Each stage holds one carry chain at most (docs/setup_hw.md#the-rtl): a rounding and
 // an added constant or integer part are one addend. Stages:
 // specular_setup_pkg::LogStages. A non-positive a gives a defined, meaningless value (the
 // setup does not use it). en_i freezes every stage. No reset.
@@ -19,12 +19,12 @@
 `include "specular_assert.svh"
 
 module specular_setup_log2 #(
-  // The argument's width: specular_setup's A (Q44 < 8); the lean setup's A^2 in Q52, read as
-  // Q44 as host::fixed::log2_unit reads any int64.
+  // The argument's width: the setup's A^2 in Q52, read as Q44 (< 8) as host::fixed::log2_unit
+  // reads any int64.
   parameter int AmpW     = specular_setup_pkg::AmpW,
   parameter LogRecipFile = "roms/setup/log_recip.hex",
   parameter LogValueFile = "roms/setup/log_value.hex",
-  // The lean setup's folding (specular_setup_lean SetupII > 1: en_i once per slot of SetupII
+  // The setup's folding (specular_setup SetupII > 1: en_i once per slot of SetupII
   // clocks): the four products share a specular_setup_fmul, each read before its unit's
   // register and rounded in its own stage as here. 1: the inline products.
   parameter int SetupII  = 1,
@@ -37,7 +37,7 @@ module specular_setup_log2 #(
 );
 
   localparam int LogW      = specular_setup_pkg::LogW;
-  localparam int UnitFrac  = specular_setup_pkg::UnitFrac;
+  localparam int UnitFrac  = specular_setup_pkg::LogUnitFrac;
   localparam int LogFrac   = specular_setup_pkg::LogFrac;
   localparam int AddrBits  = specular_setup_pkg::LogAddrBits;
   localparam int RecipFrac = specular_setup_pkg::LogRecipFrac;
@@ -90,7 +90,7 @@ module specular_setup_log2 #(
     // normalizing shift. r_i is read on every clock and its stage register is in the fabric,
     // loaded on the advance from the RAM's output (valid from clock 2 of the slot): it is a
     // shared unit's operand, and the RAM's 5.61 ns clock-to-output ended in the unit's tile
-    // multiplexer (docs/setup_hw.md#the-folded-lean-setup).
+    // multiplexer (docs/setup_hw.md#the-folded-setup).
     always_ff @(posedge clk_i) idx_rd <= idx;
     always_ff @(posedge clk_i) begin
       if (en_i) recip <= recip_rd;

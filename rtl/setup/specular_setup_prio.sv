@@ -5,8 +5,8 @@
 // the count of zeros above it (FromTop = 1): a binary tree, clog2(W) levels of 2:1
 // multiplexers, node l holding l bits (its upper half's count when that half has a set bit,
 // else the lower half's with the top bit set). A priority loop over the bits ("if (a[b]) v =
-// b") maps to a chain of W multiplexers, which was the critical path of the lean setup after
-// place and route (docs/setup_hw.md#the-lean-rtl). The input is zero-padded to a power of two
+// b") maps to a chain of W multiplexers, which was the critical path of the setup after
+// place and route (docs/setup_hw.md#the-rtl). The input is zero-padded to a power of two
 // at the top (FromTop = 0: the index is the count's complement) or at the bottom (FromTop = 1).
 // Combinational; any_o low (a_i = 0) leaves value_o undefined for the caller to replace.
 

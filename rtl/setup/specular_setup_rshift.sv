@@ -6,7 +6,7 @@
 // after each step fewer bits are still needed: the step by 2^k keeps OutW + 2^k - 1 of them.
 // Yosys 0.23 maps ">>" with its smallest step first, each step as wide as the input: for a
 // block normalizer's 80-bit input and 31-bit output, 990 LUT4 against 537 this way
-// (docs/setup_hw.md#the-lean-rtl). Combinational.
+// (docs/setup_hw.md#the-rtl). Combinational.
 
 module specular_setup_rshift #(
   parameter int InW    = 8,

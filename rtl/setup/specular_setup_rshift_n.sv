@@ -7,12 +7,12 @@
 // a slot's last clock, a_i and s_i still for the slot) value c is selected into a register in
 // clock c of the slot and one shifter takes it into a register of its own in clock c + 1, so
 // y_o is ready before the advance: N - 1 shifters fewer for N multiplexer inputs
-// (docs/setup_hw.md#the-folded-lean-setup), and the selection and the shift are in clocks of
+// (docs/setup_hw.md#the-folded-setup), and the selection and the shift are in clocks of
 // their own. That needs SetupII > N + 1. A stalled slot only repeats the last value's shift.
 // Split = 1 (folded only) takes the shift in two clocks, its larger steps into a register of
 // OutW + 2^Lo - 1 bits (Lo = SW / 2, the smaller steps' amount bits) and the rest in the next
 // clock: for a shifter of many steps, whose levels and routes did not fit one clock
-// (docs/setup_hw.md#the-folded-lean-setup). That needs SetupII > N + 2.
+// (docs/setup_hw.md#the-folded-setup). That needs SetupII > N + 2.
 
 `include "specular_assert.svh"
 

@@ -2,8 +2,8 @@
 // Copyright (c) the specular_device authors.
 //
 // specular_setup_smul: an exact signed product p = a * b, one pair per clock
-// (docs/setup_hw.md#the-lean-datapath: every product of the lean setup goes through one).
-// Stages: specular_setup_lean_pkg::smul_stages(BBits, 1) in every style; en_i freezes every
+// (docs/setup_hw.md#the-datapath: every product of the setup goes through one).
+// Stages: specular_setup_pkg::smul_stages(BBits, 1) in every style; en_i freezes every
 // stage. No reset. The folded setup (SetupII > 1) takes its products from shared
 // specular_setup_fmul units instead.
 //
@@ -12,7 +12,7 @@
 // bits and a signed top tile, so every tile product is one signed TileBits x TileBits product
 // and no magnitude or sign is formed around it (a conditional negation of each operand and of
 // the product costs about 2 (ABits + BBits) LUT4 and three carry chains a product,
-// docs/setup_hw.md#the-lean-rtl).
+// docs/setup_hw.md#the-rtl).
 //
 // The LUT tree (TileBits = 0, the iCE40 style) multiplies magnitudes on specular_pipe_mul:
 //
@@ -36,8 +36,8 @@ module specular_setup_smul #(
   if (TileBits > 0) begin : gen_dsp
     // The operands wait out the three stages the magnitudes take in the LUT style, then
     // specular_pipe_mul multiplies them as signed tiles.
-    localparam int Wait = specular_setup_lean_pkg::smul_stages(BBits, 1)
-                        - specular_setup_lean_pkg::pipe_mul_stages(BBits);
+    localparam int Wait = specular_setup_pkg::smul_stages(BBits, 1)
+                        - specular_setup_pkg::pipe_mul_stages(BBits);
     logic [ABits-1:0] a_w;
     logic [BBits-1:0] b_w;
     specular_delay #(.Width(ABits + BBits), .Depth(Wait), .Reset(1'b0)) u_wait (
@@ -49,7 +49,7 @@ module specular_setup_smul #(
 
   end else begin : gen_pipe
     localparam int PBits  = ABits + BBits;
-    localparam int Levels = specular_setup_lean_pkg::pipe_mul_stages(BBits);
+    localparam int Levels = specular_setup_pkg::pipe_mul_stages(BBits);
 
     // Stage 1: magnitudes (|-2^(n-1)| = 2^(n-1) still fits n unsigned bits).
     logic [ABits-1:0] ma_q, a2_q;

@@ -2,15 +2,14 @@
 // Copyright (c) the specular_device authors.
 //
 // specular_system: a complete specular shading system in hardware, geometry in, pixels out
-// (docs/setup_hw.md#the-system): the setup (specular_setup_lean by default, LeanSetup = 1;
-// specular_setup, the Q44 formulation, with LeanSetup = 0) turns each geometry span
+// (docs/setup_hw.md#the-system): specular_setup turns each geometry span
 // (docs/interfaces.md#geometry-span-interface) into a span descriptor, specular_stream
 // shades its l + 1 pixels. The pixel side is exactly specular_stream's (px_valid_o,
 // px_ready_i, px_intensity_o, px_last_o, px_tag_o, same rules); the geometry side follows
 // the same AXI4-Stream rules, geo_ready_o a function of registers only (specular_setup's).
 //
 // The setup takes a span per clock (SetupII = 1; at most one every SetupII clocks otherwise,
-// docs/setup_hw.md#sharing-over-setupii-clocks and #the-folded-lean-setup) and the stream a
+// docs/setup_hw.md#the-folded-setup) and the stream a
 // pixel per clock, so with
 // px_ready_i high and SetupII = 1 the system shades one pixel per clock, one-pixel spans back
 // to back included; the setup's two-entry output buffer and the span slice hold the
@@ -18,8 +17,8 @@
 // pixels of 0.
 //
 // Parameters: the core's list (rtl/core/specular_params.svh) with the register formats the setup
-// produces (device::Format's defaults), VecBits, TagBits, LeanSetup, SetupII, the Q44 setup's
-// HeEqH1, the setups' ROM files. The lean setup's multipliers take the core's MulTileBits (one
+// produces (device::Format's defaults), VecBits, TagBits, SetupII, the setup's ROM files. The
+// setup's multipliers take the core's MulTileBits (one
 // multiplier style for the whole system: DSP tiles or LUT trees, docs/pipeline.md#multiplier-styles).
 
 `include "specular_assert.svh"
@@ -31,11 +30,8 @@ module specular_system #(
   `SPECULAR_CORE_PARAMS,
   parameter int TagBits       = 16,
   parameter int VecBits       = 18,
-  parameter bit LeanSetup     = 1'b1,  // 1: specular_setup_lean; 0: specular_setup (Q44)
-  parameter bit HeEqH1        = 1'b0,  // specular_setup's: geo_he_i ignored, He = H1
   parameter int SetupII       = 1,     // the setup's: at most one span every SetupII clocks
-  parameter     RsqrtSeedFile = "roms/setup/rsqrt_seed.hex",
-  parameter     LeanSeedFile  = "roms/setup/rsqrt_seed_lean.hex",
+  parameter     SeedFile      = "roms/setup/rsqrt_seed.hex",
   parameter     LogRecipFile  = "roms/setup/log_recip.hex",
   parameter     LogValueFile  = "roms/setup/log_value.hex",
   parameter     Exp2File      = "roms/setup/exp2.hex",
@@ -52,10 +48,7 @@ module specular_system #(
   if (CBits != 16 || CFrac != 15 || AngleBits != 32 || AngleFrac != 28 || NBits != 10 || LenBits != 11) begin : gen_fmt_check
     `SPEC_PARAM_ERROR("specular_system: the register formats must be the defaults (C 16/15, angles 32/28, n 10, l 11)")
   end
-  // Each setup checks its own SetupII (the Q44 setup 1, 2, 4, 8; the lean one 1 or from 6 on).
-  if (LeanSetup && HeEqH1) begin : gen_lean_check
-    `SPEC_PARAM_ERROR("specular_system: the lean setup (LeanSetup = 1) has no HeEqH1 variant")
-  end
+  // specular_setup checks its own SetupII (1, or from specular_setup_pkg::MinFoldII on).
 
   localparam int SpanW = CBits + 2 * AngleBits + NBits + LenBits + TagBits;
 
@@ -68,43 +61,23 @@ module specular_system #(
   logic [TagBits-1:0]   span_tag_s, span_tag;
   logic [2:0]           span_status;
 
-  if (LeanSetup) begin : gen_lean
-    specular_setup_lean #(
-      .VecBits      (VecBits),
-      .TagBits      (TagBits),
-      .TileBits     (MulTileBits),
-      .SetupII      (SetupII),
-      .SeedFile     (LeanSeedFile),
-      .LogRecipFile (LogRecipFile),
-      .LogValueFile (LogValueFile),
-      .Exp2File     (Exp2File),
-      .RecipLenFile (RecipLenFile)
-    ) u_setup (
-      .clk_i         (clk_i),
-      .rst_ni        (rst_ni),
-      `SPECULAR_GEO_PORT_MAP,
-      `SPECULAR_SPAN_MAP(_o, _i, span_, _s, _s),
-      .span_status_o (span_status)
-    );
-  end else begin : gen_q44
-    specular_setup #(
-      .VecBits       (VecBits),
-      .TagBits       (TagBits),
-      .HeEqH1        (HeEqH1),
-      .SetupII       (SetupII),
-      .RsqrtSeedFile (RsqrtSeedFile),
-      .LogRecipFile  (LogRecipFile),
-      .LogValueFile  (LogValueFile),
-      .Exp2File      (Exp2File),
-      .RecipLenFile  (RecipLenFile)
-    ) u_setup (
-      .clk_i         (clk_i),
-      .rst_ni        (rst_ni),
-      `SPECULAR_GEO_PORT_MAP,
-      `SPECULAR_SPAN_MAP(_o, _i, span_, _s, _s),
-      .span_status_o (span_status)
-    );
-  end
+  specular_setup #(
+    .VecBits      (VecBits),
+    .TagBits      (TagBits),
+    .TileBits     (MulTileBits),
+    .SetupII      (SetupII),
+    .SeedFile     (SeedFile),
+    .LogRecipFile (LogRecipFile),
+    .LogValueFile (LogValueFile),
+    .Exp2File     (Exp2File),
+    .RecipLenFile (RecipLenFile)
+  ) u_setup (
+    .clk_i         (clk_i),
+    .rst_ni        (rst_ni),
+    `SPECULAR_GEO_PORT_MAP,
+    `SPECULAR_SPAN_MAP(_o, _i, span_, _s, _s),
+    .span_status_o (span_status)
+  );
 
   // The span slice: the stream's span_ready_o (a function of its counter and control) reaches
   // only these flip-flops, placed beside the stream, and the setup sees a registered ready.
@@ -129,7 +102,7 @@ module specular_system #(
       .px_data_o  (span_data)
     );
   end else begin : gen_slice_one
-    // At most a descriptor every SetupII >= 2 clocks (either setup): one entry, which takes a
+    // At most a descriptor every SetupII >= 2 clocks : one entry, which takes a
     // descriptor every two clocks at most (it is free the clock after the stream takes it),
     // keeps the rate for half the flip-flops.
     logic             full_q;

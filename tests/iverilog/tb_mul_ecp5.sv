@@ -5,7 +5,7 @@
 // Icarus, on the model of tests/iverilog/ecp5_mult18x18d_model.v: every product of random
 // operands, with random clock-enable stalls, against the exact product at the block's
 // latency. The configurations are the multipliers' shapes in the design: signed tiles (the
-// lean setup's products, one to six tiles), unsigned tiles (the stream core's), a tile with a
+// setup's products, one to six tiles), unsigned tiles (the stream core's), a tile with a
 // one-bit operand (left to the fabric), and the tile alone below 18 bits.
 // Prints "tb_mul_ecp5: PASS" after Products enabled products per configuration, or a FAIL
 // line naming the configuration and the first products that differ.

@@ -127,7 +127,7 @@ inline std::vector<GeoSpan> random_geo_spans(size_t count, uint64_t seed) {
 }
 
 // Spans the hard cases do not reach: He a few codes from -H1, N2 a few codes from -N1, and
-// tiny chords between codes at the largest C (docs/setup_hw.md#the-contract). The lean setup's
+// tiny chords between codes at the largest C (docs/setup_hw.md#the-contract). The setup's
 // model test and its RTL block test run them.
 inline std::vector<GeoSpan> near_degenerate_spans() {
   std::vector<GeoSpan> v;

@@ -1,16 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-// The hardware setups' block-test harness (tests/rtl/test_setup.cpp, test_setup_ii.cpp,
-// test_setup_lean.cpp): drives geometry spans into a Verilator model of specular_setup or
-// specular_setup_lean (rtl/setup/; the same ports) and checks every descriptor field and the
-// status against a golden model, in order, under random input gaps, backpressure and resets.
-// The golden model is run()'s argument: host::fixed::setup_fixed (golden, the default) or
-// host::lean::setup_lean (golden_lean).
+// The hardware setup's block-test harness (tests/rtl/test_setup.cpp): drives geometry spans
+// into a Verilator model of specular_setup (rtl/setup/) and checks every descriptor field and
+// the status against its golden model host::fixed::setup_fixed, in order, under random input
+// gaps, backpressure and resets.
 #pragma once
 
 #include "geo_cases.hpp"
 #include "rtl_harness.hpp"
 #include "setup_fixed.hpp"
-#include "setup_lean.hpp"
 
 #include <cstdint>
 #include <cstdlib>
@@ -46,13 +43,6 @@ inline Out golden(const device::GeoSpan& g) {
   return {r.span, static_cast<int>(r.status)};
 }
 
-inline Out golden_lean(const device::GeoSpan& g) {
-  const host::lean::Result r = host::lean::setup_lean(g, kGeo, kFmt);
-  return {r.span, static_cast<int>(r.status)};
-}
-
-using Golden = Out (*)(const device::GeoSpan&);
-
 template <class M>
 void drive(M& m, const device::GeoSpan& g) {
   m.geo_n1_i = device::pack_vec(g.n1, kGeo);
@@ -86,11 +76,8 @@ struct Stats {
 // Offers `spans` in order (each held until accepted), with the given probabilities per
 // cycle of offering, of span_ready_i and of an asynchronous reset; spans in flight at a reset
 // are dropped, the one offered is offered again. Ends with span_ready_i high until empty.
-// he_eq_h1: for a model with HeEqH1 = 1, geo_he_i carries garbage and the golden model gets
-// He = H1. gold: the golden model the model must equal.
 template <class M>
-Stats run(M& m, const std::vector<device::GeoSpan>& spans, double p_valid, double p_ready, double p_reset, uint64_t seed,
-          bool he_eq_h1 = false, Golden gold = golden) {
+Stats run(M& m, const std::vector<device::GeoSpan>& spans, double p_valid, double p_ready, double p_reset, uint64_t seed) {
   std::mt19937_64 rng(seed);
   std::uniform_real_distribution<double> u01(0.0, 1.0);
   Stats st;
@@ -103,11 +90,7 @@ Stats run(M& m, const std::vector<device::GeoSpan>& spans, double p_valid, doubl
   while (next < spans.size() || !expected.empty()) {
     if (!offering && next < spans.size() && u01(rng) < p_valid) offering = true;
     m.geo_valid_i = offering;
-    if (offering) {
-      device::GeoSpan g = spans[next];
-      if (he_eq_h1) g.he = {static_cast<int32_t>(next % 977) - 400, 7, -static_cast<int32_t>(next % 131)};
-      drive(m, g);
-    }
+    if (offering) drive(m, spans[next]);
     const bool draining = next >= spans.size();
     m.span_ready_i = draining || u01(rng) < p_ready;
     m.eval();
@@ -130,9 +113,7 @@ Stats run(M& m, const std::vector<device::GeoSpan>& spans, double p_valid, doubl
     const bool taken = m.span_valid_o && m.span_ready_i;
     tick(m);
     if (accept) {
-      device::GeoSpan g = spans[next];
-      if (he_eq_h1) g.he = g.h1;
-      expected.push_back(gold(g));
+      expected.push_back(golden(spans[next]));
       ++st.accepted, ++next, offering = false;
     }
     if (p_reset > 0.0 && u01(rng) < p_reset) {

@@ -1,8 +1,8 @@
 // SPDX-License-Identifier: Apache-2.0
 // The folded CORDIC (rtl/setup/specular_setup_cordic_fold.sv) against its golden model
-// host::lean::cordic_angle(x, y, Frac, Iters, W), bit for bit, in six configurations (each its
+// host::fixed::cordic_angle(x, y, Frac, Iters, W), bit for bit, in six configurations (each its
 // own Verilator model, tests/rtl/CMakeLists.txt): Rounds 2, 3, 7, 15 and 28 at W 34 / Frac 29 /
-// Iters 28, the folded lean setup's at SetupII 6, 8, 16, 32 and 64 (specular_setup_lean_pkg::
+// Iters 28, the folded setup's at SetupII 6, 8, 16, 32 and 64 (specular_setup_pkg::
 // cordic_rounds; 3 and 15 divide no Iters, so the last segment idles), and Rounds 5 at W 40 /
 // Frac 33 / Iters 32. Each gets 20,000 random vectors of every magnitude and quadrant (the axes,
 // the half turn's cases x < 0 with y = 0, tiny vectors, vectors near the width limit
@@ -23,7 +23,7 @@
 #include "Vcordic_fold_w40_r5.h"
 #include "Vcordic_fold_w40_r5_specular_setup_cordic_fold.h"
 #include "rtl_harness.hpp"
-#include "setup_lean.hpp"
+#include "setup_fixed.hpp"
 
 #include <catch2/catch.hpp>
 
@@ -43,7 +43,7 @@ namespace {
 
 using specular::rtl_test::reset;
 using specular::rtl_test::tick;
-namespace hl = specular::host::lean;
+namespace hf = specular::host::fixed;
 
 // The configuration of a model (its -G parameters in tests/rtl/CMakeLists.txt).
 struct Config {
@@ -63,7 +63,7 @@ int64_t sext(uint64_t v, int w) {
 }
 uint64_t to_port(int64_t v, int w) { return static_cast<uint64_t>(v) & ((uint64_t{1} << w) - 1); }
 
-int64_t golden(const Config& c, const Vec2& v) { return hl::cordic_angle(v.x, v.y, c.frac, c.iters, c.w); }
+int64_t golden(const Config& c, const Vec2& v) { return hf::cordic_angle(v.x, v.y, c.frac, c.iters, c.w); }
 
 // The vectors: the special cases, then random ones of every kind, each kept only when the
 // golden model keeps its registers inside W bits (it throws otherwise); `rejected` counts those.

@@ -169,7 +169,7 @@ void check_unit(const Config& c, uint64_t seed, int slots) {
   CHECK(stalled > slots / 8);  // the stalled slots really occurred
 }
 
-// specular_setup_smul's latency, as docs/setup_hw.md#the-lean-rtl states it: three stages
+// specular_setup_smul's latency, as docs/setup_hw.md#the-rtl states it: three stages
 // around specular_pipe_mul's 1 + clog2(ceil(b / 2)).
 int smul_latency(int b_bits) {
   int levels = 0;

@@ -8,7 +8,7 @@
 // register line, the same d_i and en_i, both without reset, every register starting at 0
 // as in every formal model here). The depths cover ring sizes of a power of two and not,
 // a depth filling its ring (Depth = Words) and the smallest (3). Property, every cycle: the
-// two lines' outputs are equal. The formal harnesses of the lean setup read its lines as
+// two lines' outputs are equal. The formal harnesses of the setup read its lines as
 // registers (RamLines = 0); this check carries their proof to the block-RAM lines.
 //
 // Not in any filelist (rtl/README.md#filelists): scripts/formal.sh reads it.

@@ -4,14 +4,14 @@
 // specular_setup_fv: formal property harness of specular_setup's handshakes (geometry span
 // in, span descriptor out; docs/interfaces.md#geometry-span-interface,
 // docs/setup_hw.md#the-rtl). Run by scripts/formal.sh setup (ctests rtl_formal_setup_*):
-// the unbounded proof (base case from reset and induction), the bounded check and a mutant
+// the unbounded proof (base case from reset and induction) and two mutants
 // (docs/formal.md#specular_setup-the-span-handshakes). Everything below the instance is under
 // `ifdef FORMAL; this file is not in the filelist rtl/specular.f.
 //
 // ABSTRACTION (in scripts/formal.sh setup, documented in docs/formal.md): the script
-// cuts the arithmetic datapath where it reaches the descriptor (the wires c_99, psi0_99,
-// dpsi_99, a_pos_99, opp_h_99, n_99, len_99 and the status flags become free values every
-// clock) and removes the logic left without a reader. What remains is the control: the
+// cuts the arithmetic datapath where it reaches the descriptor (the wires c_out, psi0_out,
+// dpsi_out, a_pos_out, opph_out, oppn_out, n_out, len_out and the status flags become free
+// values every clock) and removes the logic left without a reader. What remains is the control: the
 // input register's valid, the valid delay line, the tag's delay line, the output buffer.
 // No property below constrains a cut value, so the proof covers the real datapath.
 // The core keeps its production parameters except TagBits (2 here).
@@ -52,11 +52,7 @@
 module specular_setup_fv #(
   parameter int VecBits = 18,
   parameter int TagBits = 2,
-  // 0 specular_setup; 1 specular_setup_lean (SetupII = 1) with its delay lines in registers
-  // (RamLines = 0), whose probes read the stage registers; the ring buffers' outputs are the
-  // register lines' clock for clock (specular_delay, proven by scripts/formal.sh delay).
-  parameter bit Lean    = 1'b0,
-  // Registers after the input register (the core's tau of the descriptor, TC = 99); set by
+  // Registers after the input register (the core's tau of the descriptor, TOUT); set by
   // scripts/formal.sh setup from the length of the valid delay line.
   parameter int Depth   = 99,
   // specular_setup's fixed register formats (the widths of its ports)
@@ -74,30 +70,20 @@ module specular_setup_fv #(
   input  logic                 f_pick_i
 );
 
-  if (Lean) begin : gen_lean
-    specular_setup_lean #(
-      .VecBits  (VecBits),
-      .TagBits  (TagBits),
-      .RamLines (1'b0)
-    ) u_dut (
-      .clk_i         (clk_i),
-      .rst_ni        (rst_ni),
-      `SPECULAR_GEO_PORT_MAP,
-      `SPECULAR_SPAN_MAP(_o, _i, span_, _o, _i),
-      .span_status_o (span_status_o)
-    );
-  end else begin : gen_q44
-    specular_setup #(
-      .VecBits (VecBits),
-      .TagBits (TagBits)
-    ) u_dut (
-      .clk_i         (clk_i),
-      .rst_ni        (rst_ni),
-      `SPECULAR_GEO_PORT_MAP,
-      `SPECULAR_SPAN_MAP(_o, _i, span_, _o, _i),
-      .span_status_o (span_status_o)
-    );
-  end
+  // SetupII = 1 with its delay lines in registers (RamLines = 0), whose probes read the stage
+  // registers; the ring buffers' outputs are the register lines' clock for clock
+  // (specular_delay, proven by scripts/formal.sh delay).
+  specular_setup #(
+    .VecBits  (VecBits),
+    .TagBits  (TagBits),
+    .RamLines (1'b0)
+  ) u_dut (
+    .clk_i         (clk_i),
+    .rst_ni        (rst_ni),
+    `SPECULAR_GEO_PORT_MAP,
+    `SPECULAR_SPAN_MAP(_o, _i, span_, _o, _i),
+    .span_status_o (span_status_o)
+  );
 
 `ifdef FORMAL
   // Latency: from the accept cycle to the cycle the span is on the output (input register,
@@ -109,8 +95,8 @@ module specular_setup_fv #(
   localparam int StreakBits = $clog2(Latency + 2);
   localparam int GeoBits    = `SPECULAR_GEO_DATA_BITS;
   localparam int SpanBits   = CBits + 2 * AngleBits + NBits + LenBits + TagBits + 3;
-  // The sideband line's stage: {len, n, tag, flags}, 3 flags (u_dly_out) or the lean's 2 (u_dly_side).
-  localparam int Flags      = Lean ? 2 : 3;
+  // The sideband line's stage (u_dly_side): {len, n, tag, flags}, 2 flags.
+  localparam int Flags      = 2;
   localparam int OutW       = LenBits + NBits + TagBits + Flags;
 
   logic accept, xfer;

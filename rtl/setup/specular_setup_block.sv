@@ -1,9 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // Copyright (c) the specular_device authors.
 //
-// specular_setup_lean_block: block normalization, N components shifted by one common power of
+// specular_setup_block: block normalization, N components shifted by one common power of
 // two, rounded half up, so that the largest magnitude lies in [2^(Bits-1), 2^Bits]; the zero
-// vector stays 0 (the golden model's host::lean::block_normalize; docs/setup_hw.md#the-lean-datapath,
+// vector stays 0 (the golden model's host::fixed::block_normalize; docs/setup_hw.md#the-datapath,
 // steps 3 and 4). One vector per clock.
 //
 //   stage 1  |x_i|
@@ -11,19 +11,19 @@
 //   stage 3  y_i = (x_i 2^Bits) >> t: x_i >> (s - 1) for s = t + 1 - Bits > 0, x_i << (1 - s)
 //            otherwise, exact either way; one right shifter, no adder
 //   stage 4  (y_i + 1) >> 1: the rounding of s > 0; exact for s <= 0 (y_i even)
-// Stages: specular_setup_lean_pkg::BlockStages. en_i freezes every stage. No reset. With
+// Stages: specular_setup_pkg::BlockStages. en_i freezes every stage. No reset. With
 // SetupII > 1 (en_i the folded setup's advance) stage 3's N shifts share one shifter over the
 // slot's clocks (specular_setup_rshift_n).
 //
 // TopLo .. TopHi: where the caller's data puts t. A vector of bounded length (G, and x with c:
-// docs/setup_hw.md#the-lean-rtl derives their windows) needs a shifter of clog2(TopHi - TopLo
+// docs/setup_hw.md#the-rtl derives their windows) needs a shifter of clog2(TopHi - TopLo
 // + 1) steps, not clog2(InW): the part of the shift below TopLo is a constant one. A nonzero
 // input whose t lies outside the window gives a wrong result; in_window (simulation only) says
 // whether the value in stage 2 is zero or inside, for the caller's assertion on its valid spans.
 
 `include "specular_assert.svh"
 
-module specular_setup_lean_block #(
+module specular_setup_block #(
   parameter int N    = 3,
   parameter int InW  = 64,
   parameter int Bits = 28,
@@ -41,14 +41,14 @@ module specular_setup_lean_block #(
   localparam int YW     = Bits + 3;
   localparam int Stages = 4;
 
-  if (Stages != specular_setup_lean_pkg::BlockStages) begin : gen_stage_check
-    `SPEC_PARAM_ERROR("specular_setup_lean_block: BlockStages disagrees with the stages built here")
+  if (Stages != specular_setup_pkg::BlockStages) begin : gen_stage_check
+    `SPEC_PARAM_ERROR("specular_setup_block: BlockStages disagrees with the stages built here")
   end
   if (InW < 2 || InW > 120 || Bits < 2) begin : gen_width_check
-    `SPEC_PARAM_ERROR("specular_setup_lean_block: InW must be in 2..120, Bits >= 2")
+    `SPEC_PARAM_ERROR("specular_setup_block: InW must be in 2..120, Bits >= 2")
   end
   if (TopLo < 0 || TopLo > TopHi || TopHi >= InW) begin : gen_window_check
-    `SPEC_PARAM_ERROR("specular_setup_lean_block: the window needs 0 <= TopLo <= TopHi < InW")
+    `SPEC_PARAM_ERROR("specular_setup_block: the window needs 0 <= TopLo <= TopHi < InW")
   end
 
   logic [N*InW-1:0] x1_q, x2_q, mag_q;
@@ -68,7 +68,7 @@ module specular_setup_lean_block #(
   if (WW > 1) begin : gen_top
     // Folded, mag_q holds for the slot: the window's OR is registered on every clock (valid
     // from the slot's second), so the tree starts at flip-flops, not after the OR of the
-    // components (docs/setup_hw.md#the-folded-lean-setup).
+    // components (docs/setup_hw.md#the-folded-setup).
     logic [WW-1:0] win;
     if (SetupII > 1) begin : gen_win_reg
       always_ff @(posedge clk_i) win <= all_d[TopHi:TopLo];
@@ -97,7 +97,7 @@ module specular_setup_lean_block #(
     assign x2[i*XW +: XW] = XW'(full >>> TopLo);
   end
   // Folded, a shifter over the full range (more than four steps: G', whose length is not
-  // bounded) takes two clocks (docs/setup_hw.md#the-folded-lean-setup).
+  // bounded) takes two clocks (docs/setup_hw.md#the-folded-setup).
   specular_setup_rshift_n #(.N(N), .InW(XW), .OutW(YW), .SW(PL), .Signed(1'b1),
                             .SetupII(SetupII), .Split(SetupII > 1 && PL > 4)) u_shift (
     .clk_i (clk_i), .en_i (en_i), .a_i (x2), .s_i (top_q), .y_o (y_d));
