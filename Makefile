@@ -7,7 +7,7 @@ JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 PYTHON ?= /usr/bin/python3
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build check test test-long formal sim sim-setup-ii stage-table results-page roms regmap vcd report readme-picture lint fuzz fpga coverage xprop clean help
+.PHONY: all deps configure build check test test-long formal sim sim-setup-ii stage-table results-page roms regmap filelists vcd report readme-picture lint fuzz fpga coverage xprop clean help
 
 all: build
 
@@ -20,6 +20,7 @@ help:
 	@echo "make sim-setup-ii  the system stage at SetupII 1, 8, 16, 32 and 64 (turns on SPECULAR_SYSTEM_SETUP_II in $(BUILD): four more models)"
 	@echo "make roms    regenerate every configuration's ROM hex files and roms/build_configs.cmake (romgen --all), and roms/budget/ (scripts/budget_roms.py)"
 	@echo "make regmap  rewrite specular_axil's register map from rtl/axi/data/specular_axil.rdl: its RTL package, C header and docs/interfaces.md table (PeakRDL, installed into $(BUILD)/regmap-venv)"
+	@echo "make filelists  rewrite every IP's flat filelist rtl/**/*.f and FuseSoC core *.core from its .manifest (scripts/rtl_filelist.py; the ctest filelists_up_to_date checks them)"
 	@echo "make stage-table  rewrite docs/pipeline.md's stage table from rtl/prim/specular_pkg.sv"
 	@echo "make results-page  rewrite docs/results.md (the measured results) from docs/measured/*.json and docs/fpga_figures.json"
 	@echo "make vcd     write VCD timing diagrams to $(BUILD)/vcd and draw the 4-pixel one"
@@ -90,6 +91,11 @@ roms: configure
 # pinned PeakRDL tools into $(BUILD)/regmap-venv on first use.
 regmap:
 	$(PYTHON) scripts/regmap.py --write --venv $(BUILD)/regmap-venv
+
+# Each IP's flat filelist (rtl/**/*.f) and FuseSoC core (*.core) from its manifest
+# (rtl/README.md#filelists; the ctest filelists_up_to_date checks them).
+filelists:
+	$(PYTHON) scripts/rtl_filelist.py --generate
 
 vcd: build
 	./$(BUILD)/bin/sim_regression --vcd-dir $(BUILD)/vcd --vcd-only

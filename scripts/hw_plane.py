@@ -5,7 +5,7 @@ the device's build configurations and the per-pixel Blinn-Phong core `phong_stre
 
   measure_phong(...)  BUILD/bin/phong_search --measure CONFIG --n-step S --json OUT/phong_CONFIG.json
                       (the error of each Phong configuration, golden model, measured in this run)
-  phong_figures(...)  the Phong configurations' cells from docs/fpga_figures.json (scripts/fpga.sh:
+  phong_figures(...)  the Phong configurations' cells from docs/fpga_figures.json (scripts/fpga.py:
                       HX8K Yosys counts, ECP5 place and route)
   points(...)         one row per point: cost (cells) and error per n range
   plot(...), write(...)  the figure OUT/hw_plane.png and the report section
@@ -84,7 +84,7 @@ def load_figures(path):
 
 
 def phong_figures(path=os.path.join(ROOT, "docs", "fpga_figures.json")):
-    """The committed scripts/fpga.sh figures of phong_stream per configuration (make fpga
+    """The committed scripts/fpga.py figures of phong_stream per configuration (make fpga
     --top phong --phong-config CFG; synthesis and place and route of the Phong core take longer
     than a report run, so the report reads them): (cfg, "ice40") -> the HX8K run's Yosys counts
     (LUT trees; the core needs more logic cells than any iCE40 has, so there is no placement),
@@ -168,7 +168,7 @@ def fmt(v):
 
 
 def ecp5_runs(path=os.path.join(ROOT, "docs", "fpga_figures.json")):
-    """The ECP5 entries of docs/fpga_figures.json (scripts/fpga.sh --device ecp5, the same harness for
+    """The ECP5 entries of docs/fpga_figures.json (scripts/fpga.py --device ecp5, the same harness for
     every core): name -> entry, for the default specular_system at each SetupII ("specular_system" is
     SetupII 1, "specular_system SetupII=K" the others) and each phong_stream configuration
     ("phong CONFIG"); a placed and routed run replaces the synthesis counts of the same core."""
@@ -215,8 +215,8 @@ def write_system_cost(w, runs, ii_sim=None):
         w("The device with its setup in hardware (`specular_system`): no ECP5 counts in docs/fpga_figures.json.\n")
         return
     w("The device with its setup in hardware (`specular_system`; `SetupII` = 1 takes one span per clock, `SetupII` = k "
-      "at most one every k clocks with the setup folded over them, docs/setup_hw.md#the-folded-lean-setup) "
-      "against the Phong cores, in the same harness and flow (`scripts/fpga.sh --device ecp5`; the system's Yosys "
+      "at most one every k clocks with the setup folded over them, docs/setup_hw.md#the-folded-setup) "
+      "against the Phong cores, in the same harness and flow (`scripts/fpga.py --device ecp5`; the system's Yosys "
       "`synth_ecp5` counts where it fits no ECP5, placed and routed counts where a run has them; "
       "from docs/fpga_figures.json, not measured in this run):\n")
     w("| core | RTL | LUT4 | CCU2C | MULT18X18D | DP16KD | FF |")
@@ -308,7 +308,7 @@ TABLE_HEADER = ("| point | core | SB_LUT4 | FF | SB_RAM40_4K | logic cells (at l
 
 def fit_text(lc_min, fit, reason):
     """The plane's "fits an iCE40" cell: more logic cells than any iCE40 has, or the HX8K run's own
-    verdict (scripts/fpga.sh: block RAMs and DSPs are checked there too)."""
+    verdict (scripts/fpga.py: block RAMs and DSPs are checked there too)."""
     if lc_min > ICE40_MAX_LC:
         return "no: does not fit any iCE40"
     return "yes" if fit else f"no: {reason}"
@@ -337,7 +337,7 @@ def write(w, rows, phong, sim, n_step, synth_ran):
     w("Every hardware configuration is a point: the device's build configurations of section 4 (`specular_unit`, and "
       "`specular_stream` of the default configuration, the core with the same pixel interface as the competitor) and "
       "the per-pixel Blinn-Phong core `phong_stream` (docs/phong_hw.md) in the configurations found by its search. "
-      "Cost, in one flow (`scripts/fpga.sh`, the out-of-context harness with registered IO, its cells included): the "
+      "Cost, in one flow (`scripts/fpga.py`, the out-of-context harness with registered IO, its cells included): the "
       "HX8K's Yosys `synth_ice40` cells (LUT-tree multipliers in both, the HX8K has no DSP): the device's configurations "
       "from this run, the Phong core's from docs/fpga_figures.json (`make fpga`, commit in its entries; not re-run here); "
       f"'logic cells (at least)' is max(SB_LUT4, FF), since every LUT4 and every flip-flop takes a logic cell of its own "

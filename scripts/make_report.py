@@ -10,11 +10,11 @@ Every figure in the text is taken from the outputs of this run:
                               break-even span length, the host cores it takes to feed the core
   BUILD/bin/report_data       errors (docs/metrics.md), albedo, device error of RTL
                               configurations (golden model), the hard cases of docs/scanline_setup.md
-  scripts/fpga.sh --top unit   HX8K cell counts per RTL build configuration (committed ROMs)
+  scripts/fpga.py --top unit   HX8K cell counts per RTL build configuration (committed ROMs)
   BUILD/bin/phong_search      the per-pixel Blinn-Phong core's error per configuration (section 4b,
                               scripts/hw_plane.py; its cells from docs/fpga_figures.json)
   BUILD/bin/sim_regression    Verilator regression throughput (reduced random count)
-  scripts/fpga.sh             out-of-context place and route (nextpnr-ice40, HX8K and UP5K)
+  scripts/fpga.py             out-of-context place and route (nextpnr-ice40, HX8K and UP5K)
 Missing programs are reported in the text, not silently skipped.
 
 usage: scripts/make_report.py --build build --out build/report [--random N] [--jobs J] [--scene-reps R]
@@ -28,7 +28,6 @@ import math
 import os
 import platform
 import re
-import shutil
 import subprocess
 import sys
 import time
@@ -131,12 +130,12 @@ def parse_bench(data):
     return per_pixel, per_span
 
 
-def run(cmd, log, timeout=600, cwd=ROOT):
+def run(cmd, log, timeout=600, cwd=ROOT, env=None):
     t0 = time.time()
     with open(log, "w") as lf:
         lf.write("$ " + " ".join(cmd) + "\n")
         lf.flush()
-        p = subprocess.run(cmd, cwd=cwd, stdout=lf, stderr=subprocess.STDOUT, timeout=timeout)
+        p = subprocess.run(cmd, cwd=cwd, stdout=lf, stderr=subprocess.STDOUT, timeout=timeout, env=env)
     return p.returncode, time.time() - t0
 
 
@@ -192,9 +191,9 @@ class Report:
 
     def synth_one(self, cfg):
         """Cells of cfg['top'] (default specular_unit) for one build configuration of report_data's
-        hardware section: scripts/fpga.sh on the HX8K (the one flow of every FPGA figure,
+        hardware section: scripts/fpga.py on the HX8K (the one flow of every FPGA figure,
         rtl/fpga/README.md), its committed ROM files and its parameters by --param; LUT trees
-        (MulTileBits=0), as on the HX8K. fpga.sh reuses a run whose sources, ROMs, parameters
+        (MulTileBits=0), as on the HX8K. fpga.py reuses a run whose sources, ROMs, parameters
         and tools are unchanged (--fresh-synth forces it)."""
         top = cfg.get("top", "specular_unit")
         for rom in (cfg["coef_rom"], cfg["cos_rom"]):
@@ -209,7 +208,7 @@ class Report:
                   "CosFracBits": cfg["cos_frac_bits"], "NumBanks": nb, "BankMaxN": f"{10 * nb}'h{packed:x}",
                   "CoefRomFile": cfg["coef_rom"], "CosRomFile": cfg["cos_rom"]}
         out = os.path.join(self.out, "synth", cfg["name"])
-        cmd = ["bash", os.path.join(ROOT, "scripts", "fpga.sh"), "--top", {"specular_unit": "unit"}.get(top, "stream"),
+        cmd = [sys.executable, os.path.join(ROOT, "scripts", "fpga.py"), "--top", {"specular_unit": "unit"}.get(top, "stream"),
                "--device", "hx8k", "--out", out]
         for k, v in params.items():
             cmd += ["--param", f"{k}={v}"]
@@ -218,15 +217,15 @@ class Report:
         log = os.path.join(self.logs, f"synth_{cfg['name']}.log")
         t0 = time.time()
         try:
-            rc, _ = run(cmd, log, timeout=3600)
+            rc, _ = run(cmd, log, timeout=3600, env=self.fpga_env())
         except subprocess.TimeoutExpired:
-            return {"error": "scripts/fpga.sh timed out"}
+            return {"error": "scripts/fpga.py timed out"}
         if rc != 0:
-            return {"error": f"scripts/fpga.sh exit {rc} (logs/{os.path.basename(log)})"}
+            return {"error": f"scripts/fpga.py exit {rc} (logs/{os.path.basename(log)})"}
         try:
             r = json.load(open(os.path.join(out, "summary.json")))["runs"][0]
         except (OSError, ValueError, KeyError, IndexError):
-            return {"error": f"scripts/fpga.sh wrote no summary (logs/{os.path.basename(log)})"}
+            return {"error": f"scripts/fpga.py wrote no summary (logs/{os.path.basename(log)})"}
         y = r["yosys"]
         return {"lut4": y["lut4"], "ff": y["ff"], "bram": y["bram"], "carry": y["carry"],
                 "fmax_mhz": r.get("fmax_mhz"), "fit": bool(r.get("fit")),
@@ -234,14 +233,13 @@ class Report:
                 "reused": "result reused" in open(log).read(),
                 "seconds": time.time() - t0}
 
+    def fpga_env(self):
+        """scripts/fpga.py's environment: its pinned tools in BUILD/fpga-venv, as `make fpga` has them
+        (scripts/install-fpga-tools.sh installs them on first use)."""
+        return dict(os.environ, FPGA_VENV=os.environ.get("FPGA_VENV", os.path.join(self.build, "fpga-venv")))
+
     def synth(self, configs):
         if not configs:
-            return {}
-        if not shutil.which("yosys"):
-            self.missing.append("yosys is not on PATH: no cell counts")
-            return {}
-        if not shutil.which("nextpnr-ice40"):
-            self.missing.append("nextpnr-ice40 is not on PATH: no cell counts")
             return {}
         t0 = time.time()
         with concurrent.futures.ThreadPoolExecutor(max_workers=self.args.jobs) as pool:
@@ -253,26 +251,24 @@ class Report:
         return res
 
     def pnr(self):
-        """Out-of-context place and route (scripts/fpga.sh: harnesses rtl/fpga/, Yosys synth_ice40,
+        """Out-of-context place and route (scripts/fpga.py: harnesses rtl/fpga/, Yosys synth_ice40,
         nextpnr-ice40) of the default specular_unit and specular_stream on the HX8K and the UP5K.
         A configuration that does not fit is a row with fit = no, not a failure."""
-        if not shutil.which("nextpnr-ice40") or not shutil.which("yosys"):
-            self.missing.append("yosys or nextpnr-ice40 is not on PATH: no place and route")
-            return []
         out = os.path.join(self.out, "fpga")
         log = os.path.join(self.logs, "fpga.log")
         t0 = time.time()
         try:
-            rc, _ = run(["bash", os.path.join(ROOT, "scripts", "fpga.sh"), "--out", out], log, timeout=3600)
+            rc, _ = run([sys.executable, os.path.join(ROOT, "scripts", "fpga.py"), "--out", out], log, timeout=3600,
+                        env=self.fpga_env())
         except subprocess.TimeoutExpired:
             rc = -1
-        self.timings["place and route (scripts/fpga.sh)"] = time.time() - t0
+        self.timings["place and route (scripts/fpga.py)"] = time.time() - t0
         try:
             runs = json.load(open(os.path.join(out, "summary.json")))["runs"]
         except (OSError, ValueError, KeyError):
             runs = []
         if rc != 0 or not runs:
-            self.missing.append(f"scripts/fpga.sh failed (exit {rc}), see logs/fpga.log")
+            self.missing.append(f"scripts/fpga.py failed (exit {rc}), see logs/fpga.log")
         return runs
 
     def hardware_plane(self, data, cells):
@@ -729,9 +725,9 @@ class Report:
           "over the epicenter, n = 1 over all of [0, pi/2] wherever the reference is at least 4 LSB. Decoder tables are "
           "derived from the bank set (`model/device/decoder_table.hpp`: bank j+1 takes over at the first n where its float error "
           "is not larger; this reproduces the patent's 1 | 2 | 3..6 | 7..1000 for {1,2,4,16}). Cells: Yosys "
-          "`synth_ice40` counts of `scripts/fpga.sh --top unit --device hx8k` (the out-of-context harness with registered "
+          "`synth_ice40` counts of `scripts/fpga.py --top unit --device hx8k` (the out-of-context harness with registered "
           "IO, its cells included; rtl/fpga/README.md) with `--param` for the configuration and its committed ROM files; "
-          "multipliers are LUT trees (no DSP on the HX8K). (r): fpga.sh did not re-run because the RTL sources, both ROM "
+          "multipliers are LUT trees (no DSP on the HX8K). (r): fpga.py did not re-run because the RTL sources, both ROM "
           "files, the parameters and the tools are those of its previous run in `synth/<config>/` (`--fresh-synth` "
           "forces it).\n")
         hdr = ("| config | ROM 12 addr/data bits | policy | banks (decoder max n) | ROM bits (coef + cos) | worst rel. epicenter | "
@@ -765,7 +761,7 @@ class Report:
         else:
             w("\nCycles per pixel: not measured in this run (no regression).\n")
         if pnr:
-            w("Out-of-context place and route of the default configuration (`scripts/fpga.sh`, `make fpga`; "
+            w("Out-of-context place and route of the default configuration (`scripts/fpga.py`, `make fpga`; "
               "harnesses with registered IO in `rtl/fpga/`): Yosys `synth_ice40` (`-dsp` on the UP5K), "
               "nextpnr-ice40 with a fixed seed and the frequency target shown. LCs: logic cells used after "
               "packing; FFs: Yosys flip-flop count; both include the harness (serial-in input register, output "
@@ -1028,7 +1024,7 @@ def parse_args(argv):
     ap.add_argument("--build", default="build", help="CMake build directory (binaries in BUILD/bin)")
     ap.add_argument("--out", default=None, help="output directory (default BUILD/report)")
     ap.add_argument("--random", type=int, default=100000, help="random scanlines per policy for sim_regression (0..1000000)")
-    ap.add_argument("--jobs", type=int, default=2, help="parallel scripts/fpga.sh runs of the build configurations (1..16)")
+    ap.add_argument("--jobs", type=int, default=2, help="parallel scripts/fpga.py runs of the build configurations (1..16)")
     ap.add_argument("--n-step", type=int, default=1, help="sample n = 1, 1+S, ..., 1000 for the error sweeps (1..999)")
     ap.add_argument("--fresh-synth", action="store_true",
                     help="re-run Yosys even when RTL, ROMs and script are unchanged since the last run")

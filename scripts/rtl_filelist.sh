@@ -6,7 +6,7 @@
 # scripts/rtl_filelist.py, the one reader of the format, into two arrays:
 #   RTL_SOURCES  the source files in compile order, paths relative to the root
 #   RTL_INCDIRS  the include directories of their `+incdir+DIR` lines
-#   RTL_FILELISTS  every filelist read (the nested ones too)
+#   RTL_FILELISTS  every filelist read
 # Returns 1 (with the reader's message) when a filelist is missing or wrong.
 rtl_filelist() {
   local out

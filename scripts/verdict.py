@@ -5,7 +5,7 @@ for its FPGA area, the device or the per-pixel Blinn-Phong core in either form, 
 
 The currency, stated once: a core's area is the share of an LFE5U-85F it occupies on its binding
 resource, max(LUT4 positions / 83,640, flip-flops / 83,640, MULT18X18D / 156, DP16KD / 208),
-from the ECP5 runs of docs/fpga_figures.json (scripts/fpga.sh --device ecp5, MULT18X18D tiles on
+from the ECP5 runs of docs/fpga_figures.json (scripts/fpga.py --device ecp5, MULT18X18D tiles on
 both sides; Yosys' counts, LUT4 positions = LUT4 + 2 CCU2C). A share above 1 does not fit the
 part. A design's figure of merit is pixels per clock per part, (pixels per clock) / share, and
 at its own clock, pixels per second per part; the verdict compares designs by it, as ratios.
@@ -14,7 +14,7 @@ The raw counts stay beside it in the report.
 Pixels per clock: every Phong core and the device's stream core take one pixel per clock on any
 span (tested: rtl_phong, make sim); the device with its setup in hardware (specular_system) takes
 at most one span every SetupII clocks, so on spans of m pixels it gives min(1, m / SetupII)
-pixels per clock (docs/setup_hw.md#sharing-over-setupii-clocks), its best SetupII chosen per m.
+pixels per clock (docs/setup_hw.md#the-folded-setup), its best SetupII chosen per m.
 
   candidates(...)   the designs per budget: the Phong configurations whose measured errors meet
                     it, the device's stream configurations that meet it, the system per SetupII
@@ -161,7 +161,7 @@ def break_even_each(points, budget):
     return [be for be in out if be is not None]
 
 
-# The ECP5 synthesis of the current flow (scripts/fpga.sh: rtl/fpga/README.md#merged-cells, the
+# The ECP5 synthesis of the current flow (scripts/fpga.py: rtl/fpga/README.md#merged-cells, the
 # DSP tiles' own registers of rtl/prim/specular_mul_tile.sv): a comparison takes every core's
 # entry of it where one is recorded. An entry is of the current flow when its synthesis string
 # holds every marker.
@@ -222,16 +222,14 @@ def load_points(figs, phong_errors, device_meets, phong_configs, device_errs=Non
         name = "device stream" + (f" {label}" if label else "") + " (setup on a host)"
         pts.append({"name": name, "kind": "device", "ecp5": e, "meets": meets, "setup_ii": None,
                     "err": device_errs.get(label)})
-    # The system at every SetupII and setup recorded (config None: the lean setup, the default;
-    # q44_setup: the Q44 formulation).
-    systems = sorted({(e.get("config"), e.get("setup_ii") or 1) for e in figs.get("ecp5_runs", []) + figs.get("synthesis_runs", [])
-                      if e.get("core") == "specular_system" and (e.get("part") == "ECP5" or "multipliers" in e)},
-                     key=lambda cs: (cs[0] or "", cs[1]))
-    for cfg, k in systems:
-        e = ecp5_entry(figs, "specular_system", cfg, None if k == 1 else k)
+    # The system at every SetupII recorded (the default configuration: a --label run is not the system's).
+    systems = sorted({e.get("setup_ii") or 1 for e in figs.get("ecp5_runs", []) + figs.get("synthesis_runs", [])
+                      if e.get("core") == "specular_system" and not e.get("config")
+                      and (e.get("part") == "ECP5" or "multipliers" in e)})
+    for k in systems:
+        e = ecp5_entry(figs, "specular_system", None, None if k == 1 else k)
         if e:
-            setup = "Q44 setup" if cfg == "q44_setup" else "lean setup"
-            pts.append({"name": f"device system, {setup}, SetupII={k} (setup in hardware)", "kind": "device",
+            pts.append({"name": f"device system, SetupII={k} (setup in hardware)", "kind": "device",
                         "ecp5": e, "meets": device_meets.get(None, []), "setup_ii": k, "err": device_errs.get(None)})
     for c in phong_configs:
         if c.endswith("_consth"):
@@ -255,7 +253,7 @@ IMPLIED = {"b1": ["b1", "b3"], "b2": ["b2"], "b3": ["b3"]}
 
 
 def labelled_device_budgets(figs):
-    """The device's budget configurations in the record (scripts/fpga.sh --label device_bK_n1000,
+    """The device's budget configurations in the record (scripts/fpga.py --label device_bK_n1000,
     roms/budget/budget_configs.json): label -> the budgets met (the search that found it held it to
     bK for n <= 1000)."""
     return {e["config"]: IMPLIED[e["config"].split("_")[1]] for e in figs.get("ecp5_runs", [])
@@ -355,36 +353,70 @@ def budget_text(b):
     return f"{rel:.2%} of the pixel + 1 LSB in the epicenter, {ab:g} C + 1 LSB over the lobe"
 
 
+KINDS = {  # marker, colour and key text of each kind of design in the plots
+    "host": ("o", "tab:blue", "device, setup on a host"),
+    "hw": ("^", "tab:green", "device, setup in hardware"),
+    "phong": ("s", "tab:red", "per-pixel Phong"),
+}
+
+
+def kind_of(p):
+    return "phong" if p["kind"] == "phong" else "hw" if p.get("setup_ii") is not None else "host"
+
+
+def label_offsets(xy, box=(16, 11)):
+    """Offsets in points, one per point (display coordinates xy), for the points' number labels: the
+    first of a few positions around the point whose box overlaps no label placed before, so that
+    points at one place (the systems per SetupII share an error) keep readable numbers."""
+    tries = [(5, 4), (5, -13), (-20, 4), (-20, -13), (5, 15), (-20, 15), (5, -24), (-20, -24), (26, 4), (-41, 4)]
+    placed, out = [], []
+    for x, y in xy:
+        for dx, dy in tries:
+            bx, by = x + dx, y + dy
+            if all(abs(bx - px) >= box[0] or abs(by - py) >= box[1] for px, py in placed):
+                break
+        placed.append((bx, by))
+        out.append((dx, dy))
+    return out
+
+
 def plot(points, out_dir, plt):
     """One figure per budget: every point's worst error as a fraction of the budget's bound against
     its share of an LFE5U-85F (a point without the figure the budget needs is left out: the default
-    device build at B2, whose raw error report_data does not give)."""
+    device build at B2, whose raw error report_data does not give). The points are numbered, the
+    numbers placed apart (label_offsets), and a key beside the plot names each number."""
     written = []
     for b in BUDGETS:
-        fig, ax = plt.subplots(figsize=(10, 6))
-        any_pt = False
-        for i, p in enumerate(points):
-            e = p.get("ecp5")
+        pts = []
+        for p in points:
             err = budget_error(p["err"], b) if p.get("err") else None
-            if not e or err is None:
-                continue
-            sh, _ = share(e)
-            any_pt = True
-            ax.scatter([sh], [max(err, 1e-3)], marker="o" if p["kind"] == "device" else "s",
-                       color="tab:blue" if p["kind"] == "device" else "tab:red")
-            ax.annotate(p["name"], (sh, max(err, 1e-3)), textcoords="offset points", xytext=(4, 4 + 7 * (i % 3)),
-                        fontsize=7)
-        if not any_pt:
-            plt.close(fig)
+            if p.get("ecp5") and err is not None:
+                pts.append((p, share(p["ecp5"])[0], max(err, 1e-3)))
+        if not pts:
             continue
+        fig, ax = plt.subplots(figsize=(12, 6))
+        for k, (marker, colour, text) in KINDS.items():
+            sel = [(x, y) for p, x, y in pts if kind_of(p) == k]
+            if sel:
+                ax.scatter([x for x, _ in sel], [y for _, y in sel], marker=marker, color=colour, label=text, zorder=3)
         ax.axhline(1.0, color="gray", linestyle="--", linewidth=1)
         ax.set_xscale("log")
         ax.set_yscale("log")
+        xs, ys = [x for _, x, _ in pts], [y for _, _, y in pts]
+        ax.set_xlim(min(xs) / 1.6, max(xs) * 1.6)
+        ax.set_ylim(min(ys + [1.0]) / 2, max(ys + [1.0]) * 2)
         ax.set_xlabel("share of an LFE5U-85F on the binding resource (ECP5, MULT18X18D tiles)")
         ax.set_ylabel(f"worst error / {b.upper()} bound, n = 1..1000")
         ax.set_title(f"{b.upper()}: {budget_text(b)}", fontsize=10)
         ax.grid(True, which="both", alpha=0.3)
-        fig.tight_layout()
+        ax.legend(loc="upper left", fontsize=8)
+        fig.subplots_adjust(left=0.07, right=0.62, bottom=0.1, top=0.93)
+        xy = ax.transData.transform([(x, y) for _, x, y in pts]) * 72.0 / fig.dpi
+        for i, ((p, x, y), off) in enumerate(zip(pts, label_offsets(xy)), start=1):
+            ax.annotate(str(i), (x, y), textcoords="offset points", xytext=off, fontsize=8,
+                        color=KINDS[kind_of(p)][1])
+        key = "\n".join(f"{i:>2}  {p['name']}" for i, (p, _, _) in enumerate(pts, start=1))
+        fig.text(0.64, 0.93, key, fontsize=7.5, va="top", family="monospace")
         path = os.path.join(out_dir, f"verdict_{b}.png")
         fig.savefig(path, dpi=110)
         plt.close(fig)

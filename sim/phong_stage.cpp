@@ -7,6 +7,7 @@
 #include "metrics.hpp"
 #include "phong_error.hpp"
 #include "phong_model.hpp"
+#include "clocking.hpp"
 #include "verilated_model.hpp"
 
 #include <algorithm>
@@ -24,16 +25,6 @@ using device::PhongFormat;
 
 void note(PhongSceneStats& s, const std::string& what) {
   if (s.failures.size() < 8) s.failures.push_back(s.name + ": " + what);
-}
-
-template <class Model>
-void tick(Model& m) {
-  m.clk_i = 0;
-  m.eval();
-  m.clk_i = 1;
-  m.eval();
-  m.clk_i = 0;
-  m.eval();
 }
 
 // One form: f is the format the model was verilated with (its configuration's -G flags).

@@ -3,41 +3,16 @@
 // specular_axil: an AXI4-Lite slave (32-bit data) in front of the stream core. The CPU
 // writes a span descriptor into registers and pushes it into a span FIFO; the FIFO feeds
 // specular_axis (specular_stream with AXI4-Stream ports, rtl/axi/specular_axis.sv), whose pixels
-// leave on the AXI4-Stream master m_axis_px_*. The register map (offsets, fields, access,
-// reset values) and the port table are in docs/interfaces.md; this header is authoritative
-// where they differ.
+// leave on the AXI4-Stream master m_axis_px_*. The port table and the bus rules are in
+// docs/interfaces.md; this header is authoritative where they differ.
 //
-// Register map (byte offsets; 32-bit registers; address bits [1:0] are ignored; addresses
-// at or above 0x100 when AddrWidth > 8 are unmapped):
-//   0x00 ID          RO   0x5350_4543 ("SPEC")
-//   0x04 VERSION     RO   [31:16] major, [15:0] minor (1.0)
-//   0x08 IRQ_EN      RW   [0] BAD_N, [1] PUSH_FULL: irq_o follows ERR & IRQ_EN
-//   0x0C ERR         W1C  sticky: [0] BAD_N (a span with n = 0 or n > the last bank's
-//                         BankMaxN field, 1000, was pushed; it is still pushed and gives
-//                         len + 1 zero pixels), [1] PUSH_FULL (PUSH while the FIFO was
-//                         full; that span was dropped)
-//   0x10 STATUS      RO   [7:0] FIFO level, [8] FIFO full, [9] busy (a span in the FIFO or
-//                         a pixel owed by the core), [10] irq_o
-//   0x14 SPANS       RO   spans pushed into the FIFO, modulo 2^32
-//   0x18 PIXELS      RO   pixels transferred on m_axis_px, modulo 2^32
-//   0x20 SPAN_C      RW   [CBits-1:0]      C
-//   0x24 SPAN_PSI0   RW   [AngleBits-1:0]  psi0
-//   0x28 SPAN_DPSI   RW   [AngleBits-1:0]  dpsi
-//   0x2C SPAN_N      RW   [NBits-1:0]      n
-//   0x30 SPAN_LEN    RW   [LenBits-1:0]    l (the span has l + 1 pixels)
-//   0x34 SPAN_TAG    RW   [TagBits-1:0]    tag (m_axis_px_tuser of its pixels)
-//   0x38 PUSH        WO   a write with any WSTRB bit set pushes SPAN_* into the FIFO;
-//                         reads 0
-//   0x40 BUILD_CORE  RO   [7:0] Latency (span accepted by the core to pixel 0, clocks),
-//                         [15:8] FifoDepth, [23:16] TagBits, [24] CosInterp
-//   0x44 BUILD_ROM   RO   [7:0] NumBanks, [15:8] CosAddrBits (ROM 12 entries per bank =
-//                         2^CosAddrBits), [23:16] ROM 12 word bits
-//   0x48 BUILD_ROM_BITS RO  ROM 12 size in bits (NumBanks * 2^CosAddrBits * word bits)
-//   0x4C BUILD_FMT   RO   [7:0] CBits, [15:8] AngleBits, [23:16] NBits, [31:24] LenBits
-//   0x80 + 4 j       RO   BANK_MAX_N[j], j = 0..15: the largest n of bank j (BankMaxN
-//                         field j); 0 for j >= NumBanks
-// Unused bits of a register read 0 and ignore writes. Reset values 0 except ID, VERSION
-// and the BUILD_* / BANK_MAX_N constants.
+// Register map: written once, in rtl/axi/data/specular_axil.rdl (SystemRDL: offsets,
+// fields, access, reset values), from which scripts/regmap.py generates the constants this
+// module decodes with (specular_axil_reg_pkg, rtl/axi/specular_axil_reg_pkg.sv), the C
+// header of the tests and hosts, and the table of docs/interfaces.md#register-map. Byte
+// offsets; 32-bit registers; address bits [1:0] are ignored; the map's window is
+// 2^BlockAw bytes (0x00 .. 0xFF), addresses above it (AddrWidth > 8) are unmapped. Unused
+// bits of a register read 0 and ignore writes.
 //
 // AXI4-Lite rules kept here:
 //   - AW and W are accepted independently, in either order or in the same cycle, each into
@@ -49,7 +24,8 @@
 //   - bvalid/bresp and rvalid/rdata/rresp are registers and hold until their transfer;
 //     every ready is a register (awready, wready, arready depend on no input).
 //   - Responses: OKAY, or SLVERR for an unmapped address and for a write to a read-only
-//     register (no effect). A read of PUSH is OKAY and returns 0.
+//     register (no effect), as the map's access types say (specular_axil_reg_pkg's
+//     ReadableWords and WritableWords). A read of PUSH is OKAY and returns 0.
 //   - WSTRB: RW registers update only the byte lanes whose strobe is set; ERR clears only
 //     bits in strobed lanes; PUSH needs at least one strobe bit. A write with WSTRB = 0 is
 //     answered OKAY and changes nothing.
@@ -92,36 +68,18 @@ module specular_axil #(
   // ---------------------------------------------------------------------------------
   // Constants
   // ---------------------------------------------------------------------------------
-  localparam logic [31:0] IdValue      = 32'h5350_4543;  // "SPEC"
-  localparam logic [31:0] VersionValue = 32'h0001_0000;  // 1.0
-
-  // Register word indices (byte offset / 4)
-  localparam logic [5:0] RegId           = 6'h00;
-  localparam logic [5:0] RegVersion      = 6'h01;
-  localparam logic [5:0] RegIrqEn        = 6'h02;
-  localparam logic [5:0] RegErr          = 6'h03;
-  localparam logic [5:0] RegStatus       = 6'h04;
-  localparam logic [5:0] RegSpans        = 6'h05;
-  localparam logic [5:0] RegPixels       = 6'h06;
-  localparam logic [5:0] RegSpanC        = 6'h08;
-  localparam logic [5:0] RegSpanPsi0     = 6'h09;
-  localparam logic [5:0] RegSpanDpsi     = 6'h0a;
-  localparam logic [5:0] RegSpanN        = 6'h0b;
-  localparam logic [5:0] RegSpanLen      = 6'h0c;
-  localparam logic [5:0] RegSpanTag      = 6'h0d;
-  localparam logic [5:0] RegPush         = 6'h0e;
-  localparam logic [5:0] RegBuildCore    = 6'h10;
-  localparam logic [5:0] RegBuildRom     = 6'h11;
-  localparam logic [5:0] RegBuildRomBits = 6'h12;
-  localparam logic [5:0] RegBuildFmt     = 6'h13;
-  localparam logic [5:0] RegBankMaxN     = 6'h20;  // .. 6'h2f
+  // The register map's offsets, field positions, constants and access types are those of
+  // specular_axil_reg_pkg (generated from rtl/axi/data/specular_axil.rdl, see the header);
+  // MapAw is the width of the map's window.
+  localparam int MapAw = specular_axil_reg_pkg::BlockAw;
 
   localparam logic [1:0] RespOkay   = 2'b00;
   localparam logic [1:0] RespSlverr = 2'b10;
 
-  localparam int ErrBits   = 2;  // [0] BAD_N, [1] PUSH_FULL
-  localparam int ErrBadN   = 0;
-  localparam int ErrFull   = 1;
+  // ERR and IRQ_EN have the same fields, BAD_N and PUSH_FULL, from bit 0 up.
+  localparam int ErrBits = 2;
+  localparam int ErrBadN = specular_axil_reg_pkg::ErrBadNLsb;
+  localparam int ErrFull = specular_axil_reg_pkg::ErrPushFullLsb;
 
   // Build information: the core's latency (specular_pkg, docs/pipeline.md#stage-counts); the
   // testbench checks it against the latency it observes.
@@ -141,8 +99,13 @@ module specular_axil #(
 
   localparam logic [NBits-1:0] NMax = BankMaxN[NumBanks*NBits-1 -: NBits];
 
-  if (AddrWidth < 8) begin : gen_addr_check
+  if (AddrWidth < MapAw) begin : gen_addr_check
     `SPEC_PARAM_ERROR("specular_axil: AddrWidth must be >= 8 (the register map spans 0x00 .. 0xBC)")
+  end
+  if (ErrBadN != specular_axil_reg_pkg::IrqEnBadNLsb ||
+      ErrFull != specular_axil_reg_pkg::IrqEnPushFullLsb ||
+      ErrBits != specular_axil_reg_pkg::ErrPushFullLsb + 1) begin : gen_err_check
+    `SPEC_PARAM_ERROR("specular_axil: ERR and IRQ_EN must hold BAD_N and PUSH_FULL in bits 0 and 1")
   end
   if (FifoDepth < 1 || FifoDepth > 255) begin : gen_fifo_check
     `SPEC_PARAM_ERROR("specular_axil: FifoDepth must be 1 .. 255")
@@ -150,7 +113,7 @@ module specular_axil #(
   if (CBits > 32 || AngleBits > 32 || NBits > 32 || LenBits > 32 || TagBits > 32) begin : gen_width_check
     `SPEC_PARAM_ERROR("specular_axil: CBits, AngleBits, NBits, LenBits and TagBits must be <= 32")
   end
-  if (NumBanks > 16) begin : gen_banks_check
+  if (NumBanks > specular_axil_reg_pkg::BankMaxNCount) begin : gen_banks_check
     `SPEC_PARAM_ERROR("specular_axil: BANK_MAX_N shows at most 16 banks")
   end
   if (Latency > 255) begin : gen_latency_check
@@ -206,7 +169,7 @@ module specular_axil #(
   logic                 bvalid_q, bvalid_d;
   logic [1:0]           bresp_q, bresp_d;
   logic                 aw_fire, w_fire, do_write;
-  logic [5:0]           wr_word;
+  logic [MapAw-1:0]     wr_offset;  // byte offset of the word written, in the window
   logic                 wr_in_window;
 
   assign s_axil_awready = ~aw_full_q & ~bvalid_q;
@@ -214,8 +177,8 @@ module specular_axil #(
   assign aw_fire        = s_axil_awvalid & s_axil_awready;
   assign w_fire         = s_axil_wvalid & s_axil_wready;
   assign do_write       = aw_full_q & w_full_q & ~bvalid_q;
-  assign wr_word        = awaddr_q[7:2];
-  assign wr_in_window   = (awaddr_q >> 8) == '0;
+  assign wr_offset      = {awaddr_q[MapAw-1:2], 2'b00};
+  assign wr_in_window   = (awaddr_q >> MapAw) == '0;
 
   always_comb begin
     aw_full_d = aw_full_q;
@@ -243,9 +206,9 @@ module specular_axil #(
       bvalid_d  = 1'b1;
       bresp_d   = RespSlverr;
       if (wr_in_window) begin
-        unique case (wr_word)
-          RegIrqEn, RegErr, RegSpanC, RegSpanPsi0, RegSpanDpsi, RegSpanN, RegSpanLen,
-          RegSpanTag, RegPush: bresp_d = RespOkay;
+        // The map's words with a writable field (RW, W1C, WO).
+        unique case (specular_axil_reg_pkg::WritableWords[wr_offset[MapAw-1:2]])
+          1'b1:    bresp_d = RespOkay;
           default: bresp_d = RespSlverr;  // read-only or unmapped
         endcase
       end
@@ -260,15 +223,15 @@ module specular_axil #(
   assign wr_okay = do_write && wr_in_window;
 
   always_comb begin
-    unique case (wr_word)
-      RegIrqEn:    wr_old = 32'(irq_en_q);
-      RegSpanC:    wr_old = 32'(span_c_q);
-      RegSpanPsi0: wr_old = 32'(span_psi0_q);
-      RegSpanDpsi: wr_old = 32'(span_dpsi_q);
-      RegSpanN:    wr_old = 32'(span_n_q);
-      RegSpanLen:  wr_old = 32'(span_len_q);
-      RegSpanTag:  wr_old = 32'(span_tag_q);
-      default:     wr_old = '0;
+    unique case (wr_offset)
+      specular_axil_reg_pkg::IrqEnOffset:    wr_old = 32'(irq_en_q);
+      specular_axil_reg_pkg::SpanCOffset:    wr_old = 32'(span_c_q);
+      specular_axil_reg_pkg::SpanPsi0Offset: wr_old = 32'(span_psi0_q);
+      specular_axil_reg_pkg::SpanDpsiOffset: wr_old = 32'(span_dpsi_q);
+      specular_axil_reg_pkg::SpanNOffset:    wr_old = 32'(span_n_q);
+      specular_axil_reg_pkg::SpanLenOffset:  wr_old = 32'(span_len_q);
+      specular_axil_reg_pkg::SpanTagOffset:  wr_old = 32'(span_tag_q);
+      default:                               wr_old = '0;
     endcase
   end
   assign wr_merged = strb_merge(wr_old, wdata_q, wstrb_q);
@@ -276,11 +239,13 @@ module specular_axil #(
   logic [ErrBits-1:0] err_clear;
   logic               push_req, bad_n;
 
-  assign push_req  = wr_okay && (wr_word == RegPush) && (wstrb_q != 4'b0000);
+  assign push_req  = wr_okay && (wr_offset == specular_axil_reg_pkg::PushOffset) &&
+                     (wstrb_q != 4'b0000);
   assign push      = push_req && !fifo_full;
   assign bad_n     = (span_n_q == '0) || (span_n_q > NMax);
   // The error bits sit in byte lane 0.
-  assign err_clear = (wr_okay && wr_word == RegErr && wstrb_q[0]) ? wdata_q[ErrBits-1:0] : '0;
+  assign err_clear = (wr_okay && wr_offset == specular_axil_reg_pkg::ErrOffset && wstrb_q[0]) ?
+                     wdata_q[ErrBits-1:0] : '0;
 
   always_comb begin
     irq_en_d    = irq_en_q;
@@ -291,14 +256,14 @@ module specular_axil #(
     span_len_d  = span_len_q;
     span_tag_d  = span_tag_q;
     if (wr_okay) begin
-      unique case (wr_word)
-        RegIrqEn:    irq_en_d    = wr_merged[ErrBits-1:0];
-        RegSpanC:    span_c_d    = wr_merged[CBits-1:0];
-        RegSpanPsi0: span_psi0_d = wr_merged[AngleBits-1:0];
-        RegSpanDpsi: span_dpsi_d = wr_merged[AngleBits-1:0];
-        RegSpanN:    span_n_d    = wr_merged[NBits-1:0];
-        RegSpanLen:  span_len_d  = wr_merged[LenBits-1:0];
-        RegSpanTag:  span_tag_d  = wr_merged[TagBits-1:0];
+      unique case (wr_offset)
+        specular_axil_reg_pkg::IrqEnOffset:    irq_en_d    = wr_merged[ErrBits-1:0];
+        specular_axil_reg_pkg::SpanCOffset:    span_c_d    = wr_merged[CBits-1:0];
+        specular_axil_reg_pkg::SpanPsi0Offset: span_psi0_d = wr_merged[AngleBits-1:0];
+        specular_axil_reg_pkg::SpanDpsiOffset: span_dpsi_d = wr_merged[AngleBits-1:0];
+        specular_axil_reg_pkg::SpanNOffset:    span_n_d    = wr_merged[NBits-1:0];
+        specular_axil_reg_pkg::SpanLenOffset:  span_len_d  = wr_merged[LenBits-1:0];
+        specular_axil_reg_pkg::SpanTagOffset:  span_tag_d  = wr_merged[TagBits-1:0];
         default: ;
       endcase
     end
@@ -316,50 +281,58 @@ module specular_axil #(
   // ---------------------------------------------------------------------------------
   // Read channel: AR, the register read, R
   // ---------------------------------------------------------------------------------
-  logic        rvalid_q, rvalid_d;
-  logic [31:0] rdata_q, rdata_d, rd_value;
-  logic [1:0]  rresp_q, rresp_d;
-  logic        ar_fire, rd_err;
-  logic [5:0]  rd_word;
+  logic             rvalid_q, rvalid_d;
+  logic [31:0]      rdata_q, rdata_d, rd_value;
+  logic [1:0]       rresp_q, rresp_d;
+  logic             ar_fire, rd_err;
+  logic [MapAw-1:0] rd_offset;  // byte offset of the word read, in the window
 
   assign s_axil_arready = ~rvalid_q;
   assign ar_fire        = s_axil_arvalid & s_axil_arready;
-  assign rd_word        = s_axil_araddr[7:2];
+  assign rd_offset      = {s_axil_araddr[MapAw-1:2], 2'b00};
 
+  // A read answers SLVERR outside the map's words and above its window, with 0 (as every
+  // unused bit of a register).
   always_comb begin
     rd_value = '0;
-    rd_err   = 1'b0;
-    unique case (rd_word)
-      RegId:           rd_value = IdValue;
-      RegVersion:      rd_value = VersionValue;
-      RegIrqEn:        rd_value = 32'(irq_en_q);
-      RegErr:          rd_value = 32'(err_q);
-      RegStatus:       rd_value = {21'b0, irq_q, busy, level_shown == LevelBits'(FifoDepth), 8'(level_shown)};
-      RegSpans:        rd_value = spans_q;
-      RegPixels:       rd_value = pixels_q;
-      RegSpanC:        rd_value = 32'(span_c_q);
-      RegSpanPsi0:     rd_value = 32'(span_psi0_q);
-      RegSpanDpsi:     rd_value = 32'(span_dpsi_q);
-      RegSpanN:        rd_value = 32'(span_n_q);
-      RegSpanLen:      rd_value = 32'(span_len_q);
-      RegSpanTag:      rd_value = 32'(span_tag_q);
-      RegPush:         rd_value = '0;
-      RegBuildCore:    rd_value = {7'b0, CosInterp, 8'(TagBits), 8'(FifoDepth), 8'(Latency)};
-      RegBuildRom:     rd_value = {8'b0, 8'(CosWordBits), 8'(CosAddrBits), 8'(NumBanks)};
-      RegBuildRomBits: rd_value = 32'(RomBits);
-      RegBuildFmt:     rd_value = {8'(LenBits), 8'(NBits), 8'(AngleBits), 8'(CBits)};
+    rd_err   = !specular_axil_reg_pkg::ReadableWords[rd_offset[MapAw-1:2]];
+    unique case (rd_offset)
+      specular_axil_reg_pkg::IdOffset:       rd_value = specular_axil_reg_pkg::IdReset;
+      specular_axil_reg_pkg::VersionOffset:  rd_value = specular_axil_reg_pkg::VersionReset;
+      specular_axil_reg_pkg::IrqEnOffset:    rd_value = 32'(irq_en_q);
+      specular_axil_reg_pkg::ErrOffset:      rd_value = 32'(err_q);
+      specular_axil_reg_pkg::StatusOffset:
+        rd_value = specular_axil_reg_pkg::status_value(8'(level_shown),
+                                                       level_shown == LevelBits'(FifoDepth),
+                                                       busy, irq_q);
+      specular_axil_reg_pkg::SpansOffset:    rd_value = spans_q;
+      specular_axil_reg_pkg::PixelsOffset:   rd_value = pixels_q;
+      specular_axil_reg_pkg::SpanCOffset:    rd_value = 32'(span_c_q);
+      specular_axil_reg_pkg::SpanPsi0Offset: rd_value = 32'(span_psi0_q);
+      specular_axil_reg_pkg::SpanDpsiOffset: rd_value = 32'(span_dpsi_q);
+      specular_axil_reg_pkg::SpanNOffset:    rd_value = 32'(span_n_q);
+      specular_axil_reg_pkg::SpanLenOffset:  rd_value = 32'(span_len_q);
+      specular_axil_reg_pkg::SpanTagOffset:  rd_value = 32'(span_tag_q);
+      specular_axil_reg_pkg::BuildCoreOffset:
+        rd_value = specular_axil_reg_pkg::build_core_value(8'(Latency), 8'(FifoDepth),
+                                                           8'(TagBits), CosInterp);
+      specular_axil_reg_pkg::BuildRomOffset:
+        rd_value = specular_axil_reg_pkg::build_rom_value(8'(NumBanks), 8'(CosAddrBits),
+                                                          8'(CosWordBits));
+      specular_axil_reg_pkg::BuildRomBitsOffset: rd_value = 32'(RomBits);
+      specular_axil_reg_pkg::BuildFmtOffset:
+        rd_value = specular_axil_reg_pkg::build_fmt_value(8'(CBits), 8'(AngleBits), 8'(NBits),
+                                                          8'(LenBits));
       default: begin
-        if (rd_word[5:4] == RegBankMaxN[5:4]) begin
-          // BANK_MAX_N[j]: 0 beyond the last bank
-          for (int j = 0; j < NumBanks; j++) begin
-            if (rd_word[3:0] == 4'(j)) rd_value = 32'(BankMaxN[j*NBits +: NBits]);
+        // BANK_MAX_N[j]: field j of BankMaxN, 0 beyond the last bank
+        for (int j = 0; j < NumBanks; j++) begin
+          if (rd_offset == specular_axil_reg_pkg::BankMaxNOffset + MapAw'(4 * j)) begin
+            rd_value = 32'(BankMaxN[j*NBits +: NBits]);
           end
-        end else begin
-          rd_err = 1'b1;
         end
       end
     endcase
-    if ((s_axil_araddr >> 8) != '0) begin
+    if ((s_axil_araddr >> MapAw) != '0) begin
       rd_value = '0;
       rd_err   = 1'b1;
     end

@@ -1,11 +1,24 @@
 // SPDX-License-Identifier: Apache-2.0
 //
-// rtl/core/core.f: the device core, patent UA 71489 blocks 1-14 (docs/device.md), specular_stream and specular_unit.
-// Format and use: rtl/README.md#filelists.
+// rtl/core/core.f: the device core, patent UA 71489 blocks 1-14 (docs/device.md),
+// specular_stream and specular_unit.
+//
+// Generated from rtl/core/core.manifest by `make filelists` (scripts/rtl_filelist.py): edit the
+// manifest, not this file. Flat: each include directory and source once, in compile order,
+// paths relative to the repository root; run the tools from the root (rtl/README.md#filelists):
+//   verilator --lint-only -Wall -f rtl/core/core.f --top-module specular_stream
+//   iverilog -g2012 -c rtl/core/core.f -s TOP   (which IPs Icarus 11 elaborates: rtl/README.md#filelists)
 
--f rtl/prim/prim.f
++incdir+rtl/prim
 +incdir+rtl/core
-// patent blocks 1-14
+// rtl/prim/prim.manifest
+rtl/prim/specular_pkg.sv
+rtl/prim/specular_delay.sv
+rtl/prim/specular_mul_tile.sv
+rtl/prim/specular_pipe_mul.sv
+rtl/prim/specular_rom.sv
+rtl/prim/specular_out_buf.sv
+// rtl/core/core.manifest
 rtl/core/specular_reg.sv
 rtl/core/specular_down_counter.sv
 rtl/core/specular_accumulator.sv
@@ -15,6 +28,5 @@ rtl/core/specular_angle_mul.sv
 rtl/core/specular_cos_k_rom.sv
 rtl/core/specular_intensity_mul.sv
 rtl/core/specular_control.sv
-// top levels: the streaming core, the register interface
 rtl/core/specular_stream.sv
 rtl/core/specular_unit.sv

@@ -5,9 +5,8 @@
 // rst_ni, sdi_i, load_i, xor_o) around one top level of the core, chosen by Top (0 unit,
 // 1 stream, 2 axil; 3 phong: phong_stream, the per-pixel Blinn-Phong competitor of
 // docs/phong_hw.md; 4 setup: specular_setup, the scanline setup in hardware, and 5 system:
-// specular_system, setup then stream, docs/setup_hw.md; 7 setup_lean: specular_setup_lean,
-// the lean setup, docs/setup_hw.md#the-lean-datapath, in Top 4's place). See
-// fpga_ooc_io.sv for the pins and rtl/fpga/README.md for the flow (scripts/fpga.sh). Not
+// specular_system, setup then stream, docs/setup_hw.md; 6 mul: specular_pipe_mul alone). See
+// fpga_ooc_io.sv for the pins and rtl/fpga/README.md for the flow (scripts/fpga.py). Not
 // part of the device.
 //
 // Input word (InBits bits, shifted in msb first, applied on load_i), from the msb down;
@@ -22,7 +21,7 @@
 //   phong   geo_valid, n1, n2, h1, he [3*VecBits each], n[NBits], len[LenBits],
 //           scale[CBits], tag[TagBits], px_ready
 //   setup   geo_valid, n1, n2, h1, he [3*VecBits each], n[NBits], len[LenBits],
-//           scale[CBits], tag[TagBits], span_ready (setup_lean the same)
+//           scale[CBits], tag[TagBits], span_ready
 //   system  as phong (the last bit px_ready)
 //   mul     a[MulBits], b[MulBits]: specular_pipe_mul alone (6 mul; the flow's smoke test)
 // Output parity, over:
@@ -32,14 +31,14 @@
 //           m_axis_px_tdata, m_axis_px_tvalid, m_axis_px_tlast, m_axis_px_tuser, irq_o
 //   phong   geo_ready_o, px_valid_o, px_intensity_o, px_last_o, px_tag_o
 //   setup   geo_ready_o, span_valid_o, span_c_o, span_psi0_o, span_dpsi_o, span_n_o,
-//           span_len_o, span_tag_o, span_status_o (setup_lean the same)
+//           span_len_o, span_tag_o, span_status_o
 //   system  as phong
 //   mul     p_o of specular_pipe_mul
 //
 // Parameters: the interface widths are passed through to the core (TagBits to the stream
 // and the AXI4-Lite core, AddrWidth to the latter only; specular_axil's registers are 32
 // bits wide whatever AngleBits, NBits and LenBits). Every other core parameter (ROM files,
-// CosAddrBits, ...) keeps the core's own default unless scripts/fpga.sh sets it on the
+// CosAddrBits, ...) keeps the core's own default unless scripts/fpga.py sets it on the
 // core module by name (chparam), so a changed default in rtl/ is never shadowed by a stale
 // copy here.
 
@@ -51,7 +50,7 @@
 module fpga_ooc #(
   parameter int Top       = 1,   // the core: 0 specular_unit, 1 specular_stream, 2 specular_axil,
                                  // 3 phong_stream, 4 specular_setup, 5 specular_system,
-                                 // 6 specular_pipe_mul, 7 specular_setup_lean
+                                 // 6 specular_pipe_mul
   parameter int CBits     = 16,
   parameter int AngleBits = 32,
   parameter int NBits     = 10,
@@ -75,20 +74,18 @@ module fpga_ooc #(
   localparam int TopSetup  = 4;
   localparam int TopSystem = 5;
   localparam int TopMul    = 6;  // specular_pipe_mul alone: the smallest block, for the flow's smoke test
-  localparam int TopLean   = 7;  // specular_setup_lean: the ports of specular_setup
-  localparam bit AnySetup  = Top == TopSetup || Top == TopLean;
 
   localparam int PxBits  = ((CBits + 7) / 8) * 8;   // AXI4-Stream TDATA: whole bytes
   localparam int InBits  = (Top == TopUnit)   ? 5 + CBits + 2 * AngleBits + NBits + LenBits + 1
                          : (Top == TopStream) ? 2 + CBits + 2 * AngleBits + NBits + LenBits + TagBits
-                         : (Top == TopPhong || AnySetup || Top == TopSystem)
+                         : (Top == TopPhong || Top == TopSetup || Top == TopSystem)
                                               ? 2 + `SPECULAR_GEO_DATA_BITS
                          : (Top == TopMul)    ? 2 * MulBits
                          :                     2 * AddrWidth + 48;
   localparam int OutBits = (Top == TopUnit)   ? CBits + 2
                          : (Top == TopStream || Top == TopPhong || Top == TopSystem)
                                               ? 3 + CBits + TagBits
-                         : AnySetup           ? 2 + CBits + 2 * AngleBits + NBits + LenBits + TagBits + 3
+                         : (Top == TopSetup)  ? 2 + CBits + 2 * AngleBits + NBits + LenBits + TagBits + 3
                          : (Top == TopMul)    ? 2 * MulBits
                          :                     41 + PxBits + 3 + TagBits;
 
@@ -198,7 +195,7 @@ module fpga_ooc #(
       `SPECULAR_AXIS_PX_MAP(px_),
       .irq_o            (irq)
     );
-  end else if (Top == TopPhong || AnySetup || Top == TopSystem) begin : gen_geo
+  end else if (Top == TopPhong || Top == TopSetup || Top == TopSystem) begin : gen_geo
     // The geometry span side (rtl/prim/specular_geo_ports.svh), then the ready of the
     // core's output side (px_ready or span_ready).
     logic                 geo_valid, geo_ready, out_ready;
@@ -210,7 +207,7 @@ module fpga_ooc #(
 
     assign {geo_valid, `SPECULAR_GEO_DATA(geo_, ), out_ready} = core_in;
 
-    if (AnySetup) begin : gen_setup
+    if (Top == TopSetup) begin : gen_setup
       logic                 span_valid;
       logic [NBits-1:0]     span_n;
       logic [LenBits-1:0]   span_len;
@@ -224,44 +221,25 @@ module fpga_ooc #(
 
       // specular_setup's register widths are fixed (C 16, angles 32, n 10, l 11): with other
       // CBits, AngleBits, NBits or LenBits the port widths differ and elaboration says so.
-      // specular_setup_lean has the same ports.
-      if (Top == TopSetup) begin : gen_fixed
-        specular_setup #(
-          .VecBits (VecBits),
-          .TagBits (TagBits)
-        ) u_core (
-          .clk_i         (clk_i),
-          .rst_ni        (core_rst_n),
-          `SPECULAR_GEO_MAP(geo_, , ),
-          .span_valid_o  (span_valid),
-          .span_ready_i  (out_ready),
-          .span_c_o      (span_c),
-          .span_psi0_o   (span_psi0),
-          .span_dpsi_o   (span_dpsi),
-          .span_n_o      (span_n),
-          .span_len_o    (span_len),
-          .span_tag_o    (span_tag),
-          .span_status_o (span_status)
-        );
-      end else begin : gen_lean
-        specular_setup_lean #(
-          .VecBits (VecBits),
-          .TagBits (TagBits)
-        ) u_core (
-          .clk_i         (clk_i),
-          .rst_ni        (core_rst_n),
-          `SPECULAR_GEO_MAP(geo_, , ),
-          .span_valid_o  (span_valid),
-          .span_ready_i  (out_ready),
-          .span_c_o      (span_c),
-          .span_psi0_o   (span_psi0),
-          .span_dpsi_o   (span_dpsi),
-          .span_n_o      (span_n),
-          .span_len_o    (span_len),
-          .span_tag_o    (span_tag),
-          .span_status_o (span_status)
-        );
-      end
+      // Its other parameters (TileBits, SetupII, the ROM files) keep their defaults unless the
+      // flow sets them by name (chparam).
+      specular_setup #(
+        .VecBits (VecBits),
+        .TagBits (TagBits)
+      ) u_core (
+        .clk_i         (clk_i),
+        .rst_ni        (core_rst_n),
+        `SPECULAR_GEO_MAP(geo_, , ),
+        .span_valid_o  (span_valid),
+        .span_ready_i  (out_ready),
+        .span_c_o      (span_c),
+        .span_psi0_o   (span_psi0),
+        .span_dpsi_o   (span_dpsi),
+        .span_n_o      (span_n),
+        .span_len_o    (span_len),
+        .span_tag_o    (span_tag),
+        .span_status_o (span_status)
+      );
     end else begin : gen_px
       logic               px_valid, px_ready, px_last;
       logic [CBits-1:0]   px_intensity;
@@ -326,7 +304,7 @@ module fpga_ooc #(
       .p_o   (core_out)
     );
   end else begin : gen_top_check
-    `SPEC_PARAM_ERROR("fpga_ooc: Top must be 0 (unit), 1 (stream), 2 (axil), 3 (phong), 4 (setup), 5 (system), 6 (mul) or 7 (setup_lean)")
+    `SPEC_PARAM_ERROR("fpga_ooc: Top must be 0 (unit), 1 (stream), 2 (axil), 3 (phong), 4 (setup), 5 (system) or 6 (mul)")
   end
 
 endmodule

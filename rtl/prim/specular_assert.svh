@@ -4,7 +4,7 @@
 // states its own invariants with them; the macro picks what the tool at hand supports:
 //
 //   SYNTHESIS defined   nothing. Yosys defines it implicitly (scripts/synth.sh,
-//                       scripts/fpga.sh) and scripts/formal.sh passes -DSYNTHESIS: the
+//                       scripts/fpga.py) and scripts/formal.sh passes -DSYNTHESIS: the
 //                       formal proof has its own properties (docs/formal.md).
 //   __ICARUS__ defined  an immediate assertion in `always @(posedge clk)` (Icarus 11 has
 //                       no concurrent assertions): checked at the same edges, on the

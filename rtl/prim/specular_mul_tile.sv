@@ -6,7 +6,7 @@
 // complement. No reset: a tile carries data only.
 //
 // The registers are the DSP's own (docs/pipeline.md#multiplier-styles): with
-// SPECULAR_ECP5_MULT18X18D defined (scripts/fpga.sh defines it for its ECP5 runs) the tile is
+// SPECULAR_ECP5_MULT18X18D defined (scripts/fpga.py defines it for its ECP5 runs) the tile is
 // a MULT18X18D with its input A, input B and output registers on CLK0 / CE0, so no route
 // between a fabric register and the multiplier is on a path; otherwise the same behaviour in
 // fabric registers and a `*` (simulation, the UP5K's SB_MAC16 and Yosys' generic mapping).

@@ -2,7 +2,7 @@
 // Copyright (c) the specular_device authors.
 //
 // specular_setup_exp2: C = scale 2^e, rounded to a code and saturated at the top of
-// register 1, pipelined, one value per clock (docs/setup_hw.md#datapath, step 7; the
+// register 1, pipelined, one value per clock (docs/setup_hw.md#the-datapath, step 7; the
 // golden model is host::fixed::scale_exp2 in model/host/setup_fixed.hpp). e is Q30;
 // e = ei + f, ei = floor(e); a 1024-word table gives 2^(j/1024) for the top 10 bits j of f,
 // and 2^g = 1 + g (E1 + g (E2 + g E3)) the rest g < 2^-10.

@@ -2,7 +2,7 @@
 // Copyright (c) the specular_device authors.
 //
 // specular_setup_log2: log2 of a positive Q44 value (UnitFrac), Q30 (LogFrac), pipelined, one
-// value per clock (docs/setup_hw.md#datapath, step 7; the golden model is
+// value per clock (docs/setup_hw.md#the-datapath, step 7; the golden model is
 // host::fixed::log2_unit in model/host/setup_fixed.hpp). a = 2^(p-44) mant, mant in [1, 2); a 1024-word table pair
 // gives a 12-bit reciprocal r_i of the interval of mant and -log2 r_i; e = mant r_i - 1,
 // |e| < 2^-10, and log2(1 + e) = e (L1 + e (L2 + e L3)).

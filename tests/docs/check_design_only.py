@@ -3,9 +3,11 @@
 """The pages of docs/ are design documents: what, why, the contracts, the error analyses and the
 alternatives rejected (docs/README.md). The figures a run measured, with the commit, date and
 machine of the run, are on one page, docs/results.md, generated from the JSON of the runs
-(scripts/results_page.py). This check fails when a page of docs/ other than docs/results.md reads
-like a run diary: it names the machine or its load, CPU or wall-clock seconds of a build or a
-test, before/after or trial rows, or the session a figure was measured in.
+(scripts/results_page.py), and history is in git. This check fails when a page of docs/ other
+than docs/results.md reads like a run diary or a history: it names the machine or its load, CPU
+or wall-clock seconds of a build or a test, before/after or trial rows, the session a figure was
+measured in, a commit of the history (but the one line citing a superseded design,
+"superseded: commit HASH"), or what the design no longer is.
 
     check_design_only.py ROOT [--exclude PAGE ...]   (PAGE relative to ROOT)
     check_design_only.py --self-test
@@ -44,6 +46,11 @@ PHRASES = [
     (r"\(before\)", "a before/after column"),
     (r"\bin one session\b|\bthe session's\b", "the session of a run"),
     (r"\btoday(?:'s)?\b", "the date of a run"),
+    # History belongs to git: a page describes what is built, not what it was before.
+    (r"(?<!superseded: )\bcommits? `?[0-9a-f]{7,40}\b", "a commit of the history (the one citing line of a "
+                                                         "superseded design reads 'superseded: commit HASH')"),
+    (r"\bno longer\b|\bused to be\b|\bpreviously\b|\bformerly\b|\bat the time\b", "history"),
+    (r"\b(?:was|were) (?:then )?(?:replaced|taken out|reverted)\b", "history"),
 ]
 
 
@@ -77,7 +84,8 @@ def self_test():
     try:
         os.makedirs(os.path.join(tmp, "docs", "measured"))
         clean = ("# A design page\n\nThe table of 9 address bits errs 0.3 % ([results](results.md#x)); the "
-                 "shared ROM serves both banks. Registers are written while idle.\n")
+                 "shared ROM serves both banks. Registers are written while idle. Rejected: the old design (the "
+                 "Q44 setup, superseded: commit b49e795).\n")
 
         def write(rel, text):
             with open(os.path.join(tmp, rel), "w") as f:
@@ -93,7 +101,9 @@ def self_test():
             failures.append("a phrase in a page not excluded is not caught (docs/formal.md)")
         planted = ["measured on this machine", "the machine shared with another job", "56.4 CPU s",
                    "the wall time of a run", "48 seconds on two cores", "| `Q36` trial | 5,873 |",
-                   "Before: 51.1", "| value (before) |", "14 min 18 s", "a fresh clone took", "measured the same way today"]
+                   "Before: 51.1", "| value (before) |", "14 min 18 s", "a fresh clone took", "measured the same way today",
+                   "built in commit `ac63d59`", "the span slice is no longer needed", "the loop was replaced by a tree",
+                   "the counter previously took a stage"]
         for phrase in planted:
             write("docs/measured/README.md", clean + "\n" + phrase + "\n")
             errs = check(tmp, {"docs/formal.md"})

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: Apache-2.0
-"""scripts/fpga_record.py (fpga.sh --record) and the committed docs/fpga_figures.json.
+"""scripts/fpga_record.py (fpga.py --record) and the committed docs/fpga_figures.json.
 
 1. The committed file: every entry names its core, part, RTL commit, date, tools and
    synthesis command (the FPGA-flow contract of rtl/fpga/README.md#measured), no entry was

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: Apache-2.0
-"""scripts/fpga_parts.py: which LFE5U fpga.sh records (smallest_lfe5u, Yosys' counts as they are)
+"""scripts/fpga_parts.py: which LFE5U fpga.py records (smallest_lfe5u, Yosys' counts as they are)
 and which it places on (place_lfe5u, PLACE_MARGIN on LUT4 positions and flip-flops), on counts
 placed by hand against the data-sheet capacities (LFE5U-45F: 43,848 LUT4 positions, 72
 MULT18X18D, 108 DP16KD; LFE5U-85F: 83,640, 156, 208). Exit 0 when all agree, 1 otherwise."""
@@ -11,7 +11,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__)
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 import fpga_parts  # noqa: E402
 
-PARTS = list(fpga_parts.ECP5_DEVICES.values())  # fpga.sh's candidates: 25F, 45F, 85F
+PARTS = list(fpga_parts.ECP5_DEVICES.values())  # fpga.py's candidates: 25F, 45F, 85F
 CASES = [
     # (LUT4 positions, FF, MULT18X18D, DP16KD), smallest holding, placed on
     ((42939, 33999, 17, 29), "LFE5U-45F", "LFE5U-85F"),  # 98 % of the 45F: no room to pack

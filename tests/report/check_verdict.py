@@ -118,19 +118,38 @@ e = verdict.ecp5_entry({"ecp5_runs": [dict(placed_old, synthesis=syn_new["synthe
                         "synthesis_runs": [syn_new]}, "specular_system")
 check(e["lut4"] == 4 and e["placed"], "a placed run over synthesis counts of the same flow")
 
-# The current flow is the one scripts/fpga.sh runs on the ECP5: its synthesis command there and
-# the define of its DSP tiles.
-with open(os.path.join(ROOT, "scripts", "fpga.sh")) as f:
-    fpga_sh = f.read().splitlines()
-ecp5_synth = [line for line in fpga_sh if 'ecp5*)' in line and "synth=" in line]
-tile_define = [line for line in fpga_sh if line.startswith("ecp5_tile_define=")]
+# The current flow is the one scripts/fpga.py runs on the ECP5: its synthesis command there
+# (ECP5_SYNTH) and the define of its DSP tiles (ECP5_TILE_DEFINE).
+import re  # noqa: E402
+with open(os.path.join(ROOT, "scripts", "fpga.py")) as f:
+    fpga_py = f.read()
+ecp5_synth = re.findall(r'^ECP5_SYNTH = "([^"]*)"', fpga_py, re.M)
+tile_define = re.findall(r'^ECP5_TILE_DEFINE = "([^"]*)"', fpga_py, re.M)
 flow_synth, flow_define = [m for m in verdict.CURRENT_FLOW if m.startswith("synth_")], \
                           [m for m in verdict.CURRENT_FLOW if m.startswith("-D")]
-check(len(ecp5_synth) == 1 and len(flow_synth) == 1 and flow_synth[0] in ecp5_synth[0],
-      f"verdict.CURRENT_FLOW {verdict.CURRENT_FLOW!r} is not fpga.sh's ECP5 synthesis: {ecp5_synth}")
-check(len(tile_define) == 1 and len(flow_define) == 1
-      and tile_define[0] == f'ecp5_tile_define="{flow_define[0][2:]}"',
-      f"verdict.CURRENT_FLOW {verdict.CURRENT_FLOW!r} does not name fpga.sh's tile define: {tile_define}")
+check(len(ecp5_synth) == 1 and flow_synth == ecp5_synth,
+      f"verdict.CURRENT_FLOW {verdict.CURRENT_FLOW!r} is not scripts/fpga.py's ECP5_SYNTH: {ecp5_synth}")
+check(len(tile_define) == 1 and flow_define == ["-D" + tile_define[0]],
+      f"verdict.CURRENT_FLOW {verdict.CURRENT_FLOW!r} does not name scripts/fpga.py's ECP5_TILE_DEFINE: {tile_define}")
+
+# The plots' number labels: points at one place (the systems per SetupII share an error) get labels
+# whose boxes do not overlap, and a lone point the first offset.
+offs = verdict.label_offsets([(100.0, 100.0)] * 5 + [(400.0, 50.0)])
+boxes = [(100 + dx, 100 + dy) for dx, dy in offs[:5]]
+check(all(abs(a[0] - b[0]) >= 16 or abs(a[1] - b[1]) >= 11 for i, a in enumerate(boxes) for b in boxes[i + 1:]),
+      f"the labels of five points at one place overlap: {offs[:5]}")
+check(offs[5] == offs[0], f"a lone point takes the first offset: {offs}")
+try:
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    import tempfile
+    with tempfile.TemporaryDirectory() as tmp:
+        written = verdict.plot(pts, tmp, plt)
+        check([os.path.basename(w) for w in written] == ["verdict_b1.png", "verdict_b2.png", "verdict_b3.png"]
+              and all(os.path.getsize(w) > 0 for w in written), f"verdict.plot wrote {written}")
+except ImportError:
+    failures.append("matplotlib is missing for /usr/bin/python3 (python3-matplotlib): the plots are not checked")
 
 # The committed record: the section is written for every budget and span length.
 with open(os.path.join(ROOT, "docs", "fpga_figures.json")) as f:

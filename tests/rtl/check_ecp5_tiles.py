@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 # SPDX-License-Identifier: Apache-2.0
-"""ctest fpga_ecp5_tiles: the netlist of an ECP5 run of scripts/fpga.sh (its Yosys JSON) has its
+"""ctest fpga_ecp5_tiles: the netlist of an ECP5 run of scripts/fpga.py (its Yosys JSON) has its
 DSP tiles as rtl/prim/specular_mul_tile.sv makes them under SPECULAR_ECP5_MULT18X18D: at least
 one MULT18X18D, and every one with its input A, input B and output registers on CLK0 (clock
 enable CE0) and no pipeline register. Exit 1 naming the first cell that is not.

@@ -1,34 +1,13 @@
 // SPDX-License-Identifier: Apache-2.0
-// Small helpers shared by the RTL block tests: clocking and reset of a Verilator model.
-//
-// Cycle convention used by every test: in "cycle c" the test sets the inputs, calls
-// eval() and reads the outputs (state after the edge that ended cycle c-1, plus the
-// combinational response to the inputs), then tick() applies the rising edge that ends
-// cycle c.
+// The RTL block tests' clocking and reset of a Verilator model: the regression's
+// (sim/clocking.hpp, its cycle convention), under the tests' namespace.
 #pragma once
+
+#include "../../sim/clocking.hpp"
 
 namespace specular::rtl_test {
 
-template <class Model>
-void tick(Model& m) {
-  m.clk_i = 0;
-  m.eval();
-  m.clk_i = 1;
-  m.eval();
-  m.clk_i = 0;
-  m.eval();
-}
-
-template <class Model>
-void reset(Model& m) {
-  m.clk_i = 0;
-  m.rst_ni = 1;
-  m.eval();
-  m.rst_ni = 0;  // asynchronous: takes effect without a clock edge
-  m.eval();
-  tick(m);
-  m.rst_ni = 1;
-  m.eval();
-}
+using specular::sim::reset;
+using specular::sim::tick;
 
 }  // namespace specular::rtl_test

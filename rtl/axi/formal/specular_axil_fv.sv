@@ -70,23 +70,20 @@ module specular_axil_fv #(
   );
 
 `ifdef FORMAL
-  localparam logic [1:0]  Okay   = 2'b00;
-  localparam logic [1:0]  Slverr = 2'b10;
-  localparam logic [31:0] IdValue = 32'h5350_4543;
+  localparam logic [1:0]  Okay    = 2'b00;
+  localparam logic [1:0]  Slverr  = 2'b10;
+  localparam logic [31:0] IdValue = specular_axil_reg_pkg::IdReset;
+  localparam int          MapAw   = specular_axil_reg_pkg::BlockAw;
 
-  // The map of docs/interfaces.md, written out here independently of the RTL: which byte
-  // addresses are writable (RW, W1C, WO) and which are readable.
+  // The map's access types (rtl/axi/data/specular_axil.rdl, docs/interfaces.md#register-map,
+  // through the generated specular_axil_reg_pkg): which byte addresses are writable (RW, W1C,
+  // WO) and which are readable. The proof checks the slave's decode of the address against
+  // them, above the map's window included.
   function automatic logic f_writable(input logic [AddrWidth-1:0] a);
-    logic [5:0] w;
-    w = a[7:2];
-    f_writable = (a >> 8) == '0 && (w == 6'h02 || w == 6'h03 || (w >= 6'h08 && w <= 6'h0e));
+    f_writable = (a >> MapAw) == '0 && specular_axil_reg_pkg::WritableWords[a[MapAw-1:2]];
   endfunction
   function automatic logic f_readable(input logic [AddrWidth-1:0] a);
-    logic [5:0] w;
-    w = a[7:2];
-    f_readable = (a >> 8) == '0 &&
-                 (w <= 6'h06 || (w >= 6'h08 && w <= 6'h0e) || (w >= 6'h10 && w <= 6'h13) ||
-                  (w >= 6'h20 && w <= 6'h2f));
+    f_readable = (a >> MapAw) == '0 && specular_axil_reg_pkg::ReadableWords[a[MapAw-1:2]];
   endfunction
 
   logic aw_fire, w_fire, b_fire, ar_fire, r_fire;

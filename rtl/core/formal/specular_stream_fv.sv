@@ -96,23 +96,12 @@ module specular_stream_fv #(
   localparam int SpanBits  = CBits + 2 * AngleBits + NBits + LenBits + TagBits;
   localparam int PixBits   = CBits + 1 + TagBits;
 
-  logic accept, xfer;
-  assign accept = span_valid_i && span_ready_o;
-  assign xfer   = px_valid_o && px_ready_i;
-
   // ---------------------------------------------------------------------------------
-  // Assumptions: start in reset; AXI4-Stream source on the span side
+  // Assumptions: start in reset; AXI4-Stream source on the span side. P1: valid held and
+  // pixel stable while stalled
   // ---------------------------------------------------------------------------------
-  `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
-
-  `SPECULAR_FV_AXIS_RULES(u_span_rules, 1'b1, SpanBits, span_valid_i, span_ready_o,
-                          `SPECULAR_SPAN_DATA(span_, _i));
-
-  // ---------------------------------------------------------------------------------
-  // P1: valid held and pixel stable while stalled
-  // ---------------------------------------------------------------------------------
-  `SPECULAR_FV_AXIS_RULES(u_px_rules, 1'b0, PixBits, px_valid_o, px_ready_i,
-                          {px_intensity_o, px_last_o, px_tag_o});
+  `SPECULAR_FV_STREAM_RULES(span_valid_i, span_ready_o, SpanBits, `SPECULAR_SPAN_DATA(span_, _i),
+                            px_valid_o, px_ready_i, PixBits, {px_intensity_o, px_last_o, px_tag_o});
 
   // ---------------------------------------------------------------------------------
   // P2: pixels owed; P5: nothing out after reset before an accept; P6: an invalid output

@@ -58,4 +58,17 @@
     .data_i  (data)   \
   )
 
+// `SPECULAR_FV_STREAM_RULES(in_valid, in_ready, in_bits, in_data, out_valid, out_ready,
+// out_bits, out_data): a harness's two handshakes. The design starts in reset; the rules are
+// assumed at the input the harness drives and asserted at the design's output (P1: valid
+// held, data stable while stalled); accept (an input transfer) and xfer (an output transfer)
+// are declared for the harness's own properties.
+`define SPECULAR_FV_STREAM_RULES(in_valid, in_ready, in_bits, in_data, out_valid, out_ready, out_bits, out_data) \
+  logic accept, xfer; \
+  assign accept = (in_valid) && (in_ready); \
+  assign xfer   = (out_valid) && (out_ready); \
+  `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni) \
+  `SPECULAR_FV_AXIS_RULES(u_in_rules, 1'b1, in_bits, in_valid, in_ready, in_data); \
+  `SPECULAR_FV_AXIS_RULES(u_out_rules, 1'b0, out_bits, out_valid, out_ready, out_data)
+
 `endif  // SPECULAR_FV_SVH

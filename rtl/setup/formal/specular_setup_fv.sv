@@ -99,23 +99,12 @@ module specular_setup_fv #(
   localparam int Flags      = 2;
   localparam int OutW       = LenBits + NBits + TagBits + Flags;
 
-  logic accept, xfer;
-  assign accept = geo_valid_i && geo_ready_o;
-  assign xfer   = span_valid_o && span_ready_i;
-
   // ---------------------------------------------------------------------------------
-  // Assumptions: start in reset; AXI4-Stream producer on the geometry side
+  // Assumptions: start in reset; AXI4-Stream producer on the geometry side. P1: valid held
+  // and descriptor stable while stalled; P5: no output in reset
   // ---------------------------------------------------------------------------------
-  `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
-
-  `SPECULAR_FV_AXIS_RULES(u_geo_rules, 1'b1, GeoBits, geo_valid_i, geo_ready_o,
-                          `SPECULAR_GEO_DATA(geo_, _i));
-
-  // ---------------------------------------------------------------------------------
-  // P1: valid held and descriptor stable while stalled; P5: no output in reset
-  // ---------------------------------------------------------------------------------
-  `SPECULAR_FV_AXIS_RULES(u_span_rules, 1'b0, SpanBits, span_valid_o, span_ready_i,
-                          {`SPECULAR_SPAN_DATA(span_, _o), span_status_o});
+  `SPECULAR_FV_STREAM_RULES(geo_valid_i, geo_ready_o, GeoBits, `SPECULAR_GEO_DATA(geo_, _i),
+                            span_valid_o, span_ready_i, SpanBits, {`SPECULAR_SPAN_DATA(span_, _o), span_status_o});
   always_comb begin
     if (!rst_ni) begin
       assert (!span_valid_o);

@@ -139,17 +139,15 @@ module phong_stream_fv #(
   localparam int GeoBits   = `SPECULAR_GEO_DATA_BITS;
   localparam int PixBits   = CBits + 1 + TagBits;
 
-  logic accept, xfer;
-  assign accept = geo_valid_i && geo_ready_o;
-  assign xfer   = px_valid_o && px_ready_i;
+  logic [PixBits-1:0] px_bus;
+  assign px_bus = {px_intensity_o, px_last_o, px_tag_o};
 
   // ---------------------------------------------------------------------------------
-  // Assumptions: start in reset; AXI4-Stream producer; the tracked span's number constant
+  // Assumptions: start in reset; AXI4-Stream producer; the tracked span's number constant.
+  // P1: valid held and pixel stable while stalled
   // ---------------------------------------------------------------------------------
-  `SPECULAR_FV_START_IN_RESET(clk_i, rst_ni)
-
-  `SPECULAR_FV_AXIS_RULES(u_geo_rules, 1'b1, GeoBits, geo_valid_i, geo_ready_o,
-                          `SPECULAR_GEO_DATA(geo_, _i));
+  `SPECULAR_FV_STREAM_RULES(geo_valid_i, geo_ready_o, GeoBits, `SPECULAR_GEO_DATA(geo_, _i),
+                            px_valid_o, px_ready_i, PixBits, px_bus);
 
   logic [SeqBits-1:0] f_k_q;
   always_ff @(posedge clk_i) begin
@@ -162,12 +160,8 @@ module phong_stream_fv #(
   end
 
   // ---------------------------------------------------------------------------------
-  // P1: valid held and pixel stable while stalled; P4: no pixel in reset; P5: idle reads 0
+  // P4: no pixel in reset; P5: idle reads 0
   // ---------------------------------------------------------------------------------
-  logic [PixBits-1:0] px_bus;
-  assign px_bus = {px_intensity_o, px_last_o, px_tag_o};
-  `SPECULAR_FV_AXIS_RULES(u_px_rules, 1'b0, PixBits, px_valid_o, px_ready_i,
-                          px_bus);
   always_comb begin
     if (!rst_ni) begin
       assert (!px_valid_o);
