@@ -15,14 +15,14 @@ help:
 	@echo "make sim     build everything, run the RTL regression (every build configuration, the stream, scenes)"
 	@echo "make check   the fast tier (ctest label check): model tests, docs checks, lint, the core's block tests, one short system run"
 	@echo "make test    build everything, run every test but the long tier (what CI runs)"
-	@echo "make test-long  the long tier alone (ctest label long): the setup's unbounded proof and its mutants, the long simulations"
+	@echo "make test-long  the long tier alone (ctest label long): the setup's unbounded formal proof and its bounded check"
 	@echo "make formal  the formal proofs of make test alone (rtl_formal_*) and their mutants"
 	@echo "make sim-setup-ii  the system stage at SetupII 1, 8, 16, 32 and 64 (turns on SPECULAR_SYSTEM_SETUP_II in $(BUILD): four more models)"
 	@echo "make roms    regenerate every configuration's ROM hex files and roms/build_configs.cmake (romgen --all), and roms/budget/ (scripts/budget_roms.py)"
 	@echo "make regmap  rewrite specular_axil's register map from rtl/axi/data/specular_axil.rdl: its RTL package, C header and docs/interfaces.md table (PeakRDL, installed into $(BUILD)/regmap-venv)"
 	@echo "make filelists  rewrite every IP's flat filelist rtl/**/*.f and FuseSoC core *.core from its .manifest (scripts/rtl_filelist.py; the ctest filelists_up_to_date checks them)"
 	@echo "make stage-table  rewrite docs/pipeline.md's stage table from rtl/prim/specular_pkg.sv"
-	@echo "make results-page  rewrite docs/results.md (the measured results) from docs/measured/*.json and docs/fpga_figures.json"
+	@echo "make results-page  rewrite docs/results.md and the generated regions from docs/measured/*.json and docs/fpga_figures.json, re-recording the specular CLI's figures (builds $(BUILD)/bin/specular)"
 	@echo "make vcd     write VCD timing diagrams to $(BUILD)/vcd and draw the 4-pixel one"
 	@echo "make report  measure and write $(BUILD)/report/report.md"
 	@echo "make readme-picture  render scenes/torus_point.json through the RTL into docs/img/readme_scene.png (the README's picture)"
@@ -74,10 +74,12 @@ sim-setup-ii: configure
 stage-table: build
 	$(PYTHON) tests/docs/check_stage_counts.py --sim $(BUILD)/bin/sim_regression --root . --update
 
-# docs/results.md, the one page of measured results, from the committed JSON of the runs
-# (scripts/results_page.py; the ctest docs_results_page checks it is up to date).
-results-page:
-	$(PYTHON) scripts/results_page.py --write
+# docs/results.md, the one page of measured results, and the generated regions of the Markdown
+# pages from the committed JSON of the runs (scripts/results_page.py; the ctest docs_results_page
+# checks them); --specular re-records docs/measured/specular_cli.json where the CLI's figures differ.
+results-page: configure
+	@cmake --build $(BUILD) -j $(JOBS) --target specular
+	$(PYTHON) scripts/results_page.py --write --specular $(BUILD)/bin/specular
 
 roms: configure
 	@cmake --build $(BUILD) -j $(JOBS) --target romgen phong_romgen setup_romgen

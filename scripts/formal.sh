@@ -23,7 +23,7 @@
 #              property fails (the mutant is caught), 1 if it passes or a tool fails.
 #
 # The flow: Yosys reads the target's filelist (scripts/rtl_filelist.sh), the property
-# modules rtl/prim/formal/specular_{axis,streak}_props.sv and the harness with -formal; an
+# modules rtl/prim/formal/specular_{axis,streak}_props.sv, specular_px_ghost.sv and the harness with -formal; an
 # elaboration pass reads the pipeline depths off the netlist (the widths of named
 # registers) and hands them to the harness (chparam); the model pass cuts what the target
 # abstracts, flattens, connects the harness's probe wires to the core's state, maps the
@@ -264,7 +264,7 @@ fi
 
 defines="-DSYNTHESIS"
 [ "$mode" = proof ] || defines+=" -DFV_PROPERTIES_ONLY"
-read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/prim/formal/specular_axis_props.sv rtl/prim/formal/specular_streak_props.sv ${harness}"
+read_cmd="read_verilog -sv -formal ${defines}${incflags} ${sources[*]} rtl/prim/formal/specular_axis_props.sv rtl/prim/formal/specular_streak_props.sv rtl/prim/formal/specular_px_ghost.sv ${harness}"
 
 # ---------------------------------------------------------------------------------------
 # Elaboration: the depths of the harness, read off the netlist

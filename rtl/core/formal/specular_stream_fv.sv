@@ -242,23 +242,25 @@ module specular_stream_fv #(
   logic [Depth*SlotBits-1:0] g_slot_q, n_slot;
   logic [Depth*IdxBits-1:0]  g_idx_q, n_idx;
   logic [Depth*CntBits-1:0]  g_nv_q, g_nl_q;   // field 0 unused (0)
-  assign lastf = {p_last, p_zero} & p_vld;
-  // n_*: the slot and index of the pixel after stage j's (stage j's own when it is empty).
-  for (genvar j = 0; j < Depth; j++) begin : gen_next
-    assign n_slot[j*SlotBits +: SlotBits] = g_slot_q[j*SlotBits +: SlotBits] + SlotBits'(lastf[j]);
-    assign n_idx[j*IdxBits +: IdxBits] =
-        !p_vld[j] ? g_idx_q[j*IdxBits +: IdxBits] :
-        lastf[j]  ? '0 : g_idx_q[j*IdxBits +: IdxBits] + 1'b1;
-  end
+  // g_slot, g_idx and n_* (the slot and index of the pixel after stage j's, stage j's own
+  // when it is empty), with their neighbour invariants.
+  specular_px_ghost #(.Depth(Depth), .SeqBits(SlotBits), .IdxBits(IdxBits)) u_ghost (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .adv_i   (p_adv),
+    .vld_i   (p_vld),
+    .last_i  ({p_last, p_zero}),
+    .lastf_o (lastf),
+    .g_seq_o (g_slot_q),
+    .g_idx_o (g_idx_q),
+    .n_seq_o (n_slot),
+    .n_idx_o (n_idx)
+  );
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
-      g_slot_q <= '0;
-      g_idx_q  <= '0;
       g_nv_q   <= '0;
       g_nl_q   <= '0;
     end else if (p_adv) begin
-      g_slot_q <= {g_slot_q[(Depth-1)*SlotBits-1:0], n_slot[SlotBits-1:0]};
-      g_idx_q  <= {g_idx_q[(Depth-1)*IdxBits-1:0], n_idx[IdxBits-1:0]};
       for (int j = 1; j < Depth; j++) begin
         g_nv_q[j*CntBits +: CntBits] <=
             (j == 1 ? '0 : g_nv_q[(j-1)*CntBits +: CntBits]) + CntBits'(p_vld[0]);
@@ -291,10 +293,6 @@ module specular_stream_fv #(
     if (j >= 1) begin : gen_stage
       always_comb begin
         if (rst_ni) begin
-          assert (!p_last[j] || p_vld[j]);
-          assert (!p_vld[j] || p_last[j] || p_vld[j-1]);
-          assert (g_slot_q[(j-1)*SlotBits +: SlotBits] == n_slot[j*SlotBits +: SlotBits]);
-          assert (g_idx_q[(j-1)*IdxBits +: IdxBits] == n_idx[j*IdxBits +: IdxBits]);
           assert (g_nv_q[j*CntBits +: CntBits] ==
                   (j == 1 ? '0 : g_nv_q[(j-1)*CntBits +: CntBits]) + CntBits'(p_vld[j]));
           assert (g_nl_q[j*CntBits +: CntBits] ==

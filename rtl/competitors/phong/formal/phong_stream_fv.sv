@@ -315,26 +315,23 @@ module phong_stream_fv #(
   logic [Depth*SeqBits-1:0]   g_seq_q, n_seq;
   logic [Depth*IdxBits-1:0]   g_idx_q, n_idx;
   logic [Depth-1:0]           lastf;   // pixel stage j holds its span's last pixel
-  assign lastf = {p_last, p_zero} & p_vld;
-  for (genvar j = 0; j < Depth; j++) begin : gen_next
-    assign n_seq[j*SeqBits +: SeqBits] = g_seq_q[j*SeqBits +: SeqBits] + SeqBits'(lastf[j]);
-    assign n_idx[j*IdxBits +: IdxBits] =
-        !p_vld[j] ? g_idx_q[j*IdxBits +: IdxBits] :
-        lastf[j]  ? '0 : g_idx_q[j*IdxBits +: IdxBits] + 1'b1;
-  end
+  specular_px_ghost #(.Depth(Depth), .SeqBits(SeqBits), .IdxBits(IdxBits)) u_ghost (
+    .clk_i   (clk_i),
+    .rst_ni  (rst_ni),
+    .adv_i   (p_adv),
+    .vld_i   (p_vld),
+    .last_i  ({p_last, p_zero}),
+    .lastf_o (lastf),
+    .g_seq_o (g_seq_q),
+    .g_idx_o (g_idx_q),
+    .n_seq_o (n_seq),
+    .n_idx_o (n_idx)
+  );
   always_ff @(posedge clk_i or negedge rst_ni) begin
     if (!rst_ni) begin
       g_sseq_q <= '0;
-      g_seq_q  <= '0;
-      g_idx_q  <= '0;
-    end else begin
-      if (geo_ready_o) begin
-        g_sseq_q <= {g_sseq_q[(SpDepth-1)*SeqBits-1:0], n_acc_q};
-      end
-      if (p_adv) begin
-        g_seq_q <= {g_seq_q[(Depth-1)*SeqBits-1:0], n_seq[SeqBits-1:0]};
-        g_idx_q <= {g_idx_q[(Depth-1)*IdxBits-1:0], n_idx[IdxBits-1:0]};
-      end
+    end else if (geo_ready_o) begin
+      g_sseq_q <= {g_sseq_q[(SpDepth-1)*SeqBits-1:0], n_acc_q};
     end
   end
 
@@ -382,16 +379,7 @@ module phong_stream_fv #(
         end
       end
     end
-    if (j >= 1) begin : gen_stage
-      always_comb begin
-        if (rst_ni) begin
-          assert (!p_last[j] || p_vld[j]);
-          assert (!p_vld[j] || p_last[j] || p_vld[j-1]);
-          assert (g_seq_q[(j-1)*SeqBits +: SeqBits] == n_seq[j*SeqBits +: SeqBits]);
-          assert (g_idx_q[(j-1)*IdxBits +: IdxBits] == n_idx[j*IdxBits +: IdxBits]);
-        end
-      end
-    end else begin : gen_stage0
+    if (j == 0) begin : gen_stage0
       // Stage 0 and the span pipe's head: the next span the control takes is the head's.
       logic [SeqBits-1:0] head_seq;
       assign head_seq = g_sseq_q[(SpDepth-1)*SeqBits +: SeqBits];
