@@ -19,7 +19,7 @@ help:
 	@echo "make formal  the formal proofs of make test alone (rtl_formal_*) and their mutants"
 	@echo "make sim-setup-ii  the system stage at SetupII 1, 8, 16, 32 and 64 (turns on SPECULAR_SYSTEM_SETUP_II in $(BUILD): four more models)"
 	@echo "make roms    regenerate every configuration's ROM hex files and roms/build_configs.cmake (romgen --all), and roms/budget/ (scripts/budget_roms.py)"
-	@echo "make regmap  rewrite specular_axil's register map from rtl/axi/data/specular_axil.rdl: its RTL package, C header and docs/interfaces.md table (PeakRDL, installed into $(BUILD)/regmap-venv)"
+	@echo "make regmap  rewrite specular_axil's register map from rtl/axi/data/specular_axil.rdl: its RTL package, C header and docs/interfaces.md table (PeakRDL, installed into $(BUILD)/venv)"
 	@echo "make filelists  rewrite every IP's flat filelist rtl/**/*.f and FuseSoC core *.core from its .manifest (scripts/rtl_filelist.py; the ctest filelists_up_to_date checks them)"
 	@echo "make stage-table  rewrite docs/pipeline.md's stage table from rtl/prim/specular_pkg.sv"
 	@echo "make results-page  rewrite docs/results.md and the generated regions from docs/measured/*.json and docs/fpga_figures.json, re-recording the specular CLI's figures (builds $(BUILD)/bin/specular)"
@@ -90,9 +90,9 @@ roms: configure
 
 # specular_axil's register map, written once in rtl/axi/data/specular_axil.rdl: rewrites its
 # generated copies (scripts/regmap.py; the ctest regmap_up_to_date checks them). Installs the
-# pinned PeakRDL tools into $(BUILD)/regmap-venv on first use.
+# pinned PeakRDL tools into $(BUILD)/venv on first use (scripts/tools_venv.py).
 regmap:
-	$(PYTHON) scripts/regmap.py --write --venv $(BUILD)/regmap-venv
+	SPECULAR_VENV=$(CURDIR)/$(BUILD)/venv $(PYTHON) scripts/regmap.py --write
 
 # Each IP's flat filelist (rtl/**/*.f) and FuseSoC core (*.core) from its manifest
 # (rtl/README.md#filelists; the ctest filelists_up_to_date checks them).

@@ -2,7 +2,7 @@
 # SPDX-License-Identifier: Apache-2.0
 #
 # Lints an IP with FuseSoC from its .core file (rtl/README.md#filelists): installs the pinned
-# FuseSoC first (scripts/install-fusesoc.sh, build/fusesoc-venv), then runs
+# FuseSoC first (scripts/tools_venv.py install fusesoc: the build's virtual environment), then runs
 #   fusesoc --cores-root rtl run --build-root BUILD_ROOT --target TARGET VLNV
 # from the repository root: FuseSoC copies the files of the core and of the cores it depends on
 # into BUILD_ROOT/<vlnv>/<target>/src and runs `verilator --lint-only -Wall` there, so a file
@@ -39,7 +39,7 @@ if { [ "$mutant" = 1 ] && [ ${#args[@]} -ne 0 ]; } || { [ "$mutant" = 0 ] && [ $
   exit 2
 fi
 
-bin=$(bash "$root/scripts/install-fusesoc.sh" --print-bin) || exit 1
+bin=$(/usr/bin/python3 "$root/scripts/tools_venv.py" install fusesoc --print-bin) || exit 1
 mkdir -p "$build_root"
 build_root=$(cd "$build_root" && pwd)
 # FuseSoC's own configuration: its caches under the build root, no user or system file read.

@@ -13,8 +13,8 @@
                                      and <!-- END generated: axil-regmap --> (this script)
 
 The PeakRDL tools (scripts/regmap-requirements.txt, pinned) are installed on first use into
-a virtual environment, by default build/regmap-venv (--venv or REGMAP_VENV overrides it);
-the generation runs in that environment's Python.
+the project's virtual environment (scripts/tools_venv.py install regmap: build/venv, or
+SPECULAR_VENV); the generation runs in that environment's Python.
 
   scripts/regmap.py --write            rewrite the committed copies (make regmap)
   scripts/regmap.py --check DIR        generate into DIR and compare with the committed copies
@@ -29,16 +29,16 @@ to do), 2 bad arguments. Run from anywhere: paths are relative to the repository
 
 import argparse
 import difflib
-import filecmp
 import os
 import shutil
 import subprocess
 import sys
 
+import tools_venv  # scripts/tools_venv.py, beside this file
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 ME = "scripts/regmap.py"
 RDL = "rtl/axi/data/specular_axil.rdl"
-REQUIREMENTS = "scripts/regmap-requirements.txt"
 SV_PKG = "rtl/axi/specular_axil_reg_pkg.sv"
 C_HEADER = "rtl/axi/data/specular_axil_regs.h"
 DOC = "docs/interfaces.md"
@@ -57,38 +57,12 @@ def die(msg, status=1):
 # ---------------------------------------------------------------------------------------
 # The tools: a virtual environment under build/ with the pinned requirements
 # ---------------------------------------------------------------------------------------
-def venv_python(venv):
-    return os.path.join(venv, "bin", "python")
-
-
-def install(venv):
-    """Installs the pinned tools into venv unless it already holds them (idempotent)."""
-    req = os.path.join(ROOT, REQUIREMENTS)
-    stamp = os.path.join(venv, ".requirements")
-    peakrdl = os.path.join(venv, "bin", "peakrdl")
-
-    def answers():
-        try:
-            return subprocess.run([peakrdl, "--version"], capture_output=True).returncode == 0
-        except OSError:
-            return False
-
-    if os.path.exists(stamp) and filecmp.cmp(req, stamp, shallow=False) and answers():
-        return
-    print(f"{ME}: installing the pinned PeakRDL tools ({REQUIREMENTS}) into {venv}", file=sys.stderr)
-    if not os.path.exists(os.path.join(venv, "bin", "pip")):
-        # Debian's interpreter: the python3 on PATH may be another one (pyenv).
-        python = "/usr/bin/python3" if os.path.exists("/usr/bin/python3") else sys.executable
-        if subprocess.run([python, "-m", "venv", venv]).returncode != 0:
-            die(f"'{python} -m venv {venv}' failed (Debian: apt-get install python3-venv)")
-    pip = [os.path.join(venv, "bin", "pip"), "install", "-q", "--disable-pip-version-check",
-           "--timeout", "30", "--retries", "2", "-r", req]
-    if subprocess.run(pip).returncode != 0:
-        die(f"pip could not install {REQUIREMENTS} into {venv}: is the Python package index "
-            f"reachable? Install by hand with '{' '.join(pip)}', then run {ME} again")
-    if not answers():
-        die(f"{peakrdl} does not run after the install; remove {venv} and run {ME} again")
-    shutil.copyfile(req, stamp)
+def install():
+    """The project's virtual environment with the pinned PeakRDL tools (scripts/tools_venv.py): its bin/."""
+    try:
+        return tools_venv.bin_dir("regmap")
+    except tools_venv.VenvError as e:
+        die(str(e))
 
 
 # ---------------------------------------------------------------------------------------
@@ -321,16 +295,16 @@ def doc_section(text):
     return b, e + len(END) + 1
 
 
-def run_generation(venv, tree, out_dir):
-    install(venv)
-    cmd = [venv_python(venv), os.path.join(ROOT, "scripts", "regmap.py"), "--generate", out_dir,
+def run_generation(tree, out_dir):
+    bins = install()
+    cmd = [os.path.join(bins, "python"), os.path.join(ROOT, "scripts", "regmap.py"), "--generate", out_dir,
            "--root", tree]
     if subprocess.run(cmd).returncode != 0:
         die("the generation failed (messages above)")
 
 
-def write(venv, tree, tmp):
-    run_generation(venv, tree, tmp)
+def write(tree, tmp):
+    run_generation(tree, tmp)
     for path in (SV_PKG, C_HEADER):
         shutil.copyfile(os.path.join(tmp, os.path.basename(path)), os.path.join(tree, path))
         print(f"{ME}: wrote {path}")
@@ -374,9 +348,9 @@ def stale_copies(tree, out_dir, show_diff=True):
     return stale
 
 
-def check(venv, tree, out_dir):
+def check(tree, out_dir):
     shutil.rmtree(out_dir, ignore_errors=True)
-    run_generation(venv, tree, out_dir)
+    run_generation(tree, out_dir)
     stale = stale_copies(tree, out_dir)
     if stale:
         die(f"stale, differs from what {RDL} generates (into {out_dir}): {', '.join(stale)}. "
@@ -392,7 +366,7 @@ HAND_EDITS = [
 ]
 
 
-def selftest(venv, out_dir):
+def selftest(out_dir):
     """--check on copies of the committed files: passes on the copies as they are and on an
     edit of docs/interfaces.md outside the table, fails naming the file on each hand edit."""
     shutil.rmtree(out_dir, ignore_errors=True)
@@ -401,7 +375,7 @@ def selftest(venv, out_dir):
         os.makedirs(os.path.dirname(os.path.join(tree, path)), exist_ok=True)
         shutil.copyfile(os.path.join(ROOT, path), os.path.join(tree, path))
     gen = os.path.join(out_dir, "generated")
-    run_generation(venv, tree, gen)
+    run_generation(tree, gen)
     failures = []
     if stale_copies(tree, gen, show_diff=False):
         die(f"the committed copies are stale already; run {ME} --check first")
@@ -439,24 +413,21 @@ def main():
                       help="show, on copies in DIR, that --check catches a hand edit of each copy")
     mode.add_argument("--install", action="store_true", help="only install the tools")
     mode.add_argument("--generate", metavar="DIR", help=argparse.SUPPRESS)  # inside the venv
-    ap.add_argument("--venv", default=os.environ.get("REGMAP_VENV", os.path.join(ROOT, "build", "regmap-venv")),
-                    help="the tools' virtual environment (default build/regmap-venv, or REGMAP_VENV)")
     ap.add_argument("--root", default=ROOT, help=argparse.SUPPRESS)  # the tree of the map and its copies
     args = ap.parse_args()
-    venv = os.path.abspath(args.venv)
     tree = os.path.abspath(args.root)
     if args.generate:
         generate(tree, os.path.abspath(args.generate))
     elif args.install:
-        install(venv)
+        install()
     elif args.check:
-        check(venv, tree, os.path.abspath(args.check))
+        check(tree, os.path.abspath(args.check))
     elif args.selftest:
-        selftest(venv, os.path.abspath(args.selftest))
+        selftest(os.path.abspath(args.selftest))
     else:
-        tmp = os.path.join(venv, "last-write")
+        tmp = os.path.join(tools_venv.path(), "regmap-last-write")
         shutil.rmtree(tmp, ignore_errors=True)
-        write(venv, tree, tmp)
+        write(tree, tmp)
 
 
 if __name__ == "__main__":

@@ -11,8 +11,8 @@
 #   filelist_iverilog_<ip>_<top>   iverilog -g2012 -c <the IP's .f> -s <top>, then vvp at time 0
 #                                  (the ROM loads and parameter checks), for the IPs Icarus 11
 #                                  elaborates (FILELIST_IVERILOG_IPS below)
-#   fusesoc_install                the pinned FuseSoC into build/fusesoc-venv (the package index
-#                                  on first use; scripts/install-fusesoc.sh)
+#   fusesoc_install                the pinned FuseSoC into the build's virtual environment (the
+#                                  package index on first use; scripts/tools_venv.py)
 #   fusesoc_lint_<ip>_<top>        fusesoc run --target=lint[_<top>] of the IP's .core: Verilator
 #                                  -Wall on the files the .core lists (scripts/fusesoc_lint.sh)
 #   fusesoc_lint_mutant            a .core missing a file must fail its lint
@@ -119,7 +119,7 @@ set_tests_properties(${FILELIST_VERILATOR_TESTS} PROPERTIES FAIL_REGULAR_EXPRESS
 set_tests_properties(${FILELIST_VERILATOR_TESTS} ${FILELIST_CHECK_TESTS} PROPERTIES LABELS check)
 
 # FuseSoC: installed once (the fixture), then each lint in its own work directory.
-add_test(NAME fusesoc_install COMMAND bash ${FILELIST_ROOT}/scripts/install-fusesoc.sh
+add_test(NAME fusesoc_install COMMAND /usr/bin/python3 ${FILELIST_ROOT}/scripts/tools_venv.py install fusesoc
   WORKING_DIRECTORY ${FILELIST_ROOT})
 set_tests_properties(fusesoc_install PROPERTIES FIXTURES_SETUP fusesoc_venv TIMEOUT 600)
 add_test(NAME fusesoc_lint_mutant
@@ -127,3 +127,6 @@ add_test(NAME fusesoc_lint_mutant
   WORKING_DIRECTORY ${FILELIST_ROOT})
 set_tests_properties(${FILELIST_FUSESOC_TESTS} PROPERTIES FAIL_REGULAR_EXPRESSION "%Warning|%Error")
 set_tests_properties(${FILELIST_FUSESOC_TESTS} fusesoc_lint_mutant PROPERTIES FIXTURES_REQUIRED fusesoc_venv TIMEOUT 120)
+# The build's own virtual environment (CMakeLists.txt: SPECULAR_VENV).
+set_tests_properties(fusesoc_install ${FILELIST_FUSESOC_TESTS} fusesoc_lint_mutant PROPERTIES
+  ENVIRONMENT SPECULAR_VENV=${SPECULAR_VENV})

@@ -7,22 +7,19 @@
 #   regmap_up_to_date    regenerates the copies into this build (scripts/regmap.py --check) and
 #                        fails naming each committed copy that differs: run `make regmap`.
 #                        Installs the pinned PeakRDL tools (scripts/regmap-requirements.txt)
-#                        into ${CMAKE_BINARY_DIR}/regmap-venv on first use; fails with a
-#                        message when the Python package index cannot be reached.
+#                        into the build's virtual environment (scripts/tools_venv.py) on first
+#                        use; fails with a message when the package index cannot be reached.
 #   regmap_stale_caught  the check on copies of the committed files: a hand edit of each
 #                        generated copy must fail it, naming that file; an edit of
 #                        docs/interfaces.md outside the table must not.
 target_include_directories(rtl_axi_tests PRIVATE ${PROJECT_SOURCE_DIR}/rtl/axi/data)
 
-set(REGMAP_VENV ${CMAKE_BINARY_DIR}/regmap-venv)
 add_test(NAME regmap_up_to_date
-  COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/scripts/regmap.py --venv ${REGMAP_VENV}
-          --check ${CMAKE_CURRENT_BINARY_DIR}/regmap)
+  COMMAND ${CMAKE_COMMAND} -E env SPECULAR_VENV=${SPECULAR_VENV}
+          /usr/bin/python3 ${PROJECT_SOURCE_DIR}/scripts/regmap.py --check ${CMAKE_CURRENT_BINARY_DIR}/regmap)
 add_test(NAME regmap_stale_caught
-  COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/scripts/regmap.py --venv ${REGMAP_VENV}
-          --selftest ${CMAKE_CURRENT_BINARY_DIR}/regmap_selftest)
+  COMMAND ${CMAKE_COMMAND} -E env SPECULAR_VENV=${SPECULAR_VENV}
+          /usr/bin/python3 ${PROJECT_SOURCE_DIR}/scripts/regmap.py --selftest ${CMAKE_CURRENT_BINARY_DIR}/regmap_selftest)
 set_tests_properties(regmap_stale_caught PROPERTIES
   PASS_REGULAR_EXPRESSION "self-test PASS")
-# Both may install into the one environment: never at the same time.
-set_tests_properties(regmap_up_to_date regmap_stale_caught PROPERTIES
-  TIMEOUT 600 RESOURCE_LOCK regmap_venv LABELS regmap)
+set_tests_properties(regmap_up_to_date regmap_stale_caught PROPERTIES TIMEOUT 600 LABELS regmap)
