@@ -869,7 +869,10 @@ module specular_setup #(
 `endif
 
   `SPEC_ASSERT_KNOWN(GeoValidKnown_A, geo_valid_i, clk_i, rst_ni)
-  `SPEC_ASSERT_KNOWN_IF(GeoDataKnown_A, `SPECULAR_GEO_DATA(geo_, _i), geo_valid_i && geo_ready_o,
-                        clk_i, rst_ni)
+  // The geometry word as one signal: a macro call inside an assertion's stringified argument
+  // is more than Icarus 11 reads.
+  logic [`SPECULAR_GEO_DATA_BITS-1:0] geo_data;
+  assign geo_data = `SPECULAR_GEO_DATA(geo_, _i);
+  `SPEC_ASSERT_KNOWN_IF(GeoDataKnown_A, geo_data, geo_valid_i && geo_ready_o, clk_i, rst_ni)
 
 endmodule

@@ -55,7 +55,8 @@ module specular_setup_cordic #(
   end
 
   for (genvar i = 0; i < Iters; i++) begin : gen_iter
-    localparam logic signed [W-1:0] Atan = W'(specular_setup_pkg::atan_word(i));
+    localparam logic signed [63:0] AtanWord = specular_setup_pkg::atan_word(i);
+    localparam logic signed [W-1:0] Atan = AtanWord[W-1:0];  // (a cast of a call: not Icarus 11)
     // up: y < 0, the vector turns up: x - dx, y + dy, z - Atan (else x + dx, y - dy, z + Atan).
     logic up;
     assign up = y_q[i][W-1];

@@ -111,8 +111,12 @@ module specular_setup_exp2 #(
     assign pm[2] = specular_setup_pkg::mul64(64'(g_q[3]), 64'(t3_q));
     assign pm[3] = specular_setup_pkg::mul64(64'(pow_q[4]), 64'(p4_q));
     logic [PW-1:0] prod_q;
+    logic signed [63:0] prod_d;  // (a cast of a call: not Icarus 11)
+    logic               unused_prod_hi;
+    assign prod_d = specular_setup_pkg::mul64(64'(mant_q), 64'(scale_q[5]));
+    assign unused_prod_hi = ^prod_d[63:PW];  // below 2^PW (the comment of PW)
     always_ff @(posedge clk_i) begin
-      if (en_i) prod_q <= PW'(specular_setup_pkg::mul64(64'(mant_q), 64'(scale_q[5])));
+      if (en_i) prod_q <= prod_d[PW-1:0];
     end
     assign prod = prod_q;
   end

@@ -44,11 +44,14 @@ module specular_setup_prio #(
     for (int n = 0; n < LN; n++) begin
       any_t[n] = lead[LN-1-n];
     end
+    // (Constant loop bounds and a guard: Icarus 11 reads no variable bound in always_comb.)
     for (int l = 1; l <= L; l++) begin
-      for (int n = 0; n < (LN >> l); n++) begin
-        any_t[l*LN + n] = any_t[(l-1)*LN + 2*n] | any_t[(l-1)*LN + 2*n + 1];
-        lz_t[(l*LN + n)*L +: L] = any_t[(l-1)*LN + 2*n] ? lz_t[((l-1)*LN + 2*n)*L +: L]
-                                  : lz_t[((l-1)*LN + 2*n + 1)*L +: L] | L'(1 << (l - 1));
+      for (int n = 0; n < LN / 2; n++) begin
+        if (n < (LN >> l)) begin
+          any_t[l*LN + n] = any_t[(l-1)*LN + 2*n] | any_t[(l-1)*LN + 2*n + 1];
+          lz_t[(l*LN + n)*L +: L] = any_t[(l-1)*LN + 2*n] ? lz_t[((l-1)*LN + 2*n)*L +: L]
+                                    : lz_t[((l-1)*LN + 2*n + 1)*L +: L] | L'(1 << (l - 1));
+        end
       end
     end
   end

@@ -44,7 +44,7 @@ module specular_setup_smul #(
       .clk_i (clk_i), .rst_ni (1'b1), .en_i (en_i), .d_i ({a_i, b_i}), .q_o ({a_w, b_w}));
     logic [ABits+BBits-1:0] p;
     specular_pipe_mul #(.ABits(ABits), .BBits(BBits), .TileBits(TileBits), .Signed(1'b1)) u_mul (
-      .clk_i (clk_i), .en_i (en_i), .a_i (a_w), .a3_i ('0), .b_i (b_w), .p_o (p));
+      .clk_i (clk_i), .en_i (en_i), .a_i (a_w), .a3_i ({(ABits + 2){1'b0}}), .b_i (b_w), .p_o (p));
     assign p_o = $signed(p);
 
   end else begin : gen_pipe
