@@ -49,7 +49,7 @@ def configurations(root):
     for r in d["runs"]:
         best = r.get("best")
         if not best:
-            continue  # no bank set meets the budget (B2)
+            continue  # no single-bank set meets the budget (B2, B4: blended only, docs/display_exact.md; no RTL yet)
         same = next((c for c in out if c["budget"] == r["budget"] and c["best"] == best
                      and c["policy"] == r["policy"]), None)
         if same:

@@ -352,31 +352,49 @@ def section_phong_search(d, rel):
 
 def section_device_search(d, rel):
     p = provenance(d, rel)
+    runs_all = [x for r in d["runs"] for x in r["runs"]]
+    sets = lambda blend: ", ".join(sorted({"{" + ",".join(str(k) for k in x["banks"]) + "}" for x in runs_all
+                                           if bool(x.get("blend")) == blend}, key=len))
     out = ["## The device's widths per budget", "", run_line(p, rel),
            "`build/bin/device_search --budget B --n-max N` on the golden model "
-           "([device.md](device.md#configurations-per-budget)): per bank set the narrowest widths meeting the "
-           "budget for every `n` in 1..N, then the set with the fewest ROM bits (ROM 9 + ROM 12), whose widths and "
-           "worst errors over those `n` are in the row: relative = `(|err| - 1 LSB)^+ / ref` in the epicenter, "
-           "absolute = `(|err| - 1 LSB)^+ / C`, raw = `|err| / C`. A bank set whose default widths miss the budget "
-           "does not meet it; where none meets it, the lowest raw error of any set is given. Bank sets tried: "
-           + ", ".join(sorted({"{" + ",".join(str(k) for k in x["banks"]) + "}" for r in d["runs"] for x in r["runs"]},
-                              key=len)) + ".", ""]
+           "([device.md](device.md#configurations-per-budget), [display_exact.md](display_exact.md#search)): per bank "
+           "set the narrowest widths meeting the budget for every `n` in 1..N, then the set with the fewest ROM bits "
+           "(ROM 9 + ROM 12) that the RTL builds (one bank per `n`), whose widths and worst errors over those `n` "
+           "are in the row: relative = `(|err| - 1 LSB)^+ / ref` in the epicenter, absolute = `(|err| - 1 LSB)^+ / C`, "
+           "raw = `|err| / C`, sRGB = the largest difference of 8-bit sRGB codes at `C = 1` (what a viewer sees, "
+           "not a budget). A bank set whose default widths miss the budget does not meet it; where none meets it, the "
+           "lowest raw error of any single-bank set is given. The last column is the blended device "
+           "([display_exact.md](display_exact.md)) with the fewest ROM bits: its bank set, ROM bits, the fraction of "
+           "the budget it uses at its worst `n`, and its sRGB codes. Bank sets tried, one bank per `n`: "
+           + sets(False) + "; blended: " + sets(True) + ".", ""]
+
+    def blend_cell(r):
+        x = r.get("best_blend")
+        if not x:
+            return "none"
+        return ("{" + ",".join(str(k) for k in x["banks"]) + "}" + f": {num(x['rom_bits'])} bits, "
+                f"{num(x['budget_used'], 3)} of it, {num(x['srgb8_codes'])} sRGB")
+
     rows = []
     for r in d["runs"]:
-        meets = [x for x in r["runs"] if x.get("meets")]
+        meets = [x for x in r["runs"] if x.get("meets") and not x.get("blend")]
+        singles = [x for x in r["runs"] if not x.get("blend")]
         x = next((x for x in meets if r["best"] and x["banks"] == r["best"]["banks"]), None)
         if x is None:
-            raw = min(y["abs_raw"] for y in r["runs"])
-            rows.append([r["budget"].upper(), num(r["n_max"]), f"0 of {len(r['runs'])}", "-", "", "", "", "", "", "",
-                         f"lowest {sci(raw)}"])
+            raw = min(y["abs_raw"] for y in singles)
+            rows.append([r["budget"].upper(), num(r["n_max"]), f"0 of {len(singles)}", "-", "", "", "", "", "", "",
+                         f"lowest {sci(raw)}", "", blend_cell(r)])
             continue
-        rows.append([r["budget"].upper(), num(r["n_max"]), f"{len(meets)} of {len(r['runs'])}",
+        srgb = num(x["srgb8_codes"]) if "srgb8_codes" in x else "-"
+        rows.append([r["budget"].upper(), num(r["n_max"]), f"{len(meets)} of {len(singles)}",
                      "{" + ",".join(str(k) for k in x["banks"]) + "}",
                      f"{x['cos_addr_bits']} / {x['cos_data_bits']} / {x['cos_delta_bits']} / {x['cos_frac_bits']}",
                      f"{x['coef_bits']} / {x['coef_frac']}", num(x["psi_mul_frac"]), num(x["rom_bits"]),
-                     sci(x["rel_lsb"]), sci(x["abs_lsb"]), sci(x["abs_raw"])])
+                     sci(x["rel_lsb"]), sci(x["abs_lsb"]), sci(x["abs_raw"]), srgb,
+                     blend_cell(r)])
     out += table(["budget", "n up to", "bank sets meeting it", "fewest bits", "ROM 12 addr / data / step / weight bits",
-                  "ROM 9 bits / fraction", "psi fraction", "ROM bits", "relative", "absolute", "raw"], rows)
+                  "ROM 9 bits / fraction", "psi fraction", "ROM bits", "relative", "absolute", "raw", "sRGB",
+                  "blended: fewest bits"], rows)
     return out
 
 

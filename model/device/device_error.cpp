@@ -14,6 +14,12 @@ namespace {
 constexpr double kHalfPiE = 1.57079632679489661923;
 }  // namespace
 
+int srgb8_code(double v) {
+  v = std::clamp(v, 0.0, 1.0);
+  const double e = v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+  return static_cast<int>(std::lround(255.0 * e));
+}
+
 DeviceLine make_device_line(const device::Format& f, int n, double end, int l) {
   DeviceLine d;
   d.regs.c = device::quantize_c(1.0, f);
@@ -52,6 +58,7 @@ DeviceError device_error(const device::DeviceModel& dm, int n) {
           err.max_rel_epicenter_lsb = std::max(err.max_rel_epicenter_lsb, std::max(0.0, e - lsb) / ref);
       } else {
         err.max_abs_lobe = std::max(err.max_abs_lobe, e);
+        err.max_srgb8_codes = std::max(err.max_srgb8_codes, std::abs(srgb8_code(got) - srgb8_code(ref)));
       }
     }
   };

@@ -32,7 +32,13 @@ struct DeviceError {
   double max_rel_epicenter = 0.0;
   double max_abs_lobe = 0.0;
   double max_rel_epicenter_lsb = 0.0;
+  // What a viewer sees (docs/display_exact.md#search): the largest difference, in codes, between
+  // the 8-bit sRGB encodings (IEC 61966-2-1, round to nearest) of the output and of the
+  // reference, over the same pixels as max_abs_lobe (C = 1: a full-scale highlight).
+  int max_srgb8_codes = 0;
 };
+// The 8-bit sRGB code of a linear intensity (clamped to [0, 1]).
+int srgb8_code(double linear);
 DeviceError device_error(const device::DeviceModel& dm, int n);
 
 }  // namespace specular

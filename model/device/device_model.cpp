@@ -114,6 +114,23 @@ double coef_value(uint32_t code, const Format& f) {
 
 DeviceModel::DeviceModel(Format f, std::vector<uint32_t> coef_rom, std::vector<uint32_t> cos_rom)
     : f_(std::move(f)), coef_rom_(std::move(coef_rom)), cos_rom_(std::move(cos_rom)) {
+  require(!f_.blend, "blend mode needs ROM 9's a2 and weight fields (the BlendRoms constructor)");
+  check();
+}
+
+DeviceModel::DeviceModel(Format f, std::vector<uint32_t> coef_rom, std::vector<uint32_t> cos_rom, BlendRoms blend)
+    : f_(std::move(f)), coef_rom_(std::move(coef_rom)), cos_rom_(std::move(cos_rom)), blend_(std::move(blend)) {
+  require(f_.blend, "BlendRoms given to a format without blend");
+  check();
+  require(f_.weight_bits >= 1 && f_.weight_bits <= 24, "weight_bits (1..24)");
+  require(static_cast<int>(blend_.coef2.size()) == f_.coef_rom_depth() &&
+              static_cast<int>(blend_.weight.size()) == f_.coef_rom_depth(),
+          "blend ROM 9 fields a2 and w need " + std::to_string(f_.coef_rom_depth()) + " words each");
+  for (uint32_t w : blend_.coef2) require((static_cast<uint64_t>(w) >> f_.coef_bits) == 0, "a2 word too wide");
+  for (uint32_t w : blend_.weight) require((static_cast<uint64_t>(w) >> f_.weight_bits) == 0, "weight word too wide");
+}
+
+void DeviceModel::check() const {
   // Widths for which the 64-bit products below cannot overflow.
   require(f_.c_bits >= 1 && f_.c_bits <= 31 && f_.c_frac >= 0 && f_.c_frac <= f_.c_bits, "c_bits/c_frac");
   require(f_.angle_bits >= 4 && f_.angle_bits <= 48 && f_.angle_frac >= 3 && f_.angle_frac <= f_.angle_bits - 1,
@@ -134,12 +151,15 @@ DeviceModel::DeviceModel(Format f, std::vector<uint32_t> coef_rom, std::vector<u
             "cos_frac_bits (address and step weight must fit in the fraction of zeta)");
     require(f_.cos_delta_bits >= 1 && f_.cos_word_bits() <= 32, "cos_delta_bits (ROM 12 word at most 32 bits)");
   }
-  require(!f_.banks.empty() && f_.banks.size() == f_.bank_max_n.size(), "banks/bank_max_n sizes");
-  for (size_t j = 0; j < f_.banks.size(); ++j) {
-    require(f_.banks[j] >= 1, "bank k must be >= 1");
+  require(!f_.banks.empty() && (f_.banks.size() == f_.bank_max_n.size() ||
+                                 (f_.blend && f_.bank_max_n.size() + 1 == f_.banks.size())),
+          "banks/bank_max_n sizes");
+  for (size_t j = 0; j < f_.banks.size(); ++j) require(f_.banks[j] >= 1, "bank k must be >= 1");
+  for (size_t j = 0; j < f_.bank_max_n.size(); ++j)
     require(f_.bank_max_n[j] >= 1 && (j == 0 || f_.bank_max_n[j] > f_.bank_max_n[j - 1]),
             "bank_max_n must increase");
-  }
+  require(f_.bank_shift.empty() || f_.bank_shift.size() == f_.banks.size(), "bank_shift: one per bank, or none");
+  for (int s : f_.bank_shift) require(s >= 0 && s <= 8, "bank_shift (0..8)");
   require(f_.bank_max_n.back() == f_.max_n(), "last bank must end at max_n");
   require(static_cast<int>(coef_rom_.size()) == f_.coef_rom_depth(),
           "coefficient ROM has " + std::to_string(coef_rom_.size()) + " words, expected " +
@@ -186,7 +206,37 @@ PixelTrace DeviceModel::trace(const Registers& raw, int i) const {
   if (t.far || t.bank < 0) return t;
   t.abs_psi_t = t.abs_psi >> (f_.angle_frac - f_.psi_mul_frac);  // < 2: 1 integer bit
   t.coef = coef_rom_[r.n];
-  t.zeta = static_cast<uint64_t>(t.coef) * t.abs_psi_t;  // multiplier 11
+  uint32_t cosk = 0;
+  {
+    const Read a = read_cos(t.bank, t.coef, t.abs_psi_t);
+    t.zeta = a.zeta, t.addr = a.addr, t.frac = a.frac, t.overflow = a.overflow, t.word = a.word, t.cosk = a.cosk;
+    cosk = a.cosk;
+  }
+  if (f_.blend) {
+    t.bank2 = second_bank(t.bank);
+    t.coef2 = blend_.coef2[r.n];
+    const Read b = read_cos(t.bank2, t.coef2, t.abs_psi_t);
+    t.zeta2 = b.zeta, t.addr2 = b.addr, t.frac2 = b.frac, t.overflow2 = b.overflow, t.word2 = b.word;
+    t.cosk2 = b.cosk;
+    t.weight = blend_.weight[r.n];
+    // cosb = c1 + round((c2 - c1) w / 2^W), half up (>> on a signed value is floor in C++20): it
+    // lies between c1 and c2, so it needs no wider word.
+    const int64_t diff = static_cast<int64_t>(t.cosk2) - static_cast<int64_t>(t.cosk);
+    const int64_t step = (diff * t.weight + (int64_t{1} << (f_.weight_bits - 1))) >> f_.weight_bits;
+    t.blended = static_cast<uint32_t>(static_cast<int64_t>(t.cosk) + step);
+    cosk = t.blended;
+  } else if (t.overflow) {
+    return t;
+  }
+  // Multiplier 13, round half up back to the format of C.
+  const uint64_t p = static_cast<uint64_t>(r.c) * cosk;
+  t.intensity = static_cast<uint32_t>((p + (1ULL << (f_.cos_data_bits - 1))) >> f_.cos_data_bits);
+  return t;
+}
+
+DeviceModel::Read DeviceModel::read_cos(int bank, uint32_t coef, uint64_t abs_psi_t) const {
+  Read t;
+  t.zeta = static_cast<uint64_t>(coef) * abs_psi_t;  // multiplier 11
   const int zf = f_.coef_frac + f_.psi_mul_frac;
   if (f_.cos_interp) {
     t.overflow = (t.zeta >> zf) != 0;
@@ -194,7 +244,7 @@ PixelTrace DeviceModel::trace(const Registers& raw, int i) const {
     const int sa = zf - f_.cos_addr_bits;
     t.addr = (t.zeta >> sa) & ((1ULL << f_.cos_addr_bits) - 1);
     t.frac = static_cast<uint32_t>((t.zeta >> (sa - f_.cos_frac_bits)) & ((1ULL << f_.cos_frac_bits) - 1));
-    t.word = cos_rom_[(static_cast<size_t>(t.bank) << f_.cos_addr_bits) + t.addr];
+    t.word = cos_rom_[(static_cast<size_t>(bank) << f_.cos_addr_bits) + t.addr];
     const uint64_t v = t.word >> f_.cos_delta_bits;
     const uint64_t d = t.word & ((1ULL << f_.cos_delta_bits) - 1);
     t.cosk = static_cast<uint32_t>(v - ((d * t.frac + (1ULL << (f_.cos_frac_bits - 1))) >> f_.cos_frac_bits));
@@ -203,12 +253,9 @@ PixelTrace DeviceModel::trace(const Registers& raw, int i) const {
     t.addr = (t.zeta + (1ULL << (drop - 1))) >> drop;  // round half up
     t.overflow = (t.addr >> f_.cos_addr_bits) != 0;
     if (t.overflow) return t;
-    t.word = cos_rom_[(static_cast<size_t>(t.bank) << f_.cos_addr_bits) + t.addr];
+    t.word = cos_rom_[(static_cast<size_t>(bank) << f_.cos_addr_bits) + t.addr];
     t.cosk = t.word;
   }
-  // Multiplier 13, round half up back to the format of C.
-  const uint64_t p = static_cast<uint64_t>(r.c) * t.cosk;
-  t.intensity = static_cast<uint32_t>((p + (1ULL << (f_.cos_data_bits - 1))) >> f_.cos_data_bits);
   return t;
 }
 

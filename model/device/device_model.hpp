@@ -29,11 +29,14 @@
 //                        cosk  = min(round(cos^k(addr * h) * 2^CosDataBits), 2^CosDataBits - 1)
 //   multiplier 13        I     = (C * cosk + 2^(CosDataBits-1)) >> CosDataBits   (same format as C)
 //   decoder 10           bank  from n (bank_max_n table); n = 0 or n > 1000 -> every pixel 0
+//   blend (Format::blend, off by default; docs/display_exact.md): a second multiplier 11 and ROM 12
+//                        read for the next bank, blended by a weight from ROM 9 before multiplier 13
 #pragma once
 
 #include "coefficients.hpp"
 #include "scanline_setup.hpp"
 
+#include <algorithm>
 #include <bit>
 #include <cstdint>
 #include <string>
@@ -64,6 +67,19 @@ struct Format {
   std::vector<int> bank_max_n{1, 2, 3, 4, 6, 9, 13, kMaxN};    // decoder 10: bank j serves
                                                                // bank_max_n[j-1] < n <= bank_max_n[j]
                                                                // (decoder_bank, coefficients.hpp)
+  // Display-exact options (docs/display_exact.md); their defaults leave every build above as it was.
+  // ROM 12 bank j holds cos^k over a x in [0, pi/2 * 2^-bank_shift[j]) (its own domain: a bank of
+  // large k lives in the first hundredths of a radian); ROM 9 then holds a(n) * 2^shift * 2/pi, so
+  // the datapath is the same. Empty: every shift 0.
+  std::vector<int> bank_shift{};
+  // Two banks per n (decoder 10's bank j and the next, j + 1, or j again for the last bank):
+  //   cosb = c1 + ((c2 - c1) * w + 2^(weight_bits-1)) >> weight_bits   (arithmetic shift: floor)
+  // with c1 = cos^k1(a1 |psi|), c2 = cos^k2(a2 |psi|) each read as above (a second multiplier 11 and
+  // a second ROM 12 read; a read past its domain is 0), w = round(t 2^weight_bits) the weight of
+  // bank j + 1 from a third ROM 9 field; multiplier 13 takes cosb. In blend mode bank_max_n may
+  // have one entry fewer than banks: the last bank then serves only as a second bank.
+  bool blend = false;
+  int weight_bits = 12;
 
   // The patent's configuration (bit-exact build option, see the header comment).
   static Format patent();
@@ -75,6 +91,9 @@ struct Format {
   int cos_rom_depth() const { return static_cast<int>(banks.size()) << cos_addr_bits; }
   // Bits of one ROM 12 word: {v, d} interpolated, the saturating value direct.
   int cos_word_bits() const { return cos_interp ? cos_data_bits + 1 + cos_delta_bits : cos_data_bits; }
+  int shift_of(int bank) const { return bank_shift.empty() ? 0 : bank_shift[static_cast<size_t>(bank)]; }
+  // Bits of one ROM 9 word: a1 alone, or {a1, a2, w} in blend mode.
+  int coef_word_bits() const { return blend ? 2 * coef_bits + weight_bits : coef_bits; }
   // ceil(pi/2 * 2^angle_frac): |psi| codes at or above it are at or past pi/2.
   int64_t half_pi_code() const;
   bool operator==(const Format&) const = default;
@@ -138,6 +157,21 @@ struct PixelTrace {
   uint32_t word = 0;        // ROM 12 word
   uint32_t cosk = 0;        // cos^k, cos_data_bits fraction bits (interpolated or direct)
   uint32_t intensity = 0;   // multiplier 13 output
+  // Blend mode only (Format::blend): the second read, the weight and the blended value.
+  int bank2 = -1;           // decoder 10's second bank
+  uint32_t coef2 = 0;       // ROM 9's a2 field
+  uint64_t zeta2 = 0, addr2 = 0;
+  uint32_t frac2 = 0;
+  bool overflow2 = false;   // a2 |psi| past bank2's domain: c2 = 0
+  uint32_t word2 = 0, cosk2 = 0;
+  uint32_t weight = 0;      // ROM 9's w field
+  uint32_t blended = 0;     // cosb, the input of multiplier 13
+};
+
+// ROM 9's two further fields in blend mode, each coef_rom_depth() words: a2 (coef_bits) and the
+// weight w (weight_bits).
+struct BlendRoms {
+  std::vector<uint32_t> coef2, weight;
 };
 
 // Stream view (rtl/core/specular_stream.sv): a span is one line's registers plus an opaque tag;
@@ -160,10 +194,14 @@ class DeviceModel {
   // coef_rom: coef_rom_depth() words of coef_bits; cos_rom: cos_rom_depth() words of
   // cos_data_bits. Throws std::invalid_argument on a size, width or format mismatch.
   DeviceModel(Format f, std::vector<uint32_t> coef_rom, std::vector<uint32_t> cos_rom);
+  // Blend mode (f.blend must be true; the constructor above refuses it).
+  DeviceModel(Format f, std::vector<uint32_t> coef_rom, std::vector<uint32_t> cos_rom, BlendRoms blend);
 
   const Format& format() const { return f_; }
   // Decoder 10: bank index for n, -1 when n = 0 or n > max_n.
   int bank_of(uint32_t n) const;
+  // Blend mode: the second bank of first bank j (j + 1, the last bank for the last).
+  int second_bank(int j) const { return std::min(j + 1, static_cast<int>(f_.banks.size()) - 1); }
   uint32_t pixel(const Registers& r, int i) const { return trace(r, i).intensity; }
   PixelTrace trace(const Registers& r, int i) const;
   // The l + 1 = len + 1 intensities of one line in pixel order.
@@ -177,8 +215,17 @@ class DeviceModel {
   Registers latch(const Registers& r) const;
 
  private:
+  // One read of ROM 12 (multiplier 11, the address, the interpolation); cosk 0 past the domain.
+  struct Read {
+    uint64_t zeta = 0, addr = 0;
+    uint32_t frac = 0, word = 0, cosk = 0;
+    bool overflow = false;
+  };
+  Read read_cos(int bank, uint32_t coef, uint64_t abs_psi_t) const;
+  void check() const;
   Format f_;
   std::vector<uint32_t> coef_rom_, cos_rom_;
+  BlendRoms blend_;
 };
 
 }  // namespace specular::device

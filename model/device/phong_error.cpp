@@ -147,9 +147,9 @@ PhongError phong_error_on(const PhongModel& m, int n, const std::vector<GeoSpan>
 }
 
 PixelBudget PixelBudget::named(const std::string& name) {
-  for (const PixelBudget& b : {b1(), b2(), b3()})
+  for (const PixelBudget& b : {b1(), b2(), b3(), b4()})
     if (name == b.name) return b;
-  throw std::invalid_argument("error budget '" + name + "' is not one of b1, b2, b3");
+  throw std::invalid_argument("error budget '" + name + "' is not one of b1, b2, b3, b4");
 }
 
 PhongError phong_error(const PhongModel& m, int n, uint64_t seed) {

@@ -175,9 +175,11 @@ std::vector<uint32_t> coef_rom_image(const device::Format& f, const CoefSpec& sp
                                   std::vector<uint32_t>(f.cos_rom_depth(), 0));
   std::vector<uint32_t> img(f.coef_rom_depth(), 0);
   for (int n = 1; n <= f.max_n(); ++n) {
-    const int k = f.banks[probe.bank_of(static_cast<uint32_t>(n))];
+    const int j = probe.bank_of(static_cast<uint32_t>(n));
+    const int k = f.banks[j];
     try {
-      img[n] = coef_word(coefficient(n, k, spec), f);
+      // A bank with its own domain (Format::bank_shift) scales a by 2^shift (exact; 0 by default).
+      img[n] = coef_word(std::ldexp(coefficient(n, k, spec), f.shift_of(j)), f);
     } catch (const std::invalid_argument& e) {
       throw std::invalid_argument("ROM 9 entry n = " + std::to_string(n) + ", k = " + std::to_string(k) + ": " +
                                   e.what());
@@ -191,12 +193,15 @@ std::vector<uint32_t> cos_rom_image(const device::Format& f) {
   const long double one = std::ldexp(1.0L, f.cos_data_bits);
   std::vector<uint32_t> img;
   img.reserve(f.cos_rom_depth());
-  for (int k : f.banks) {
+  for (size_t j = 0; j < f.banks.size(); ++j) {
+    const int k = f.banks[j];
+    // The bank's domain: [0, pi/2 * 2^-shift) (Format::bank_shift; the ldexp is exact).
+    const long double span = std::ldexp(std::numbers::pi_v<long double> / 2.0L, -f.shift_of(static_cast<int>(j)));
     // long double so that the rounding of the committed words does not hinge on the last
-    // bit of a double cos(); entry per_bank (x = pi/2) is 0 exactly.
+    // bit of a double cos(); entry per_bank (the domain's end) is 0 exactly.
     auto entry = [&](int addr) -> long double {
       if (addr >= per_bank) return 0.0L;
-      const long double x = std::numbers::pi_v<long double> / 2.0L * addr / per_bank;
+      const long double x = span * addr / per_bank;
       return std::round(std::pow(std::cos(x), static_cast<long double>(k)) * one);
     };
     for (int addr = 0; addr < per_bank; ++addr) {

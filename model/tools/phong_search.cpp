@@ -4,7 +4,7 @@
 //   phong_search --n-max 1000                 the narrowest configuration meeting the device's
 //                                             budget for every n in 1..n-max, then its error per n
 //   --form cross                              the cancellation-free form (its own fields and start)
-//   --budget b2                               budget B1 (default), B2 or B3 (docs/metrics.md#budgets)
+//   --budget b2                               budget B1 (default), B2, B3 or B4 (docs/metrics.md#budgets)
 //   phong_search --eval --op-bits 24 ...      the error per n of one configuration
 //   phong_search --measure n64 --n-step 10    the error of a preset configuration (the names of
 //                                             roms/phong/phong_configs.cmake) on n = 1, 1+S, ...,
@@ -231,8 +231,8 @@ int main(int argc, char** argv) {
   app.add_flag("--const-h", f.const_h, "constant H (He = H1)");
   app.add_option("--form", form, "dot (the textbook normalized dot product) or cross (the cancellation-free form)")
       ->capture_default_str();
-  app.add_option("--budget", budget, "the error budget (docs/metrics.md#budgets): b1, b2 or b3")
-      ->check(CLI::IsMember({"b1", "b2", "b3"}))
+  app.add_option("--budget", budget, "the error budget (docs/metrics.md#budgets): b1, b2, b3 or b4")
+      ->check(CLI::IsMember({"b1", "b2", "b3", "b4"}))
       ->capture_default_str();
   for (const Field& fd : search_fields())
     app.add_option(std::string("--") + [&] {
