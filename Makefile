@@ -17,7 +17,7 @@ help:
 	@echo "make test    build everything, run every test but the long tier (what CI runs)"
 	@echo "make test-long  the long tier alone (ctest label long): the setup's unbounded formal proof and its bounded check"
 	@echo "make formal  the formal proofs of make test alone (rtl_formal_*) and their mutants"
-	@echo "make sim-setup-ii  the system stage at SetupII 1, 8, 16, 32 and 64 (turns on SPECULAR_SYSTEM_SETUP_II in $(BUILD): four more models)"
+	@echo "make sim-setup-ii  the system stage at SetupII 1, 8, 16, 32 and 64 (turns on SPECULAR_SYSTEM_SETUP_II in $(BUILD): three more models)"
 	@echo "make roms    regenerate every configuration's ROM hex files and roms/build_configs.cmake (romgen --all), and roms/budget/ (scripts/budget_roms.py)"
 	@echo "make regmap  rewrite specular_axil's register map from rtl/axi/data/specular_axil.rdl: its RTL package, C header and docs/interfaces.md table (PeakRDL, installed into $(BUILD)/venv)"
 	@echo "make filelists  rewrite every IP's flat filelist rtl/**/*.f and FuseSoC core *.core from its .manifest (scripts/rtl_filelist.py; the ctest filelists_up_to_date checks them)"
@@ -63,7 +63,7 @@ sim: build
 
 # The system stage once per SetupII of the setup (docs/setup_hw.md#the-folded-setup):
 # clocks per pixel per scene for each initiation interval. Turns the CMake option
-# SPECULAR_SYSTEM_SETUP_II on in $(BUILD) (it stays on: four more Verilator models per build).
+# SPECULAR_SYSTEM_SETUP_II on in $(BUILD) (it stays on: three more Verilator models per build; 16 is always built).
 sim-setup-ii: configure
 	@cmake -S . -B $(BUILD) -DSPECULAR_SYSTEM_SETUP_II=ON > /dev/null
 	@cmake --build $(BUILD) -j $(JOBS) --target sim_regression

@@ -57,7 +57,7 @@ struct SystemStats {
 
 // `bc`: the default build configuration (specular_system has its parameter defaults).
 // random_spans: random geometry spans of the random run (0: none). setup_ii: specular_system's
-// SetupII (docs/setup_hw.md#the-folded-setup); 1 is always built, 8, 16, 32 and 64 with the
+// SetupII (docs/setup_hw.md#the-folded-setup); 1 and 16 are always built, 8, 32 and 64 with the
 // CMake option SPECULAR_SYSTEM_SETUP_II (system_setup_ii_built). Throws std::invalid_argument
 // for a SetupII that is not built.
 bool system_setup_ii_built(int setup_ii);
