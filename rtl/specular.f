@@ -27,6 +27,7 @@ rtl/core/specular_coef_rom.sv
 rtl/core/specular_decoder.sv
 rtl/core/specular_angle_mul.sv
 rtl/core/specular_cos_k_rom.sv
+rtl/core/specular_blend.sv
 rtl/core/specular_intensity_mul.sv
 rtl/core/specular_control.sv
 rtl/core/specular_stream.sv

@@ -41,6 +41,63 @@ N_BITS = 10  # NBits, the device's default (rtl/core/specular_params.svh): BankM
 ROM_FIELDS = ("banks", "bank_max_n", "coef_bits", "coef_frac", "cos_addr_bits", "cos_data_bits", "cos_delta_bits")
 
 
+BUILD_CONFIGS = "roms/build_configs.cmake"
+
+
+def build_blend_configs(root):
+    """{name: {param: value}} of the blend builds of roms/build_configs.cmake (romgen --all writes
+    it from build_configs() in model/device/rom_image.cpp), defaults filled in from the first one's."""
+    import re
+    with open(os.path.join(root, BUILD_CONFIGS)) as f:
+        text = f.read()
+    out = {}
+    for m in re.finditer(r'^set\(SPECULAR_BUILD_CONFIG_(\w+)_RTL_ARGS(.*)\)$', text, re.M):
+        args = dict(re.findall(r'"-G(\w+)=(.*?)"(?= |$)', m.group(2).replace('\\"', "")))
+        if args.get("Blend") == "1":
+            out[m.group(1)] = args
+    return out
+
+
+def blend_configurations(root, runs):
+    """The blend configurations (B2, B4: no single bank meets them, docs/display_exact.md): one per
+    distinct "best_blend" that a build of roms/build_configs.cmake implements, its ROM files that
+    build's (romgen --all); a best_blend no build implements is reported, not emitted."""
+    builds = build_blend_configs(root)
+    out = []
+    for r in runs:
+        b = r.get("best_blend")
+        if r.get("best") or not b:
+            continue
+        key = tuple(json.dumps(b.get(k)) for k in ROM_FIELDS + ("psi_mul_frac", "cos_frac_bits", "weight_bits"))
+        same = next((c for c in out if c["budget"] == r["budget"] and c["key"] == key), None)
+        if same:
+            same["n_max"].append(r["n_max"])
+            continue
+        nb = len(b["banks"])
+        packed = sum(v << (N_BITS * j) for j, v in enumerate(b["bank_max_n"]))
+        want = {"CoefBits": str(b["coef_bits"]), "CoefFrac": str(b["coef_frac"]), "PsiMulFrac": str(b["psi_mul_frac"]),
+                "CosAddrBits": str(b["cos_addr_bits"]), "CosDataBits": str(b["cos_data_bits"]),
+                "CosDeltaBits": str(b["cos_delta_bits"]), "CosFracBits": str(b["cos_frac_bits"]),
+                "NumBanks": str(nb), "BankMaxN": f"{N_BITS * nb}'h{packed:x}", "WeightBits": str(b["weight_bits"])}
+        name = next((n for n, a in builds.items() if all(a.get(k) == v for k, v in want.items())), None)
+        if name is None or any(b.get("bank_shift") or []):
+            print(f"budget_roms.py: note: the blend of budget {r['budget']} at n <= {r['n_max']} has no build in "
+                  f"{BUILD_CONFIGS} (model/device/rom_image.cpp build_configs)", file=sys.stderr)
+            continue
+        a = builds[name]
+        params = [f"{k}={want[k]}" for k in ("CoefBits", "CoefFrac", "PsiMulFrac")] + ["CosInterp=1"] + \
+                 [f"{k}={want[k]}" for k in ("CosAddrBits", "CosDataBits", "CosDeltaBits", "CosFracBits", "NumBanks",
+                                               "BankMaxN")] + ["Blend=1", f"WeightBits={want['WeightBits']}",
+                                                               f"CoefRomFile={a['CoefRomFile']}",
+                                                               f"CosRomFile={a['CosRomFile']}"]
+        out.append({"budget": r["budget"], "n_max": [r["n_max"]], "best": b, "key": key, "policy": "blend", "build": name,
+                    "params": params, "dir": os.path.dirname(a["CoefRomFile"])})
+    for c in out:
+        c["n_max"].sort()
+        c["label"] = f"device_{c['budget']}_n{c['n_max'][-1]}"
+    return out
+
+
 def configurations(root):
     """[{label, budget, n_max: [...], best, policy}] from the search results, in file order."""
     with open(os.path.join(root, SEARCH)) as f:
@@ -49,7 +106,7 @@ def configurations(root):
     for r in d["runs"]:
         best = r.get("best")
         if not best:
-            continue  # no single-bank set meets the budget (B2, B4: blended only, docs/display_exact.md; no RTL yet)
+            continue  # no single-bank set meets the budget (B2, B4): blend_configurations
         same = next((c for c in out if c["budget"] == r["budget"] and c["best"] == best
                      and c["policy"] == r["policy"]), None)
         if same:
@@ -114,6 +171,12 @@ def generate(root, romgen, dest):
         manifest["configurations"].append({
             "label": c["label"], "budget": c["budget"], "n_max": c["n_max"], "policy": c["policy"],
             "rom_bits": c["best"]["rom_bits"], "dir": c["dir"], "fpga_params": fpga_params(c, files)})
+    with open(os.path.join(root, SEARCH)) as f:
+        runs = json.load(f)["runs"]
+    for c in blend_configurations(root, runs):
+        manifest["configurations"].append({
+            "label": c["label"], "budget": c["budget"], "n_max": c["n_max"], "policy": c["policy"],
+            "rom_bits": c["best"]["rom_bits"], "dir": c["dir"], "build": c["build"], "fpga_params": c["params"]})
     with open(os.path.join(dest, MANIFEST), "w") as f:
         json.dump(manifest, f, indent=1)
         f.write("\n")

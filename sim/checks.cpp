@@ -152,7 +152,20 @@ Checker::Checker(const device::DeviceModel& model, const CoefSpec& spec, Budget 
         if (n <= static_cast<uint32_t>(f.bank_max_n[j])) bank = static_cast<int>(j);
     bank_.push_back(bank);
     xe_.push_back(bank >= 0 ? epicenter_end(static_cast<double>(n)) : 0.0);
-    a_.push_back(bank >= 0 ? coefficient(static_cast<int>(n), f.banks[bank], spec) : 0.0);
+    if (!f.blend) {
+      a_.push_back(bank >= 0 ? coefficient(static_cast<int>(n), f.banks[bank], spec) : 0.0);
+      continue;
+    }
+    // The blend: the values the ROM 9 fields stand for (device_model.hpp), the shifts undone.
+    const int bank2 = bank >= 0 ? model_.second_bank(bank) : -1;
+    const double s1 = bank >= 0 ? std::ldexp(1.0, -f.shift_of(bank)) : 0.0;
+    const double s2 = bank2 >= 0 ? std::ldexp(1.0, -f.shift_of(bank2)) : 0.0;
+    a_.push_back(bank >= 0 ? device::coef_value(model_.coef_rom()[n], f) * s1 : 0.0);
+    bank2_.push_back(bank2);
+    a2_.push_back(bank2 >= 0 ? device::coef_value(model_.blend_roms().coef2[n], f) * s2 : 0.0);
+    t_.push_back(bank >= 0 ? std::ldexp(static_cast<double>(model_.blend_roms().weight[n]), -f.weight_bits) : 0.0);
+    end1_.push_back(kHalfPi * s1);
+    end2_.push_back(kHalfPi * s2);
   }
   // The reference angle psi_i = psi0 + i dpsi is the exact sum (references()): register 8
   // holds it without wrapping (docs/device.md#fixed-point-contract: psi0 then psi + dpsi,
@@ -220,7 +233,20 @@ void Checker::references(const device::Registers& written, size_t npix, double* 
     const double psi = device::angle_value(code, f);
     const double apsi = std::fabs(psi);
     psi_out[i] = psi;
-    ref_b[i] = n_ok && a * apsi < kHalfPi && apsi < kHalfPi ? c * ipow(std::cos(a * apsi), k) : 0.0;
+    if (f.blend) {
+      // Each read is 0 past its bank's domain, as in the device.
+      double b = 0.0;
+      if (n_ok && apsi < kHalfPi) {
+        const double t = t_[r.n], a2 = a2_[r.n];
+        const uint32_t k2 = static_cast<uint32_t>(f.banks[bank2_[r.n]]);
+        const double c1 = a * apsi < end1_[r.n] ? ipow(std::cos(a * apsi), k) : 0.0;
+        const double c2 = a2 * apsi < end2_[r.n] ? ipow(std::cos(a2 * apsi), k2) : 0.0;
+        b = c * ((1.0 - t) * c1 + t * c2);
+      }
+      ref_b[i] = b;
+    } else {
+      ref_b[i] = n_ok && a * apsi < kHalfPi && apsi < kHalfPi ? c * ipow(std::cos(a * apsi), k) : 0.0;
+    }
     ref_c[i] = n_ok && apsi < kHalfPi ? c * ipow(std::cos(psi), r.n) : 0.0;
   }
 }
@@ -264,7 +290,20 @@ void Checker::compare(const device::Registers& written, const std::string& kind,
     keep_max(st.quant_lsb, err_b / lsb, r, kind, px, psi, c);
     if (n_ok) {
       const double ex = half_step + coef_err * std::min(apsi, kHalfPi) + a * trunc;
-      const double bound = c * (dk_[bank] * ex + d2k_[bank] * interp + k_.rom_lsb) + 0.5 * lsb;
+      double bound = c * (dk_[bank] * ex + d2k_[bank] * interp + k_.rom_lsb) + 0.5 * lsb;
+      if (model_.format().blend) {
+        // Each read's bound in its own domain (the shift scales the address step, the
+        // coefficient's rounding and the interpolation's curvature term), weighted as the
+        // blend weights the reads, plus the blend's rounding (one ROM 12 LSB).
+        auto read_bound = [&](int j, double aj) {
+          const double sc = std::ldexp(1.0, -model_.format().shift_of(j));
+          const double exj = sc * (half_step + coef_err * std::min(apsi, kHalfPi)) + aj * trunc;
+          return dk_[j] * exj + d2k_[j] * interp * sc * sc + k_.rom_lsb;
+        };
+        const double t = t_[r.n];
+        bound = c * ((1.0 - t) * read_bound(bank, a) + t * read_bound(bank2_[r.n], a2_[r.n]) + k_.rom_lsb) +
+                0.5 * lsb;
+      }
       keep_max(st.quant_excess, err_b / bound, r, kind, px, psi, c);
       if (err_b > bound) {
         if (st.quant_violations < 4)

@@ -93,7 +93,9 @@ struct PolicyStats {
 class Checker {
  public:
   // spec: the configuration's ROM 9 policy; the checker takes the exact a(n) from it, for
-  // the k its own decoder 10 (from the format's table) gives n.
+  // the k its own decoder 10 (from the format's table) gives n. A blend format (Format::blend)
+  // has no policy: (b) is then the blend (1 - t) cos^k1(a1 |psi|) + t cos^k2(a2 |psi|) of the
+  // values its ROM 9 words stand for (a1, a2, t = w / 2^W), spec unused.
   Checker(const device::DeviceModel& model, const CoefSpec& spec, Budget budget);
   // Checks every pixel of `run` against the three references and folds the result into `st`.
   // The golden model and the double references are computed in two timed passes before the
@@ -117,6 +119,10 @@ class Checker {
  private:
   const device::DeviceModel& model_;
   std::vector<double> a_;
+  // Blend formats only, per n code: the second bank (-1: none), a2, the weight t and each read's
+  // domain end in radians of a |psi| (pi/2 2^-shift).
+  std::vector<int> bank2_;
+  std::vector<double> a2_, t_, end1_, end2_;
   Budget budget_;
   std::vector<double> dk_;   // max |d/dx cos^k x| per bank
   std::vector<double> d2k_;  // max |d^2/dx^2 cos^k x| per bank

@@ -11,7 +11,8 @@
 module specular_pipeline #(
   parameter int PsiMulFrac   /*verilator public*/ = 0,
   parameter int CosDeltaBits /*verilator public*/ = 0,
-  parameter int CosDataBits  /*verilator public*/ = 0
+  parameter int CosDataBits  /*verilator public*/ = 0,
+  parameter bit Blend        /*verilator public*/ = 1'b0
 ) ();
 
   function automatic logic [8*TreeTableBits-1:0] tree_table();
@@ -31,13 +32,14 @@ module specular_pipeline #(
   localparam int OutBufStages     /*verilator public*/ = specular_pkg::OutBufStages;
   localparam int Mul11Stages      /*verilator public*/ = specular_pkg::angle_mul_stages(PsiMulFrac);
   localparam int Rom12Stages      /*verilator public*/ = specular_pkg::cos_k_rom_stages(CosDeltaBits);
+  localparam int BlendStages      /*verilator public*/ = specular_pkg::blend_stages(Blend, CosDataBits);
   localparam int Mul13Stages      /*verilator public*/ = specular_pkg::intensity_mul_stages(CosDataBits);
   localparam int PipeDepth        /*verilator public*/ =
-      specular_pkg::stream_pipe_depth(PsiMulFrac, CosDeltaBits, CosDataBits);
+      specular_pkg::stream_pipe_depth(PsiMulFrac, CosDeltaBits, CosDataBits, Blend);
   localparam int StreamLatency    /*verilator public*/ =
-      specular_pkg::stream_latency(PsiMulFrac, CosDeltaBits, CosDataBits);
+      specular_pkg::stream_latency(PsiMulFrac, CosDeltaBits, CosDataBits, Blend);
   localparam int UnitLatency      /*verilator public*/ =
-      specular_pkg::unit_latency(PsiMulFrac, CosDeltaBits, CosDataBits);
+      specular_pkg::unit_latency(PsiMulFrac, CosDeltaBits, CosDataBits, Blend);
   // specular_pipe_mul's stages for BBits = b in byte b of TreeStagesTable, b = 2 .. 31 (a
   // standalone multiplier of any width the block tests use).
   localparam int TreeTableBits = 32;

@@ -7,6 +7,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
+#include <mutex>
 #include <numbers>
 #include <stdexcept>
 #include <string>
@@ -77,6 +79,41 @@ device::BlendRoms blend_rom_fields(const device::Format& f, const std::vector<Bl
     b.weight[n] = static_cast<uint32_t>(std::clamp(std::round(std::ldexp(c.t, f.weight_bits)), 0.0, wmax));
   }
   return b;
+}
+
+std::vector<uint64_t> blend_coef_image(const device::Format& f, const std::vector<BlendCoef>& table) {
+  std::vector<uint32_t> coef;
+  const device::BlendRoms b = blend_rom_fields(f, table, coef);
+  std::vector<uint64_t> img(coef.size());
+  for (size_t n = 0; n < coef.size(); ++n)
+    img[n] = (static_cast<uint64_t>(coef[n]) << (f.coef_bits + f.weight_bits)) |
+             (static_cast<uint64_t>(b.coef2[n]) << f.weight_bits) | b.weight[n];
+  return img;
+}
+
+device::BlendRoms unpack_blend_coef(const device::Format& f, const std::vector<uint64_t>& words,
+                                    std::vector<uint32_t>& coef) {
+  if (static_cast<int>(words.size()) != f.coef_rom_depth())
+    throw std::invalid_argument("blend ROM 9 has " + std::to_string(words.size()) + " words, expected " +
+                                std::to_string(f.coef_rom_depth()));
+  const uint64_t cmask = (uint64_t{1} << f.coef_bits) - 1, wmask = (uint64_t{1} << f.weight_bits) - 1;
+  device::BlendRoms b;
+  coef.clear();
+  for (uint64_t w : words) {
+    coef.push_back(static_cast<uint32_t>((w >> (f.coef_bits + f.weight_bits)) & cmask));
+    b.coef2.push_back(static_cast<uint32_t>((w >> f.weight_bits) & cmask));
+    b.weight.push_back(static_cast<uint32_t>(w & wmask));
+  }
+  return b;
+}
+
+const std::vector<BlendCoef>& blend_table_for(const device::Format& f) {
+  static std::mutex m;
+  static std::map<std::vector<int>, std::vector<BlendCoef>> tables;
+  const std::lock_guard<std::mutex> lock(m);
+  auto it = tables.find(f.banks);
+  if (it == tables.end()) it = tables.emplace(f.banks, blend_minimax_table(f.banks, f.max_n())).first;
+  return it->second;
 }
 
 device::DeviceModel blend_device_model(const device::Format& f, const std::vector<BlendCoef>& table,

@@ -33,6 +33,17 @@ device::Format blend_format(const device::Format& base, const std::vector<int>& 
 device::BlendRoms blend_rom_fields(const device::Format& f, const std::vector<BlendCoef>& table,
                                    std::vector<uint32_t>& coef);
 
+// ROM 9 as the RTL reads it in blend mode: one word per n of coef_word_bits() bits,
+// {a1, a2, w} with a1 in the most significant bits (rtl/core/specular_stream.sv), and back.
+// unpack_blend_coef throws std::invalid_argument when the image has the wrong depth.
+std::vector<uint64_t> blend_coef_image(const device::Format& f, const std::vector<BlendCoef>& table);
+device::BlendRoms unpack_blend_coef(const device::Format& f, const std::vector<uint64_t>& words,
+                                    std::vector<uint32_t>& coef);
+
+// The fits of a blend format's bank set for every n of 1..max_n (blend_minimax_table), computed
+// once per bank set and process (about 10 s each on two cores).
+const std::vector<BlendCoef>& blend_table_for(const device::Format& f);
+
 // The golden model of a blend format with ROM 12 from cos_rom_image (the caller may pass one).
 device::DeviceModel blend_device_model(const device::Format& f, const std::vector<BlendCoef>& table);
 device::DeviceModel blend_device_model(const device::Format& f, const std::vector<BlendCoef>& table,

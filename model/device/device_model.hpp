@@ -198,6 +198,9 @@ class DeviceModel {
   DeviceModel(Format f, std::vector<uint32_t> coef_rom, std::vector<uint32_t> cos_rom, BlendRoms blend);
 
   const Format& format() const { return f_; }
+  // ROM 9 (a, or a1 in blend mode) and, in blend mode, its fields a2 and w.
+  const std::vector<uint32_t>& coef_rom() const { return coef_rom_; }
+  const BlendRoms& blend_roms() const { return blend_; }
   // Decoder 10: bank index for n, -1 when n = 0 or n > max_n.
   int bank_of(uint32_t n) const;
   // Blend mode: the second bank of first bank j (j + 1, the last bank for the last).

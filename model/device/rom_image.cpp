@@ -2,6 +2,7 @@
 // ROM images and hex files; the format is documented in rom_image.hpp and roms/README.md.
 #include "rom_image.hpp"
 
+#include "blend_rom.hpp"
 #include "decoder_table.hpp"
 
 #include <cctype>
@@ -41,15 +42,27 @@ const std::vector<BuildConfig>& build_configs() {
     v.push_back({"default", device::Format{}, "minimax", "roms", {0.0010, 0.01, 4.0}});
     v.push_back({"patent", device::Format::patent(), "maclaurin", "roms/patent", {0.012, 0.025, 0.0}});
     // The default datapath with the patent's bank set: what the bank set buys.
-    device::Format b4;
-    b4.banks = {1, 2, 4, 16};
-    b4.bank_max_n = derive_bank_max_n(b4.banks, parse_coef_spec("minimax"));
-    v.push_back({"banks4-interp", b4, "minimax", "roms/variants/banks4-interp", {0.0020, 0.02, 4.0}, false});
+    device::Format p4;
+    p4.banks = {1, 2, 4, 16};
+    p4.bank_max_n = derive_bank_max_n(p4.banks, parse_coef_spec("minimax"));
+    v.push_back({"banks4-interp", p4, "minimax", "roms/variants/banks4-interp", {0.0020, 0.02, 4.0}, false});
     // Half the ROM 12 entries: what the table size buys.
     device::Format i128;
     i128.cos_addr_bits = 7;
     i128.cos_delta_bits = 13;
     v.push_back({"interp128", i128, "minimax", "roms/variants/interp128", {0.0010, 0.01, 4.0}, false});
+    // The display-exact devices (docs/display_exact.md): the cheapest blends device_search found
+    // for B2 and B4 over n <= 1000 ("best_blend" of docs/measured/device_search.json; the ctest
+    // blend_configs_match_search checks these fields against it). Absolute budgets only: the
+    // relative one of the epicenter is the single-bank builds' (sim/README.md).
+    device::Format b2 = blend_format(device::Format{}, {1, 2, 4, 8});
+    b2.coef_bits = 13, b2.coef_frac = 9, b2.psi_mul_frac = 15, b2.weight_bits = 10;
+    b2.cos_addr_bits = 7, b2.cos_data_bits = 11, b2.cos_delta_bits = 6, b2.cos_frac_bits = 7;
+    v.push_back({"blend-b2", b2, "blend", "roms/blend/b2", {1.0, std::ldexp(1.0, -9), 0.0}});
+    device::Format b4 = blend_format(device::Format{}, {1, 2, 3, 4, 8, 16});
+    b4.coef_bits = 15, b4.coef_frac = 12, b4.psi_mul_frac = 19, b4.weight_bits = 9;
+    b4.cos_addr_bits = 7, b4.cos_data_bits = 13, b4.cos_delta_bits = 8, b4.cos_frac_bits = 10;
+    v.push_back({"blend-b4", b4, "blend", "roms/blend/b4", {1.0, std::ldexp(1.0, -11), 0.0}});
     return v;
   }();
   return configs;
@@ -67,6 +80,12 @@ std::string quoted(const std::string& s) {
 
 std::vector<RtlParameter> rtl_parameters(const BuildConfig& bc) {
   const device::Format& f = bc.f;
+  // Decoder 10 in RTL has one entry per bank (a blend set whose last bank is past 1000 would
+  // have one fewer, docs/display_exact.md#datapath): such a set has no RTL build.
+  if (f.bank_max_n.size() != f.banks.size())
+    throw std::invalid_argument(bc.name + ": the RTL's decoder 10 needs one bank_max_n entry per bank (" +
+                                std::to_string(f.banks.size()) + " banks, " + std::to_string(f.bank_max_n.size()) +
+                                " entries)");
   auto i = [](int v) { return std::to_string(v); };
   // BankMaxN: NumBanks fields of NBits, bank 0 in the least significant bits.
   const int width = static_cast<int>(f.bank_max_n.size()) * f.n_bits;
@@ -96,6 +115,8 @@ std::vector<RtlParameter> rtl_parameters(const BuildConfig& bc) {
           {"CosFracBits", i(f.cos_frac_bits)},
           {"NumBanks", i(static_cast<int>(f.banks.size()))},
           {"BankMaxN", std::to_string(width) + "'h" + hex},
+          {"Blend", f.blend ? "1" : "0"},
+          {"WeightBits", i(f.weight_bits)},
           {"CoefRomFile", quoted(bc.coef_hex())},
           {"CosRomFile", quoted(bc.cos_hex())}};
 }
@@ -137,7 +158,8 @@ std::string build_configs_cmake() {
     o << ")\n";
     o << "set(" << key << "_PIPELINE_ARGS";
     for (const auto& p : ps)
-      if (p.name == "PsiMulFrac" || p.name == "CosDeltaBits" || p.name == "CosDataBits") o << " " << flag(p);
+      if (p.name == "PsiMulFrac" || p.name == "CosDeltaBits" || p.name == "CosDataBits" || p.name == "Blend")
+        o << " " << flag(p);
     o << ")\n";
   }
   return o.str();
@@ -221,17 +243,20 @@ std::vector<uint32_t> cos_rom_image(const device::Format& f) {
   return img;
 }
 
-void write_hex(const std::string& path, const std::vector<uint32_t>& image, int bits) {
+namespace {
+template <class Word>
+void write_hex_words(const std::string& path, const std::vector<Word>& image, int bits) {
+  if (bits < 1 || bits > 64) throw std::invalid_argument(path + ": word width " + std::to_string(bits) + " (1..64)");
   const int digits = (bits + 3) / 4;
   std::string text;
   text.reserve(image.size() * (digits + 1));
-  char buf[16];
   for (size_t a = 0; a < image.size(); ++a) {
-    if (bits < 32 && (image[a] >> bits) != 0)
+    const uint64_t w = image[a];
+    if (bits < 64 && (w >> bits) != 0)
       throw std::runtime_error(path + ": word " + std::to_string(a) + " does not fit " + std::to_string(bits) +
                                " bits");
-    std::snprintf(buf, sizeof buf, "%0*x\n", digits, image[a]);
-    text += buf;
+    for (int d = digits - 1; d >= 0; --d) text += "0123456789abcdef"[(w >> (4 * d)) & 0xF];
+    text += '\n';
   }
   const std::string tmp = path + ".tmp." + std::to_string(::getpid());
   {
@@ -252,16 +277,16 @@ void write_hex(const std::string& path, const std::vector<uint32_t>& image, int 
   }
 }
 
-std::vector<uint32_t> read_hex(const std::string& path, int bits, int depth) {
+std::vector<uint64_t> read_hex_words(const std::string& path, int bits, int depth, int max_bits) {
   // Found by fuzzing (tests/fuzz/corpus/rom_hex/crash_bits35): a width above 32 let a
   // 9-digit word pass the width test and be truncated into the uint32_t image.
-  if (bits < 1 || bits > 32 || depth < 0)
+  if (bits < 1 || bits > max_bits || depth < 0)
     throw std::invalid_argument(path + ": word width " + std::to_string(bits) + " or depth " + std::to_string(depth) +
-                                " not supported (width 1..32 bits, depth >= 0)");
+                                " not supported (width 1.." + std::to_string(max_bits) + " bits, depth >= 0)");
   std::ifstream in(path, std::ios::binary);
   if (!in) throw std::runtime_error(path + ": cannot open");
   const int digits = (bits + 3) / 4;
-  std::vector<uint32_t> img;
+  std::vector<uint64_t> img;
   img.reserve(depth);
   std::string line;
   int lineno = 0;
@@ -285,19 +310,43 @@ std::vector<uint32_t> read_hex(const std::string& path, int bits, int depth) {
       else fail("'" + line + "' is not a hex word");
       v = v * 16 + static_cast<uint64_t>(d);
     }
-    if ((v >> bits) != 0) fail("word " + line + " is wider than " + std::to_string(bits) + " bits");
+    if (bits < 64 && (v >> bits) != 0) fail("word " + line + " is wider than " + std::to_string(bits) + " bits");
     if (lineno > depth) fail("more than " + std::to_string(depth) + " words");
-    img.push_back(static_cast<uint32_t>(v));
+    img.push_back(v);
   }
   if (static_cast<int>(img.size()) != depth)
     throw std::runtime_error(path + ": " + std::to_string(img.size()) + " words, expected " + std::to_string(depth));
   return img;
 }
 
+}  // namespace
+
+void write_hex(const std::string& path, const std::vector<uint32_t>& image, int bits) {
+  write_hex_words(path, image, bits);
+}
+
+void write_hex_wide(const std::string& path, const std::vector<uint64_t>& image, int bits) {
+  write_hex_words(path, image, bits);
+}
+
+std::vector<uint32_t> read_hex(const std::string& path, int bits, int depth) {
+  const std::vector<uint64_t> w = read_hex_words(path, bits, depth, 32);
+  return std::vector<uint32_t>(w.begin(), w.end());
+}
+
+std::vector<uint64_t> read_hex_wide(const std::string& path, int bits, int depth) {
+  return read_hex_words(path, bits, depth, 64);
+}
+
 device::DeviceModel load_device_model(const device::Format& f, const std::string& coef_hex,
                                       const std::string& cos_hex) {
-  return device::DeviceModel(f, read_hex(coef_hex, f.coef_bits, f.coef_rom_depth()),
-                             read_hex(cos_hex, f.cos_word_bits(), f.cos_rom_depth()));
+  std::vector<uint32_t> cos = read_hex(cos_hex, f.cos_word_bits(), f.cos_rom_depth());
+  if (f.blend) {
+    std::vector<uint32_t> coef;
+    device::BlendRoms b = unpack_blend_coef(f, read_hex_wide(coef_hex, f.coef_word_bits(), f.coef_rom_depth()), coef);
+    return device::DeviceModel(f, std::move(coef), std::move(cos), std::move(b));
+  }
+  return device::DeviceModel(f, read_hex(coef_hex, f.coef_bits, f.coef_rom_depth()), std::move(cos));
 }
 
 }  // namespace specular

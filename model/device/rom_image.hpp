@@ -50,7 +50,7 @@ struct ErrorBudget {
 struct BuildConfig {
   std::string name;
   device::Format f;
-  std::string policy;  // ROM 9 coefficient policy (parse_coef_spec)
+  std::string policy;  // ROM 9 coefficient policy (parse_coef_spec), or "blend" (f.blend: the fits)
   std::string dir;     // relative to the repository root
   ErrorBudget budget;
   bool scenes = true;  // the full regression runs the scene stage on it (sim/README.md)
@@ -95,8 +95,12 @@ void write_hex(const std::string& path, const std::vector<uint32_t>& image, int 
 // digits, word wider than `bits`, empty line, or not exactly `depth` lines), and
 // std::invalid_argument when `bits` is not in 1..32 or `depth` is negative.
 std::vector<uint32_t> read_hex(const std::string& path, int bits, int depth);
+// The same for words of up to 64 bits (ROM 9 of a blend build: {a1, a2, w}, blend_rom.hpp).
+void write_hex_wide(const std::string& path, const std::vector<uint64_t>& image, int bits);
+std::vector<uint64_t> read_hex_wide(const std::string& path, int bits, int depth);
 
-// Golden model from ROM files (default format paths relative to the working directory).
+// Golden model from ROM files (default format paths relative to the working directory); a blend
+// format (Format::blend) reads ROM 9 as words {a1, a2, w} (blend_rom.hpp).
 device::DeviceModel load_device_model(const device::Format& f, const std::string& coef_hex,
                                       const std::string& cos_hex);
 

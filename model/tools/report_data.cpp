@@ -12,6 +12,7 @@
 //   hardcases   the docs/scanline_setup.md hard cases through scanline_setup, one object each
 // Non-finite numbers are written as the strings "inf", "-inf", "nan" (JSON has no such
 // numbers). Exit code 2 on bad arguments (nothing written).
+#include "blend_rom.hpp"
 #include "cli_parse.hpp"
 #include "brdf.hpp"
 #include "coefficients.hpp"
@@ -180,9 +181,11 @@ json section_hardware(const std::vector<int>& ns) {
   json out = json::array();
   for (const BuildConfig& c : build_configs()) {
     const device::Format& f = c.f;
-    const CoefSpec spec = parse_coef_spec(c.policy);
     const auto t0 = std::chrono::steady_clock::now();
-    const device::DeviceModel dm(f, coef_rom_image(f, spec), cos_rom_image(f));
+    // A blend build's ROM 9 comes from its fits (blend_rom.hpp), the others' from their policy.
+    const device::DeviceModel dm = f.blend ? blend_device_model(f, blend_table_for(f))
+                                           : device::DeviceModel(f, coef_rom_image(f, parse_coef_spec(c.policy)),
+                                                                 cos_rom_image(f));
     json rel = json::array(), ab = json::array(), rel_lsb = json::array();
     for (int n : ns) {
       const DeviceError e = device_error(dm, n);
@@ -206,7 +209,8 @@ json section_hardware(const std::vector<int>& ns) {
                    {"bank_max_n", f.bank_max_n},
                    {"coef_rom", c.coef_hex()},
                    {"cos_rom", c.cos_hex()},
-                   {"coef_rom_bits", int64_t(f.coef_rom_depth()) * f.coef_bits},
+                   {"blend", f.blend},
+                   {"coef_rom_bits", int64_t(f.coef_rom_depth()) * f.coef_word_bits()},
                    {"cos_rom_bits", int64_t(f.cos_rom_depth()) * f.cos_word_bits()},
                    {"n", ns},
                    {"max_rel_epicenter", rel},

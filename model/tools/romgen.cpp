@@ -10,6 +10,7 @@
 // A bank set given without --bank-max-n gets the derived decoder table (decoder_table.hpp).
 // Files are written whole (temp file + rename); on any error nothing is written and the
 // exit code is 2 (bad arguments) or 1 (I/O).
+#include "blend_rom.hpp"
 #include "cli_parse.hpp"
 #include "coefficients.hpp"
 #include "decoder_table.hpp"
@@ -84,7 +85,8 @@ int main(int argc, char** argv) {
 
   // Build every image before writing any file, so a bad policy or format writes nothing.
   std::vector<Job> jobs;
-  std::vector<std::pair<std::string, std::vector<uint32_t>>> files;  // path, image
+  std::vector<std::pair<std::string, std::vector<uint64_t>>> files;  // path, image
+  auto wide = [](const std::vector<uint32_t>& v) { return std::vector<uint64_t>(v.begin(), v.end()); };
   std::vector<int> widths;
   try {
     auto make_job = [&](const std::string& cfg, const std::string& dir) {
@@ -134,6 +136,14 @@ int main(int argc, char** argv) {
     }
     for (const Job& j : jobs) {
       for (const auto& p : j.policies) {
+        if (j.f.blend) {
+          // ROM 9 of a blend build: {a1, a2, w} per n from the fits of its bank set
+          // (docs/display_exact.md#coefficients).
+          files.emplace_back((std::filesystem::path(j.dir) / coef_file_name(p)).string(),
+                             specular::blend_coef_image(j.f, specular::blend_table_for(j.f)));
+          widths.push_back(j.f.coef_word_bits());
+          continue;
+        }
         specular::CoefSpec spec;
         try {
           spec = specular::parse_coef_spec(p);
@@ -141,11 +151,11 @@ int main(int argc, char** argv) {
           throw std::invalid_argument("--policy: " + std::string(e.what()));
         }
         files.emplace_back((std::filesystem::path(j.dir) / coef_file_name(p)).string(),
-                           specular::coef_rom_image(j.f, spec));
+                           wide(specular::coef_rom_image(j.f, spec)));
         widths.push_back(j.f.coef_bits);
       }
       files.emplace_back((std::filesystem::path(j.dir) / specular::cos_rom_file_name(j.f)).string(),
-                         specular::cos_rom_image(j.f));
+                         wide(specular::cos_rom_image(j.f)));
       widths.push_back(j.f.cos_word_bits());
     }
   } catch (const std::invalid_argument& e) {
@@ -156,7 +166,7 @@ int main(int argc, char** argv) {
   try {
     for (size_t i = 0; i < files.size(); ++i) {
       std::filesystem::create_directories(std::filesystem::path(files[i].first).parent_path());
-      specular::write_hex(files[i].first, files[i].second, widths[i]);
+      specular::write_hex_wide(files[i].first, files[i].second, widths[i]);
       if (!quiet)
         std::cout << "wrote " << files[i].first << " (" << files[i].second.size() << " x " << widths[i] << " bits)\n";
     }

@@ -83,7 +83,7 @@ module specular_axil #(
 
   // Build information: the core's latency (specular_pkg, docs/pipeline.md#stage-counts); the
   // testbench checks it against the latency it observes.
-  localparam int Latency     = specular_pkg::stream_latency(PsiMulFrac, CosDeltaBits, CosDataBits);
+  localparam int Latency     = specular_pkg::stream_latency(PsiMulFrac, CosDeltaBits, CosDataBits, Blend);
   localparam int CosWordBits = CosInterp ? CosDataBits + 1 + CosDeltaBits : CosDataBits;
   localparam int RomBits     = NumBanks * (2 ** CosAddrBits) * CosWordBits;
 

@@ -21,6 +21,10 @@
 //                          of the interpolation weight (cos_addr_bits, ...)
 //   NumBanks, BankMaxN     decoder 10: the banks, and the largest n of each (NBits bits per
 //                          bank, bank 0 in the least significant bits) (banks, bank_max_n)
+//   Blend, WeightBits      the display-exact datapath (docs/display_exact.md): two ROM 12 reads
+//                          per pixel (decoder 10's bank and the next), blended by a weight of
+//                          WeightBits from ROM 9, whose words are then {a1, a2, w}
+//                          (Format::blend, weight_bits)
 //   MulTileBits            the multipliers' resources (specular_pipe_mul's TileBits): 0 LUT
 //                          trees (iCE40-HX8K), 16 SB_MAC16 tiles (UP5K), 18 MULT18X18D tiles
 //                          (ECP5); bit-exact and of equal latency in every style
@@ -55,6 +59,8 @@
   parameter int NumBanks     /*verilator public*/ = 8, \
   parameter logic [NumBanks*NBits-1:0] BankMaxN /*verilator public*/ = \
       {10'd1000, 10'd13, 10'd9, 10'd6, 10'd4, 10'd3, 10'd2, 10'd1}, \
+  parameter bit Blend        /*verilator public*/ = 1'b0, \
+  parameter int WeightBits   /*verilator public*/ = 12, \
   parameter int MulTileBits  /*verilator public*/ = 0, \
   parameter     CoefRomFile = "roms/coef_minimax.hex", \
   parameter     CosRomFile  = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex"
@@ -77,6 +83,8 @@
   .CosFracBits  (CosFracBits), \
   .NumBanks     (NumBanks), \
   .BankMaxN     (BankMaxN), \
+  .Blend        (Blend), \
+  .WeightBits   (WeightBits), \
   .MulTileBits  (MulTileBits), \
   .CoefRomFile  (CoefRomFile), \
   .CosRomFile   (CosRomFile)

@@ -83,7 +83,11 @@ module specular_stream #(
   localparam int AccStages   = specular_pkg::AccStages;
   localparam int Mul11Stages = specular_pkg::angle_mul_stages(PsiMulFrac);
   localparam int Rom12Stages = specular_pkg::cos_k_rom_stages(CosDeltaBits);
-  localparam int PipeDepth   = specular_pkg::stream_pipe_depth(PsiMulFrac, CosDeltaBits, CosDataBits);
+  localparam int BlendStages = specular_pkg::blend_stages(Blend, CosDataBits);
+  localparam int PipeDepth   = specular_pkg::stream_pipe_depth(PsiMulFrac, CosDeltaBits, CosDataBits, Blend);
+  // The blend (docs/display_exact.md): two reads per pixel, ROM 9 words {a1, a2, w}.
+  localparam int Reads       = Blend ? 2 : 1;
+  localparam int CoefWord    = Blend ? 2 * CoefBits + WeightBits : CoefBits;
   if (specular_pkg::OutBufStages != 1) begin : gen_pkg_check
     `SPEC_PARAM_ERROR("specular_stream: the output buffer is one register (specular_pkg::OutBufStages)")
   end
@@ -93,6 +97,9 @@ module specular_stream #(
   end
   if (AccBits < AngleBits + LenBits + 1) begin : gen_acc_check
     `SPEC_PARAM_ERROR("specular_stream: AccBits too small for 2^LenBits additions of dpsi")
+  end
+  if (Blend && (WeightBits < 1 || WeightBits > 24)) begin : gen_weight_check
+    `SPEC_PARAM_ERROR("specular_stream: WeightBits must be 1..24 with Blend")
   end
   if (TagBits < 1) begin : gen_tag_check
     `SPEC_PARAM_ERROR("specular_stream: TagBits must be >= 1")
@@ -211,7 +218,7 @@ module specular_stream #(
   // coefficient ROM 9 (read with the span's n on accept)
   logic [NumBanks-1:0] bank1;
   logic                n_valid1;
-  logic [CoefBits-1:0] coef0;
+  logic [CoefWord-1:0] coef0;
 
   specular_decoder #(
     .NBits      (NBits),
@@ -228,7 +235,7 @@ module specular_stream #(
 
   specular_coef_rom #(
     .NBits       (NBits),
-    .CoefBits    (CoefBits),
+    .CoefBits    (CoefWord),
     .CoefRomFile (CoefRomFile)
   ) u_coef_rom9 (
     .clk_i  (clk_i),
@@ -240,17 +247,29 @@ module specular_stream #(
   // ---------------------------------------------------------------------------------
   // Per-pixel span values beside the datapath: each reaches its block with its pixel
   // ---------------------------------------------------------------------------------
-  logic [CoefBits-1:0] coef1;        // at multiplier 11, beside psi1
-  logic [NumBanks-1:0] bank_rom;     // at the ROM 12 read
+  // ROM 9's fields: a (a1 with the blend) in the top bits, then a2 and the weight w.
+  logic [Reads*CoefBits-1:0] coef_fields0, coef1;  // at multiplier 11, beside psi1 (read r in field r)
+  logic [Reads*NumBanks-1:0] bank_fields1, bank_rom; // at the ROM 12 read (read r in field r)
   logic [CBits-1:0]    c_mul13;      // at multiplier 13
   logic [CBits+1:0]    c3_mul13;     // 3 C (the radix-4 digits of multiplier 13)
   logic [TagBits-1:0]  tag_out;      // at the output register
 
-  specular_delay #(.Width (CoefBits), .Depth (1), .Reset (1'b0)) u_coef_line (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (coef0), .q_o (coef1));
-  specular_delay #(.Width (NumBanks), .Depth (Mul11Stages)) u_bank_line (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (bank1), .q_o (bank_rom));
-  specular_delay #(.Width (2 * CBits + 2), .Depth (AccStages - 1 + Mul11Stages + Rom12Stages)) u_c_line (
+  if (Blend) begin : gen_blend_fields
+    // Decoder 10's second bank: the next one, the last bank itself for the last.
+    logic [NumBanks-1:0] bank2;
+    assign bank2 = (bank1 << 1) | (bank1 & (NumBanks'(1) << (NumBanks - 1)));
+    assign coef_fields0 = {coef0[WeightBits +: CoefBits], coef0[CoefWord-1 -: CoefBits]};
+    assign bank_fields1 = {bank2, bank1};
+  end else begin : gen_single_fields
+    assign coef_fields0 = coef0;
+    assign bank_fields1 = bank1;
+  end
+
+  specular_delay #(.Width (Reads * CoefBits), .Depth (1), .Reset (1'b0)) u_coef_line (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (coef_fields0), .q_o (coef1));
+  specular_delay #(.Width (Reads * NumBanks), .Depth (Mul11Stages)) u_bank_line (
+    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (bank_fields1), .q_o (bank_rom));
+  specular_delay #(.Width (2 * CBits + 2), .Depth (AccStages - 1 + Mul11Stages + Rom12Stages + BlendStages)) u_c_line (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({c30, c0}), .q_o ({c3_mul13, c_mul13}));
   specular_delay #(.Width (TagBits), .Depth (PipeDepth - 1)) u_tag_line (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (tag0), .q_o (tag_out));
@@ -258,32 +277,35 @@ module specular_stream #(
   // ---------------------------------------------------------------------------------
   // Multiplier 11, ROM 12, multiplier 13
   // ---------------------------------------------------------------------------------
-  logic [CosAddrBits-1:0] cos_addr;
-  logic [CosFracBits-1:0] cos_frac;
-  logic                   zero_addr, zero_cosk;
-  logic [CosDataBits:0]   cosk;
+  logic [Reads*CosAddrBits-1:0] cos_addr;
+  logic [Reads*CosFracBits-1:0] cos_frac;
+  logic [Reads-1:0]             zero_addr, zero_cosk;
+  logic [Reads*(CosDataBits+1)-1:0] cosk;
 
-  specular_angle_mul #(
-    .AccBits     (AccBits),
-    .AngleFrac   (AngleFrac),
-    .CoefBits    (CoefBits),
-    .CoefFrac    (CoefFrac),
-    .PsiMulFrac  (PsiMulFrac),
-    .CosInterp   (CosInterp),
-    .CosAddrBits (CosAddrBits),
-    .CosFracBits (CosFracBits),
-    .MulTileBits (MulTileBits)
-  ) u_mul11 (
-    .clk_i     (clk_i),
-    .rst_ni    (rst_ni),
-    .en_i      (adv),
-    .psi_i     (psi1),
-    .coef_i    (coef1),
-    .n_valid_i (n_valid1),
-    .addr_o    (cos_addr),
-    .frac_o    (cos_frac),
-    .zero_o    (zero_addr)
-  );
+  // One multiplier 11 per read (the blend's second forms a2 |psi|), on the same psi.
+  for (genvar r = 0; r < Reads; r++) begin : gen_mul11
+    specular_angle_mul #(
+      .AccBits     (AccBits),
+      .AngleFrac   (AngleFrac),
+      .CoefBits    (CoefBits),
+      .CoefFrac    (CoefFrac),
+      .PsiMulFrac  (PsiMulFrac),
+      .CosInterp   (CosInterp),
+      .CosAddrBits (CosAddrBits),
+      .CosFracBits (CosFracBits),
+      .MulTileBits (MulTileBits)
+    ) u_mul11 (
+      .clk_i     (clk_i),
+      .rst_ni    (rst_ni),
+      .en_i      (adv),
+      .psi_i     (psi1),
+      .coef_i    (coef1[r*CoefBits +: CoefBits]),
+      .n_valid_i (n_valid1),
+      .addr_o    (cos_addr[r*CosAddrBits +: CosAddrBits]),
+      .frac_o    (cos_frac[r*CosFracBits +: CosFracBits]),
+      .zero_o    (zero_addr[r])
+    );
+  end
 
   specular_cos_k_rom #(
     .NumBanks     (NumBanks),
@@ -293,7 +315,8 @@ module specular_stream #(
     .CosDeltaBits (CosDeltaBits),
     .CosFracBits  (CosFracBits),
     .CosRomFile   (CosRomFile),
-    .MulTileBits  (MulTileBits)
+    .MulTileBits  (MulTileBits),
+    .Reads        (Reads)
   ) u_cos_k_rom12 (
     .clk_i  (clk_i),
     .en_i   (adv),
@@ -303,12 +326,42 @@ module specular_stream #(
     .cosk_o (cosk)
   );
 
-  // The zero flag travels alongside ROM 12; a bubble is a zero pixel too, so
+  // The zero flags travel alongside ROM 12; a bubble is a zero pixel too, so
   // px_intensity_o reads 0 whenever px_valid_o is low.
-  logic valid_rom;
-  specular_delay #(.Width (1), .Depth (Rom12Stages)) u_zero_line (
+  specular_delay #(.Width (Reads), .Depth (Rom12Stages)) u_zero_line (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (zero_addr), .q_o (zero_cosk));
-  assign valid_rom = stage_valid[AccStages - 1 + Mul11Stages + Rom12Stages];
+
+  // Into multiplier 13: the read itself, or the blend of both.
+  logic [CosDataBits:0] cos_mul13;
+  logic                 zero_mul13, valid_mul13;
+  assign valid_mul13 = stage_valid[AccStages - 1 + Mul11Stages + Rom12Stages + BlendStages];
+
+  if (Blend) begin : gen_blend
+    // The weight w of the second read, beside the pixel from ROM 9 to the blend.
+    logic [WeightBits-1:0] w_blend;
+    specular_delay #(.Width (WeightBits), .Depth (AccStages - 1 + Mul11Stages + Rom12Stages), .Reset (1'b0)) u_w_line (
+      .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (coef0[WeightBits-1:0]), .q_o (w_blend));
+
+    specular_blend #(
+      .CosDataBits (CosDataBits),
+      .WeightBits  (WeightBits),
+      .MulTileBits (MulTileBits)
+    ) u_blend (
+      .clk_i   (clk_i),
+      .en_i    (adv),
+      .c1_i    (cosk[0 +: CosDataBits + 1]),
+      .c2_i    (cosk[CosDataBits + 1 +: CosDataBits + 1]),
+      .zero1_i (zero_cosk[0]),
+      .zero2_i (zero_cosk[1]),
+      .w_i     (w_blend),
+      .cosb_o  (cos_mul13)
+    );
+    // Each read's zero flag is applied in the blend: a pixel is 0 when both reads are.
+    assign zero_mul13 = ~valid_mul13;
+  end else begin : gen_single
+    assign cos_mul13  = cosk;
+    assign zero_mul13 = zero_cosk[0] | ~valid_mul13;
+  end
 
   logic [CBits-1:0] intensity;
 
@@ -322,8 +375,8 @@ module specular_stream #(
     .en_i        (adv),
     .c_i         (c_mul13),
     .c3_i        (c3_mul13),
-    .cosk_i      (cosk),
-    .zero_i      (zero_cosk | ~valid_rom),
+    .cosk_i      (cos_mul13),
+    .zero_i      (zero_mul13),
     .intensity_o (intensity)
   );
 

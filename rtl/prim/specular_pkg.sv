@@ -37,6 +37,12 @@ package specular_pkg;
   // The stream's output buffer (specular_out_buf): one register between the last stage and
   // px_valid_o.
   localparam int OutBufStages = 1;
+  // The blend of two ROM 12 reads (Blend = 1, specular_blend; docs/display_exact.md): a register
+  // that zeroes each read past its domain, one for the difference c2 - c1 (and 3 w), the tree of
+  // the weight product, and the output register (the sum, cos_b).
+  localparam int BlendInStages = 1;
+  localparam int BlendDiffStages = 1;
+  localparam int BlendOutStages = 1;
 
   // Stages of specular_pipe_mul's radix-4 tree over a b_bits-wide multiplier operand: one
   // register of the selected rows, then one per level of the binary adder tree over the
@@ -71,24 +77,32 @@ package specular_pkg;
     intensity_mul_stages = pipe_mul_stages(cos_data_bits + 1) + Mul13OutStages;
   endfunction
 
+  // The blend (specular_blend), the two reads to cos_b: 0 without it (blend = 0); the tree runs
+  // over the cos_data_bits + 2 bits of the offset difference c2 - c1 + 2^(cos_data_bits + 1).
+  function automatic int blend_stages(input bit blend, input int cos_data_bits);
+    blend_stages = blend ? BlendInStages + BlendDiffStages + pipe_mul_stages(cos_data_bits + 2)
+                                  + BlendOutStages : 0;
+  endfunction
+
   // specular_stream's stages from the accept edge to the output buffer (its PipeDepth).
   function automatic int stream_pipe_depth(input int psi_mul_frac, input int cos_delta_bits,
-                                           input int cos_data_bits);
+                                           input int cos_data_bits, input bit blend);
     stream_pipe_depth = AccStages + angle_mul_stages(psi_mul_frac)
-                        + cos_k_rom_stages(cos_delta_bits) + intensity_mul_stages(cos_data_bits);
+                        + cos_k_rom_stages(cos_delta_bits) + blend_stages(blend, cos_data_bits)
+                        + intensity_mul_stages(cos_data_bits);
   endfunction
 
   // specular_stream: a span accepted at the edge ending cycle t has pixel 0 on the output
   // in cycle t + stream_latency (px_ready_i high).
   function automatic int stream_latency(input int psi_mul_frac, input int cos_delta_bits,
-                                        input int cos_data_bits);
-    stream_latency = stream_pipe_depth(psi_mul_frac, cos_delta_bits, cos_data_bits) + OutBufStages;
+                                        input int cos_data_bits, input bit blend);
+    stream_latency = stream_pipe_depth(psi_mul_frac, cos_delta_bits, cos_data_bits, blend) + OutBufStages;
   endfunction
 
   // specular_unit: start_i high in cycle s (idle) gives pixel 0 in cycle s + unit_latency.
   function automatic int unit_latency(input int psi_mul_frac, input int cos_delta_bits,
-                                      input int cos_data_bits);
-    unit_latency = StartLatchStages + stream_latency(psi_mul_frac, cos_delta_bits, cos_data_bits);
+                                      input int cos_data_bits, input bit blend);
+    unit_latency = StartLatchStages + stream_latency(psi_mul_frac, cos_delta_bits, cos_data_bits, blend);
   endfunction
 
 endpackage
