@@ -37,7 +37,7 @@ mutants=(
   "zero_flag_ignored#core/specular_intensity_mul.sv#s/assign intensity_d = keep_m ? prod_rnd\\[CosDataBits +: CBits\\] : '0;/assign intensity_d = prod_rnd[CosDataBits +: CBits];/#pixels flagged zero (far, invalid n, bubbles) show the product"
   "bank_edge_lt#core/specular_decoder.sv#s/assign le_d\\[j\\] = (n_i <= BankMaxN/assign le_d[j] = (n_i < BankMaxN/#decoder 10 puts n = BankMaxN[j] into bank j + 1"
   "n0_valid#core/specular_decoder.sv#s/assign nz_d = (n_i != '0);/assign nz_d = 1'b1;/#n = 0 is decoded as bank 0 instead of invalid"
-  "c_line_short#core/specular_stream.sv#s/.Depth (AccStages - 1 + Mul11Stages + Rom12Stages)) u_c_line/.Depth (AccStages - 2 + Mul11Stages + Rom12Stages)) u_c_line/#C reaches multiplier 13 one pixel early (the previous span's C at a span boundary)"
+  "c_line_short#core/specular_stream.sv#s/.Depth (AccStages - 1 + Mul11Stages + Rom12Stages + BlendStages)) u_c_line/.Depth (AccStages - 2 + Mul11Stages + Rom12Stages + BlendStages)) u_c_line/#C reaches multiplier 13 one pixel early (the previous span's C at a span boundary)"
   "tag_line_short#core/specular_stream.sv#s/.Depth (PipeDepth - 1)) u_tag_line/.Depth (PipeDepth - 2)) u_tag_line/#a pixel's tag is the next pixel's (wrong at span boundaries)"
 )
 

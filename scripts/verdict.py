@@ -31,6 +31,7 @@ BUDGETS = {  # name: (relative epicenter bound, absolute lobe bound, raw absolut
     "b1": (1e-3, 1e-2, None),
     "b2": (None, None, 1.0 / 512.0),
     "b3": (1e-2, 1e-2, None),
+    "b4": (None, None, 1.0 / 2048.0),
 }
 SPAN_LENGTHS = (1, 2, 4, 8, 16, 64)
 PART = fpga_parts.LFE5U[-1]  # LFE5U-85F: (name, size flag, LUT4 positions = FFs, MULT18X18D, DP16KD)
@@ -248,8 +249,8 @@ def worst_errors(phong_json, n_max=1000):
     return out
 
 
-# The budgets a configuration built for one meets: B1's bounds are B3's or tighter.
-IMPLIED = {"b1": ["b1", "b3"], "b2": ["b2"], "b3": ["b3"]}
+# The budgets a configuration built for one meets: B1's bounds are B3's or tighter, B4's B2's.
+IMPLIED = {"b1": ["b1", "b3"], "b2": ["b2"], "b3": ["b3"], "b4": ["b2", "b4"]}
 
 
 def labelled_device_budgets(figs):

@@ -47,6 +47,8 @@
 //                 |psi|, the ROM 12 address / weight / zero flag
 //   then          ROM 12: block RAM read, interpolation tree d * t, cos^k = v - d t (the
 //                 direct table is delayed as long)
+//   then          (Blend = 1 only) specular_blend: cos_b = c1 + ((c2 - c1) w + 2^(W-1)) >> W of
+//                 the two reads, docs/display_exact.md
 //   then          multiplier 13: radix-4 tree over cos^k, rounding and the output register
 //                 (output 27)
 //   output buffer two entries (specular_out_buf): the pixel handshake
@@ -60,6 +62,11 @@
 // Patent errata resolved here (docs/device.md): n has 10 bits; registers 3 and 2 hold the
 // unscaled -lambda and gamma/l (multiplier 11 applies a(n)); ROM 12 covers only [0, pi/2),
 // |zeta| addresses it and zeta >= pi/2 outputs 0.
+//
+// Blend = 1 (the display-exact builds, docs/display_exact.md): ROM 9's word is {a1, a2, w};
+// decoder 10's bank j and the next (j itself for the last) are read by two multipliers 11 and
+// two reads of ROM 12 (a second block RAM port), each 0 past its bank's domain, and blended
+// before multiplier 13. Same handshake and one pixel per clock; more stages.
 //
 // Parameters: the core's list, written once in rtl/core/specular_params.svh (widths, ROM
 // files, decoder banks; defaults those of specular::device::Format), and TagBits.
