@@ -53,7 +53,7 @@ def build_blend_configs(root):
     out = {}
     for m in re.finditer(r'^set\(SPECULAR_BUILD_CONFIG_(\w+)_RTL_ARGS(.*)\)$', text, re.M):
         args = dict(re.findall(r'"-G(\w+)=(.*?)"(?= |$)', m.group(2).replace('\\"', "")))
-        if args.get("Blend") == "1":
+        if args.get("Blend") == "1'b1":
             out[m.group(1)] = args
     return out
 
@@ -87,7 +87,7 @@ def blend_configurations(root, runs):
         a = builds[name]
         params = [f"{k}={want[k]}" for k in ("CoefBits", "CoefFrac", "PsiMulFrac")] + ["CosInterp=1"] + \
                  [f"{k}={want[k]}" for k in ("CosAddrBits", "CosDataBits", "CosDeltaBits", "CosFracBits", "NumBanks",
-                                               "BankMaxN")] + ["Blend=1", f"WeightBits={want['WeightBits']}",
+                                               "BankMaxN")] + [f"Blend={a['Blend']}", f"WeightBits={want['WeightBits']}",
                                                                f"CoefRomFile={a['CoefRomFile']}",
                                                                f"CosRomFile={a['CosRomFile']}"]
         out.append({"budget": r["budget"], "n_max": [r["n_max"]], "best": b, "key": key, "policy": "blend", "build": name,

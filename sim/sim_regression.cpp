@@ -621,6 +621,23 @@ int main(int argc, char** argv) {
       stream = run_stream_stage(sh, seed, stream_spans);
     }
     if (stream_spans > 0 || !scene_streams.empty()) print_stream_summary(stream, scene_streams);
+    // The blend builds (docs/display_exact.md) under the same random stream, a tenth of its spans,
+    // on their scene models (specular_stream at the build's parameters; the line stage ran them
+    // with the RTL's assertions live).
+    std::vector<std::pair<std::string, StreamStats>> blend_streams;
+#define SPECULAR_BLEND_STREAM(id, cfg_name)                                                                     \
+  if (bc.f.blend && bc.name == cfg_name) {                                                                     \
+    StreamHarness<Vspecular_scene_##id> bh("specular_stream", specular::load_device_model(bc.f, bc.coef_hex(), \
+                                                                                          bc.cos_hex()), 16);  \
+    blend_streams.emplace_back(bc.name, run_stream_stage(bh, seed, std::max<uint64_t>(stream_spans / 10, 1)));  \
+  }
+    if (stream_spans > 0)
+      for (const auto& bc : specular::build_configs())
+        if (want(bc.name)) {
+          SPECULAR_SIM_CONFIGS(SPECULAR_BLEND_STREAM)
+        }
+#undef SPECULAR_BLEND_STREAM
+    for (const auto& [name, bs] : blend_streams) print_stream_summary(bs, {}, name);
     // Phong stage (docs/phong_hw.md): every scene through phong_stream, when every
     // configuration runs.
     std::vector<PhongSceneStats> phong_stats;
@@ -684,6 +701,10 @@ int main(int argc, char** argv) {
       ok = ok && stream.ok();
       if (!stream.ok()) std::cout << "FAIL stream stage: see the stream summary\n";
     }
+    for (const auto& [name, bs] : blend_streams) {
+      ok = ok && bs.ok();
+      if (!bs.ok()) std::cout << "FAIL stream stage " << name << ": see its stream summary\n";
+    }
     for (const auto& s : scene_streams) {
       ok = ok && s.ok();
       if (!s.ok()) std::cout << "FAIL stream scene " << s.name << "\n";
@@ -710,6 +731,7 @@ int main(int argc, char** argv) {
         j["images_dir"] = images_dir;
       }
       if (stream_spans > 0) j["stream"] = stream.to_json();
+      for (const auto& [name, bs] : blend_streams) j["stream_by_config"][name] = bs.to_json();
       for (const auto& s : scene_streams) j["scenes_stream"][s.name] = s.to_json();
       // phong: the textbook form (n1000); phong_cross: the cancellation-free form (cross_n1000).
       for (const auto& s : phong_stats)

@@ -79,9 +79,10 @@ nlohmann::json SceneStreamStats::to_json() const {
           {"ok", ok()}};
 }
 
-void print_stream_summary(const StreamStats& s, const std::vector<SceneStreamStats>& scenes) {
+void print_stream_summary(const StreamStats& s, const std::vector<SceneStreamStats>& scenes, const std::string& config) {
   const auto& c = s.c;
-  std::printf("\nStream stage (specular_stream, default build): random spans, gaps, px_ready_i patterns, resets\n");
+  std::printf("\nStream stage (specular_stream, %s build): random spans, gaps, px_ready_i patterns, resets\n",
+              config.c_str());
   std::printf("  spans accepted %llu (target %llu), pixels checked %llu, cycles %llu, max l %llu\n",
               (unsigned long long)c.spans_accepted, (unsigned long long)s.spans_target, (unsigned long long)c.pixels,
               (unsigned long long)c.cycles, (unsigned long long)s.max_l);

@@ -69,7 +69,8 @@ struct SceneStreamStats {
   nlohmann::json to_json() const;
 };
 
-void print_stream_summary(const StreamStats& s, const std::vector<SceneStreamStats>& scenes);
+void print_stream_summary(const StreamStats& s, const std::vector<SceneStreamStats>& scenes,
+                          const std::string& config = "default");
 
 namespace detail {
 // Runs until the core has delivered every owed pixel (ready high, nothing offered).

@@ -115,7 +115,7 @@ std::vector<RtlParameter> rtl_parameters(const BuildConfig& bc) {
           {"CosFracBits", i(f.cos_frac_bits)},
           {"NumBanks", i(static_cast<int>(f.banks.size()))},
           {"BankMaxN", std::to_string(width) + "'h" + hex},
-          {"Blend", f.blend ? "1" : "0"},
+          {"Blend", f.blend ? "1'b1" : "1'b0"},
           {"WeightBits", i(f.weight_bits)},
           {"CoefRomFile", quoted(bc.coef_hex())},
           {"CosRomFile", quoted(bc.cos_hex())}};
