@@ -79,19 +79,29 @@ def blend_configurations(root, runs):
                 "CosAddrBits": str(b["cos_addr_bits"]), "CosDataBits": str(b["cos_data_bits"]),
                 "CosDeltaBits": str(b["cos_delta_bits"]), "CosFracBits": str(b["cos_frac_bits"]),
                 "NumBanks": str(nb), "BankMaxN": f"{N_BITS * nb}'h{packed:x}", "WeightBits": str(b["weight_bits"])}
-        name = next((n for n, a in builds.items() if all(a.get(k) == v for k, v in want.items())), None)
+        # The build may carry more ROM 12 data bits (and the step field they need) than the search
+        # found: its dense sweep (device_search --sweep) decides them (docs/display_exact.md#search).
+        wider = ("CosDataBits", "CosDeltaBits")
+
+        def implements(a):
+            return all(a.get(k) == v for k, v in want.items() if k not in wider) and \
+                all(k in a and int(a[k]) >= int(want[k]) for k in wider)
+        name = next((n for n, a in builds.items() if implements(a)), None)
         if name is None or any(b.get("bank_shift") or []):
             print(f"budget_roms.py: note: the blend of budget {r['budget']} at n <= {r['n_max']} has no build in "
                   f"{BUILD_CONFIGS} (model/device/rom_image.cpp build_configs)", file=sys.stderr)
             continue
         a = builds[name]
-        params = [f"{k}={want[k]}" for k in ("CoefBits", "CoefFrac", "PsiMulFrac")] + ["CosInterp=1"] + \
-                 [f"{k}={want[k]}" for k in ("CosAddrBits", "CosDataBits", "CosDeltaBits", "CosFracBits", "NumBanks",
-                                               "BankMaxN")] + [f"Blend={a['Blend']}", f"WeightBits={want['WeightBits']}",
-                                                               f"CoefRomFile={a['CoefRomFile']}",
-                                                               f"CosRomFile={a['CosRomFile']}"]
+        params = [f"{k}={a[k]}" for k in ("CoefBits", "CoefFrac", "PsiMulFrac")] + ["CosInterp=1"] + \
+                 [f"{k}={a[k]}" for k in ("CosAddrBits", "CosDataBits", "CosDeltaBits", "CosFracBits", "NumBanks",
+                                           "BankMaxN")] + [f"Blend={a['Blend']}", f"WeightBits={a['WeightBits']}",
+                                                           f"CoefRomFile={a['CoefRomFile']}",
+                                                           f"CosRomFile={a['CosRomFile']}"]
+        # ROM bits of the build: ROM 9's 2^NBits words of {a1, a2, w}, ROM 12's {v, d} words.
+        rom_bits = (1 << N_BITS) * (2 * int(a["CoefBits"]) + int(a["WeightBits"])) + \
+            nb * (1 << int(a["CosAddrBits"])) * (int(a["CosDataBits"]) + 1 + int(a["CosDeltaBits"]))
         out.append({"budget": r["budget"], "n_max": [r["n_max"]], "best": b, "key": key, "policy": "blend", "build": name,
-                    "params": params, "dir": os.path.dirname(a["CoefRomFile"])})
+                    "params": params, "rom_bits": rom_bits, "dir": os.path.dirname(a["CoefRomFile"])})
     for c in out:
         c["n_max"].sort()
         c["label"] = f"device_{c['budget']}_n{c['n_max'][-1]}"
@@ -176,7 +186,7 @@ def generate(root, romgen, dest):
     for c in blend_configurations(root, runs):
         manifest["configurations"].append({
             "label": c["label"], "budget": c["budget"], "n_max": c["n_max"], "policy": c["policy"],
-            "rom_bits": c["best"]["rom_bits"], "dir": c["dir"], "build": c["build"], "fpga_params": c["params"]})
+            "rom_bits": c["rom_bits"], "dir": c["dir"], "build": c["build"], "fpga_params": c["params"]})
     with open(os.path.join(dest, MANIFEST), "w") as f:
         json.dump(manifest, f, indent=1)
         f.write("\n")

@@ -38,6 +38,7 @@
 #include "scene_stage.hpp"
 #include "stream_stage.hpp"
 #include "system_stage.hpp"
+#include "system_blend.inc"  // SPECULAR_SYSTEM_BLEND (sim/CMakeLists.txt)
 
 #include <nlohmann/json.hpp>
 
@@ -448,6 +449,11 @@ int main(int argc, char** argv) {
       ->delimiter(',')
       ->check(CLI::IsMember({1, 8, 16, 32, 64}))
       ->capture_default_str();
+  std::string system_config = "default";
+  app.add_option("--system-config", system_config,
+                 "the configuration of specular_system in the system stage: default, or a blend build (verilated "
+                 "at SetupII 16 only; docs/display_exact.md)")
+      ->capture_default_str();
   std::string digest_path, coverage_dir;
   app.add_option("--digest", digest_path,
                  "write the digest of every output of every model in every cycle to FILE (X-propagation runs: "
@@ -501,6 +507,19 @@ int main(int argc, char** argv) {
       std::cerr << "sim_regression: --setup-ii " << k
                 << ": specular_system with this SetupII is not built (allowed here: 1 and 16; configure with "
                    "-DSPECULAR_SYSTEM_SETUP_II=ON, or run make sim-setup-ii, for 8, 32 and 64)\n";
+      return 2;
+    }
+  }
+  {
+    // The system at a blend build exists at SetupII 16 only (sim/CMakeLists.txt).
+    bool known = system_config == "default";
+#define SPECULAR_SYSTEM_CONFIG_KNOWN(id, cfg_name) known = known || system_config == cfg_name;
+    SPECULAR_SYSTEM_BLEND(SPECULAR_SYSTEM_CONFIG_KNOWN)
+#undef SPECULAR_SYSTEM_CONFIG_KNOWN
+    if (!known || (system_config != "default" && (setup_iis.size() != 1 || setup_iis[0] != 16))) {
+      std::cerr << "sim_regression: --system-config " << system_config
+                << ": specular_system is built for default (SetupII 1 and 16) and for each blend build at SetupII 16 "
+                   "(give --setup-ii 16)\n";
       return 2;
     }
   }
@@ -649,7 +668,7 @@ int main(int argc, char** argv) {
     std::vector<SystemStats> systems;
     if (system_spans > 0) {
       for (const int k : setup_iis) {
-        systems.push_back(run_system_stage(scenes, specular::build_config("default"), seed, system_spans, k));
+        systems.push_back(run_system_stage(scenes, specular::build_config(system_config), seed, system_spans, k));
         print_system_summary(systems.back());
       }
     }

@@ -7,6 +7,7 @@
 #include "Vspecular_system.h"
 #include "system_setup_ii.inc"  // SPECULAR_SYSTEM_SETUP_II (sim/CMakeLists.txt)
 #include "Vspecular_system_ii16.h"
+#include "system_blend.inc"  // SPECULAR_SYSTEM_BLEND: SetupII 16 at each blend build (sim/CMakeLists.txt)
 #if SPECULAR_SYSTEM_SETUP_II
 #include "Vspecular_system_ii32.h"
 #include "Vspecular_system_ii64.h"
@@ -262,6 +263,17 @@ SystemStats run_system_stage(const std::vector<LoadedScene>& scenes, const Build
   if (setup_ii == 32) return run_all<Vspecular_system_ii32>(scenes, bc, seed, random_spans, setup_ii);
   if (setup_ii == 64) return run_all<Vspecular_system_ii64>(scenes, bc, seed, random_spans, setup_ii);
 #endif
+  if (bc.f.blend) {
+    // The blend builds' systems are verilated at SetupII 16 only, with their own parameters.
+#define SPECULAR_BLEND_SYSTEM(id, cfg_name) \
+  if (bc.name == cfg_name && setup_ii == 16) return run_all<Vspecular_system_ii16_##id>(scenes, bc, seed, random_spans, setup_ii);
+    SPECULAR_SYSTEM_BLEND(SPECULAR_BLEND_SYSTEM)
+#undef SPECULAR_BLEND_SYSTEM
+    throw std::invalid_argument("specular_system at " + bc.name + " is built at SetupII 16 only, and for every blend "
+                                "build in the configurations verilated");
+  }
+  if (bc.name != "default")
+    throw std::invalid_argument("specular_system is built for the default and the blend builds, not " + bc.name);
   if (setup_ii == 16) return run_all<Vspecular_system_ii16>(scenes, bc, seed, random_spans, setup_ii);
   if (setup_ii != 1) throw std::invalid_argument("specular_system at SetupII " + std::to_string(setup_ii) + " is not built");
   return run_all<Vspecular_system>(scenes, bc, seed, random_spans, setup_ii);

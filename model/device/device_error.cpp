@@ -69,4 +69,29 @@ DeviceError device_error(const device::DeviceModel& dm, int n) {
   return err;
 }
 
+DenseError dense_abs_error(const device::DeviceModel& dm, int n, int64_t step_codes) {
+  const device::Format& f = dm.format();
+  DenseError e;
+  device::Registers r;
+  r.c = static_cast<uint32_t>(1) << f.c_frac;  // C = 1
+  r.n = static_cast<uint32_t>(n);
+  r.len = static_cast<uint32_t>(f.max_len());
+  r.dpsi = std::max<int64_t>(step_codes, 1);
+  const double lsb = std::ldexp(1.0, -f.c_frac), half_pi = std::acos(-1.0) / 2;
+  const double end = std::min(half_pi, std::sqrt(40.0 / n));
+  const double end_code = std::ldexp(end, f.angle_frac);
+  for (int64_t p0 = 0; static_cast<double>(p0) < end_code; p0 += r.dpsi * (r.len + 1)) {
+    r.psi0 = p0;
+    const std::vector<uint32_t> line = dm.line(r);
+    for (size_t i = 0; i < line.size(); ++i) {
+      const double psi = std::ldexp(static_cast<double>(p0 + static_cast<int64_t>(i) * r.dpsi), -f.angle_frac);
+      const double ref = psi < half_pi ? std::pow(std::cos(psi), n) : 0.0;
+      const double err = std::fabs(line[i] * lsb - ref);
+      ++e.pixels;
+      if (err > e.max_abs) e.max_abs = err, e.psi = psi;
+    }
+  }
+  return e;
+}
+
 }  // namespace specular

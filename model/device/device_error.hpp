@@ -41,4 +41,16 @@ struct DeviceError {
 int srgb8_code(double linear);
 DeviceError device_error(const device::DeviceModel& dm, int n);
 
+// The absolute error of exponent n on a dense sweep (the display budgets are absolute and every
+// pixel counts): C = 1, every `step_codes`-th angle code from psi = 0 to the end of the lobe,
+// min(pi/2, sqrt(40 / n)) (past it cos^n < e^-20), lines of the longest l back to back; the
+// reference C cos^n(psi) at the exact pixel angle. device_error's three lines miss the worst
+// pixel by a few per cent (docs/display_exact.md#search).
+struct DenseError {
+  double max_abs = 0.0;  // fraction of C
+  double psi = 0.0;      // where
+  long pixels = 0;
+};
+DenseError dense_abs_error(const device::DeviceModel& dm, int n, int64_t step_codes);
+
 }  // namespace specular

@@ -27,15 +27,16 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
-#include <chrono>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <numbers>
-#include <iostream>
 #include <stdexcept>
 #include <string>
+#include <thread>
 #include <vector>
 
 using specular::device::Format;
@@ -257,6 +258,62 @@ std::string set_text(const std::vector<int>& banks) {
   return set;
 }
 
+// --sweep: the dense absolute error of a build configuration per n (dense_abs_error), from its
+// committed ROM files (working directory: the repository root), on every core.
+int run_sweep(const std::string& name, int n_max, int points, const std::string& json_out) {
+  const specular::BuildConfig* bc = nullptr;
+  try {
+    bc = &specular::build_config(name);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "device_search: --sweep: " << e.what() << "\n";
+    return 2;
+  }
+  const auto t0 = std::chrono::steady_clock::now();
+  const specular::device::DeviceModel dm = specular::load_device_model(bc->f, bc->coef_hex(), bc->cos_hex());
+  std::vector<specular::DenseError> per_n(static_cast<size_t>(n_max));
+  const unsigned threads = std::clamp(std::thread::hardware_concurrency(), 1U, 16U);
+  auto work = [&](unsigned id) {
+    for (int n = 1 + static_cast<int>(id); n <= n_max; n += static_cast<int>(threads)) {
+      const double end = std::min(std::numbers::pi / 2, std::sqrt(40.0 / n));
+      const auto step = std::max<int64_t>(1, std::llround(std::ldexp(end, bc->f.angle_frac) / points));
+      per_n[n - 1] = specular::dense_abs_error(dm, n, step);
+    }
+  };
+  std::vector<std::thread> pool;
+  for (unsigned id = 1; id < threads; ++id) pool.emplace_back(work, id);
+  work(0);
+  for (auto& t : pool) t.join();
+  const double bound = bc->budget.abs_lobe;
+  int worst_n = 1;
+  long pixels = 0;
+  nlohmann::json abs_n = nlohmann::json::array();
+  for (int n = 1; n <= n_max; ++n) {
+    if (per_n[n - 1].max_abs > per_n[worst_n - 1].max_abs) worst_n = n;
+    pixels += per_n[n - 1].pixels;
+    abs_n.push_back(sig4(per_n[n - 1].max_abs));
+  }
+  const specular::DenseError& w = per_n[worst_n - 1];
+  const double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const bool ok = w.max_abs <= bound;
+  std::printf("device_search --sweep %s: n <= %d, %ld pixels (%d angles per n over the lobe), C = 1: worst |err| "
+              "%.6g C at n = %d, psi = %.5f: %.4f of the budget %.6g C, %s (%.1f s)\n",
+              name.c_str(), n_max, pixels, points, w.max_abs, worst_n, w.psi, w.max_abs / bound, bound,
+              ok ? "meets it" : "OVER BUDGET", secs);
+  if (!json_out.empty()) {
+    const nlohmann::json j{{"config", name},      {"n_max", n_max},          {"angles_per_n", points},
+                           {"pixels", pixels},    {"budget_abs", bound},     {"worst_abs", w.max_abs},
+                           {"worst_n", worst_n},  {"worst_psi", w.psi},      {"budget_used", w.max_abs / bound},
+                           {"meets", ok},         {"abs_per_n", abs_n}};
+    std::ofstream o(json_out);
+    o << j.dump(1) << "\n";
+    if (!o) {
+      std::cerr << "device_search: cannot write " << json_out << "\n";
+      return 1;
+    }
+  }
+  return ok ? 0 : 1;
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -273,7 +330,16 @@ int main(int argc, char** argv) {
       ->check(CLI::IsMember({"off", "on", "both"}))
       ->capture_default_str();
   app.add_option("--json", json_out, "write the result to this file");
+  std::string sweep;
+  int sweep_points = 200000;
+  app.add_option("--sweep", sweep,
+                 "instead of a search: sweep build configuration NAME (rom_image.hpp build_configs(), its committed "
+                 "ROM files) densely for every n of 1..n-max against its absolute budget; exit 1 when over it");
+  app.add_option("--sweep-points", sweep_points, "--sweep: angles per n over the lobe")
+      ->check(CLI::Range(1000, 100000000))
+      ->capture_default_str();
   if (auto rc = specular::parse_command_line(app, argc, argv, "device_search")) return *rc;
+  if (!sweep.empty()) return run_sweep(sweep, n_max, sweep_points, json_out);
   const auto t_start = std::chrono::steady_clock::now();
   const PixelBudget b = PixelBudget::named(budget);
   const specular::BuildConfig& start = specular::build_config("default");

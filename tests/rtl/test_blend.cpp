@@ -109,20 +109,20 @@ using P4 = Vpipeline_blend_b4_specular_pipeline;
 TEST_CASE("blend (B2 widths, LUT tree): corners and random reads, bit-exact, one per clock", "[rtl][blend]") {
   REQUIRE(P2::BlendStages > 0);
   Vblend_b2 dut;
-  CHECK(run_blend(dut, P2::BlendStages, 11, 10, blend_items(11, 10, 30000, 1), false) == 0);
+  CHECK(run_blend(dut, P2::BlendStages, 12, 10, blend_items(12, 10, 30000, 1), false) == 0);
 }
 
 TEST_CASE("blend holds every stage while en_i is low (stall)", "[rtl][blend][stall]") {
   Vblend_b2 dut;
-  CHECK(run_blend(dut, P2::BlendStages, 11, 10, blend_items(11, 10, 10000, 2), true) == 0);
+  CHECK(run_blend(dut, P2::BlendStages, 12, 10, blend_items(12, 10, 10000, 2), true) == 0);
 }
 
 TEST_CASE("blend in DSP tiles (ECP5 18, B2 widths; UP5K 16, B4 widths): same values, same latency",
           "[rtl][blend]") {
   Vblend_b2_t18 d18;
-  CHECK(run_blend(d18, P2::BlendStages, 11, 10, blend_items(11, 10, 10000, 3), true) == 0);
+  CHECK(run_blend(d18, P2::BlendStages, 12, 10, blend_items(12, 10, 10000, 3), true) == 0);
   Vblend_b4_t16 d16;
-  CHECK(run_blend(d16, P4::BlendStages, 13, 9, blend_items(13, 9, 10000, 4), true) == 0);
+  CHECK(run_blend(d16, P4::BlendStages, 14, 9, blend_items(14, 9, 10000, 4), true) == 0);
 }
 
 TEST_CASE("ROM 12 with two reads (B2 build): each read is its own bank, entry and weight", "[rtl][rom][blend]") {
