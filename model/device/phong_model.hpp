@@ -124,7 +124,7 @@ struct PhongFormat {
   // The cross form's configuration for n in 1..1000 at the device's budget: operands of one
   // 18 x 18 DSP tile (docs/phong_hw.md#the-cancellation-free-form).
   static PhongFormat cross();
-  // The narrowest configuration of a form for n in 1..1000 at budget "b1", "b2" or "b3"
+  // The narrowest configuration of a form for n in 1..1000 at budget "b1", "b2", "b3" or "b4"
   // (docs/metrics.md#budgets; phong_search --form F --budget B, docs/phong_hw.md#budgets):
   // b1 is preset(1000) or cross(); throws std::invalid_argument otherwise.
   static PhongFormat at_budget(PhongForm form, const std::string& budget);

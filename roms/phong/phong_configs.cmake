@@ -4,7 +4,7 @@
 # PHONG_CONFIGS: the configurations; PHONG_CONFIG_<name>_TOP: the top module;
 # PHONG_CONFIG_<name>_RTL_ARGS: its -G flags; PHONG_CONFIG_<name>_BUDGET: the budget it is
 # built for (docs/metrics.md#budgets) over its n range (n64, n128: n <= 64, 128; else 1000).
-set(PHONG_CONFIGS n1000 n128 n64 n1000_consth n64_consth b2_n1000 b3_n1000 cross_n1000 cross_n1000_consth cross_b2_n1000 cross_b3_n1000)
+set(PHONG_CONFIGS n1000 n128 n64 n1000_consth n64_consth b2_n1000 b3_n1000 b4_n1000 cross_n1000 cross_n1000_consth cross_b2_n1000 cross_b3_n1000 cross_b4_n1000)
 set(PHONG_CONFIG_n1000_TOP phong_stream)
 set(PHONG_CONFIG_n1000_BUDGET b1)
 set(PHONG_CONFIG_n1000_RTL_ARGS "-GConstH=1'b0" "-GCross=1'b0" "-GOpBits=20" "-GNormBits=24" "-GRsqrtAddrBits=6" "-GNewton=2" "-GCosFrac=23" "-GLogAddrBits=9" "-GLogFracBits=13" "-GLogBits=21" "-GExpAddrBits=5" "-GExpFracBits=7" "-GExpBits=16" "-GRsqrtRomFile=\"roms/phong/n1000/rsqrt.hex\"" "-GLogRomFile=\"roms/phong/n1000/log2.hex\"" "-GExpRomFile=\"roms/phong/n1000/exp2.hex\"")
@@ -26,6 +26,9 @@ set(PHONG_CONFIG_b2_n1000_RTL_ARGS "-GConstH=1'b0" "-GCross=1'b0" "-GOpBits=18" 
 set(PHONG_CONFIG_b3_n1000_TOP phong_stream)
 set(PHONG_CONFIG_b3_n1000_BUDGET b3)
 set(PHONG_CONFIG_b3_n1000_RTL_ARGS "-GConstH=1'b0" "-GCross=1'b0" "-GOpBits=19" "-GNormBits=20" "-GRsqrtAddrBits=5" "-GNewton=2" "-GCosFrac=19" "-GLogAddrBits=5" "-GLogFracBits=13" "-GLogBits=17" "-GExpAddrBits=3" "-GExpFracBits=6" "-GExpBits=16" "-GRsqrtRomFile=\"roms/phong/b3_n1000/rsqrt.hex\"" "-GLogRomFile=\"roms/phong/b3_n1000/log2.hex\"" "-GExpRomFile=\"roms/phong/b3_n1000/exp2.hex\"")
+set(PHONG_CONFIG_b4_n1000_TOP phong_stream)
+set(PHONG_CONFIG_b4_n1000_BUDGET b4)
+set(PHONG_CONFIG_b4_n1000_RTL_ARGS "-GConstH=1'b0" "-GCross=1'b0" "-GOpBits=20" "-GNormBits=24" "-GRsqrtAddrBits=6" "-GNewton=2" "-GCosFrac=23" "-GLogAddrBits=9" "-GLogFracBits=13" "-GLogBits=21" "-GExpAddrBits=6" "-GExpFracBits=7" "-GExpBits=16" "-GRsqrtRomFile=\"roms/phong/b4_n1000/rsqrt.hex\"" "-GLogRomFile=\"roms/phong/b4_n1000/log2.hex\"" "-GExpRomFile=\"roms/phong/b4_n1000/exp2.hex\"")
 set(PHONG_CONFIG_cross_n1000_TOP phong_stream)
 set(PHONG_CONFIG_cross_n1000_BUDGET b1)
 set(PHONG_CONFIG_cross_n1000_RTL_ARGS "-GConstH=1'b0" "-GCross=1'b1" "-GOpBits=18" "-GNormBits=16" "-GCosFrac=16" "-GLogAddrBits=6" "-GLogFracBits=10" "-GLogBits=23" "-GExpAddrBits=5" "-GExpFracBits=8" "-GExpBits=17" "-GUBits=20" "-GRcpAddrBits=7" "-GRcpFracBits=8" "-GRcpBits=17" "-GSFrac=24" "-GGAddrBits=5" "-GGFracBits=8" "-GGBits=17" "-GDmFrac=14" "-GRcpRomFile=\"roms/phong/cross_n1000/rcp.hex\"" "-GGRomFile=\"roms/phong/cross_n1000/g.hex\"" "-GLogRomFile=\"roms/phong/cross_n1000/log2.hex\"" "-GExpRomFile=\"roms/phong/cross_n1000/exp2.hex\"")
@@ -38,3 +41,6 @@ set(PHONG_CONFIG_cross_b2_n1000_RTL_ARGS "-GConstH=1'b0" "-GCross=1'b1" "-GOpBit
 set(PHONG_CONFIG_cross_b3_n1000_TOP phong_stream)
 set(PHONG_CONFIG_cross_b3_n1000_BUDGET b3)
 set(PHONG_CONFIG_cross_b3_n1000_RTL_ARGS "-GConstH=1'b0" "-GCross=1'b1" "-GOpBits=18" "-GNormBits=10" "-GCosFrac=8" "-GLogAddrBits=3" "-GLogFracBits=5" "-GLogBits=18" "-GExpAddrBits=3" "-GExpFracBits=6" "-GExpBits=16" "-GUBits=15" "-GRcpAddrBits=5" "-GRcpFracBits=5" "-GRcpBits=9" "-GSFrac=18" "-GGAddrBits=2" "-GGFracBits=4" "-GGBits=8" "-GDmFrac=7" "-GRcpRomFile=\"roms/phong/cross_b3_n1000/rcp.hex\"" "-GGRomFile=\"roms/phong/cross_b3_n1000/g.hex\"" "-GLogRomFile=\"roms/phong/cross_b3_n1000/log2.hex\"" "-GExpRomFile=\"roms/phong/cross_b3_n1000/exp2.hex\"")
+set(PHONG_CONFIG_cross_b4_n1000_TOP phong_stream)
+set(PHONG_CONFIG_cross_b4_n1000_BUDGET b4)
+set(PHONG_CONFIG_cross_b4_n1000_RTL_ARGS "-GConstH=1'b0" "-GCross=1'b1" "-GOpBits=19" "-GNormBits=17" "-GCosFrac=13" "-GLogAddrBits=5" "-GLogFracBits=8" "-GLogBits=24" "-GExpAddrBits=6" "-GExpFracBits=8" "-GExpBits=19" "-GUBits=19" "-GRcpAddrBits=7" "-GRcpFracBits=8" "-GRcpBits=12" "-GSFrac=24" "-GGAddrBits=5" "-GGFracBits=7" "-GGBits=14" "-GDmFrac=13" "-GRcpRomFile=\"roms/phong/cross_b4_n1000/rcp.hex\"" "-GGRomFile=\"roms/phong/cross_b4_n1000/g.hex\"" "-GLogRomFile=\"roms/phong/cross_b4_n1000/log2.hex\"" "-GExpRomFile=\"roms/phong/cross_b4_n1000/exp2.hex\"")
