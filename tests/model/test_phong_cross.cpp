@@ -214,5 +214,5 @@ TEST_CASE("phong configurations per budget: a narrower budget's configuration mi
     INFO((form == PhongForm::cross ? "cross" : "dot"));
     REQUIRE(misses);
   }
-  REQUIRE_THROWS_WITH(PhongFormat::at_budget(PhongForm::dot, "b4"), Catch::Contains("b1, b2 or b3"));
+  REQUIRE_THROWS_WITH(PhongFormat::at_budget(PhongForm::dot, "b5"), Catch::Contains("b1, b2, b3 or b4"));
 }

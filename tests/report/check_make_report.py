@@ -201,8 +201,8 @@ def check_plane(out, md, data):
                        c and c["lut4"], c and c["ff"], c and c["bram"], None,
                        [worst(h["n"], h["max_rel_epicenter_lsb"], r) for r in ranges],
                        [worst(h["n"], h["max_abs_lobe"], r) for r in ranges]))
-    phong_names = ("n1000", "n128", "n64", "n1000_consth", "n64_consth", "b2_n1000", "b3_n1000", "cross_n1000",
-                   "cross_n1000_consth", "cross_b2_n1000", "cross_b3_n1000")
+    phong_names = ("n1000", "n128", "n64", "n1000_consth", "n64_consth", "b2_n1000", "b3_n1000", "b4_n1000",
+                   "cross_n1000", "cross_n1000_consth", "cross_b2_n1000", "cross_b3_n1000", "cross_b4_n1000")
     for name in phong_names:
         path = os.path.join(out, f"phong_{name}.json")
         if not os.path.exists(path):

@@ -3,16 +3,18 @@
 // bit for bit, on the geometry span interface (docs/interfaces.md#geometry-span-interface):
 // random spans and the hard cases under random span offers, random pixel backpressure and
 // random asynchronous resets (a reset drops every span and pixel in flight), and the
-// throughput contract (one pixel per clock, l = 0 spans back to back included). Eight
+// throughput contract (one pixel per clock, l = 0 spans back to back included). Ten
 // configurations: n1000 (the default parameters), n64 with constant H, the cancellation-free
-// form (PhongFormat::cross) with and without constant H, and both forms at budgets B2 and B3
+// form (PhongFormat::cross) with and without constant H, and both forms at budgets B2, B3 and B4
 // (PhongFormat::at_budget, shorter runs).
 // The expected pixels come from PhongModel::stream_span of each span the core accepted; the
 // handshake rules (valid held, data stable while stalled) are checked every cycle.
 #include "Vphong_b2_n1000.h"
 #include "Vphong_b3_n1000.h"
+#include "Vphong_b4_n1000.h"
 #include "Vphong_cross_b2_n1000.h"
 #include "Vphong_cross_b3_n1000.h"
+#include "Vphong_cross_b4_n1000.h"
 #include "Vphong_cross_n1000.h"
 #include "Vphong_cross_n1000_consth.h"
 #include "Vphong_n1000.h"
@@ -290,10 +292,11 @@ TEST_CASE("phong_stream cross n1000 constant H: random spans under backpressure 
   run_throughput<Vphong_cross_n1000_consth>(f, 0, 1000);
 }
 
-TEMPLATE_TEST_CASE_SIG("phong_stream at budgets B2 and B3: random spans under backpressure and resets, bit-exact",
+TEMPLATE_TEST_CASE_SIG("phong_stream at budgets B2, B3 and B4: random spans under backpressure and resets, bit-exact",
                        "[phong_stream]", ((class Model, int Budget, bool Cross), Model, Budget, Cross),
-                       (Vphong_b2_n1000, 2, false), (Vphong_b3_n1000, 3, false), (Vphong_cross_b2_n1000, 2, true),
-                       (Vphong_cross_b3_n1000, 3, true)) {
+                       (Vphong_b2_n1000, 2, false), (Vphong_b3_n1000, 3, false), (Vphong_b4_n1000, 4, false),
+                       (Vphong_cross_b2_n1000, 2, true), (Vphong_cross_b3_n1000, 3, true),
+                       (Vphong_cross_b4_n1000, 4, true)) {
   const PhongFormat f = PhongFormat::at_budget(Cross ? PhongForm::cross : PhongForm::dot, "b" + std::to_string(Budget));
   run_random<Model>(f, random_spans(f, 20 + Budget, 1000), 0.7, 0.7, 0.001, 30 + Budget);
   run_throughput<Model>(f, 0, 500);
