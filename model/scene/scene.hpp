@@ -7,12 +7,14 @@
 // x = 0..width-1 to the right, y = 0..height-1 downwards.
 #pragma once
 
+#include "brdf.hpp"
 #include "scanline_setup.hpp"
 
 #include <glm/vec3.hpp>
 
 #include <array>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -25,11 +27,30 @@ class SceneError : public std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The reflectance functions a material may name in "brdf" (scenes/README.md#colour): a shape
+// of model/reference/brdf.hpp as a function of the angle between N and H, and whether its
+// energy normalization (ModelEvaluator::own_norm) multiplies it. Only the colour reference
+// (compose.hpp) evaluates it; the device and the grey images always compute cos^n.
+struct BrdfChoice {
+  std::string name;   // as written in the scene file
+  Model model = Model::blinn;
+  bool normalized = false;
+};
+const std::vector<BrdfChoice>& brdf_choices();  // the first is the default, "blinn_phong"
+
 struct Material {
   std::string name;
   double n = 1.0;     // specular exponent, [1, 1000]
   double ks = 1.0;    // specular coefficient, [0, 1]
   double norm = 1.0;  // normalization s(n) applied through C (1: none)
+  // Colour (linear light, channels r, g, b; compose.hpp):
+  glm::dvec3 diffuse{0.0};                // Lambert reflectance, each channel in [0, 1]
+  std::optional<glm::dvec3> specular{};   // specular colour, each channel in [0, 1]; none: ks
+  glm::dvec3 emission{0.0};               // emitted light, each channel in [0, 1000]
+  BrdfChoice brdf = brdf_choices().front();
+
+  // The specular colour: `specular`, or [ks, ks, ks] when the scene gives none.
+  glm::dvec3 specular_colour() const { return specular ? *specular : glm::dvec3(ks); }
 };
 
 enum class LightType { directional, point };
@@ -39,6 +60,10 @@ struct Light {
   glm::dvec3 direction{0, 0, 1};  // directional: unit vector from the surface TOWARDS the light
   glm::dvec3 position{0, 0, 0};   // point light position
   double intensity = 1.0;         // Is
+  std::optional<glm::dvec3> color{};  // colour of the light, each channel in [0, 1000]; none: Is
+
+  // The light's colour (compose.hpp): `color`, or [Is, Is, Is] when the scene gives none.
+  glm::dvec3 colour() const { return color ? *color : glm::dvec3(intensity); }
 
   // Unit vector from surface point p towards the light.
   glm::dvec3 to_light(const glm::dvec3& p) const;
@@ -80,6 +105,7 @@ struct Scene {
   std::vector<Material> materials;
   std::vector<Light> lights;
   std::vector<Mesh> meshes;
+  glm::dvec3 ambient{0.0};  // ambient light (compose.hpp), each channel in [0, 1000]
 
   size_t triangle_count() const;
 };
@@ -88,6 +114,8 @@ struct Scene {
 // (scanline_setup.hpp), so an image row may hold at most kMaxLen + 1 pixels.
 inline constexpr int kMaxImageSize = kMaxLen + 1;
 inline constexpr int kMaxTessellation = 1024;
+inline constexpr double kMaxReflectance = 1.0;  // diffuse and specular colour channels: [0, 1]
+inline constexpr double kMaxRadiance = 1000.0;  // emission, ambient and light colour channels: [0, 1000]
 
 Scene load_scene(const std::string& path);               // throws SceneError
 Scene parse_scene(const std::string& json_text, const std::string& path_for_messages);

@@ -146,7 +146,7 @@ try:
     import tempfile
     with tempfile.TemporaryDirectory() as tmp:
         written = verdict.plot(pts, tmp, plt)
-        check([os.path.basename(w) for w in written] == ["verdict_b1.png", "verdict_b2.png", "verdict_b3.png"]
+        check([os.path.basename(w) for w in written] == ["verdict_b1.png", "verdict_b2.png", "verdict_b3.png", "verdict_b4.png"]
               and all(os.path.getsize(w) > 0 for w in written), f"verdict.plot wrote {written}")
 except ImportError:
     failures.append("matplotlib is missing for /usr/bin/python3 (python3-matplotlib): the plots are not checked")

@@ -1,7 +1,9 @@
 // SPDX-License-Identifier: Apache-2.0
 // Image accumulation, PNG and heatmap output, and the render tool's command line.
+#include "compose.hpp"
 #include "image.hpp"
 #include "raster.hpp"
+#include "rom_image.hpp"
 #include "scene.hpp"
 
 #define STB_IMAGE_IMPLEMENTATION
@@ -291,5 +293,100 @@ TEST_CASE("render: CSV statistics round-trip to the exact doubles", "[scene][cli
   CHECK(std::strtod(cells[10].c_str(), nullptr) == es.max_abs);  // max_abs_interp_error
   CHECK(std::strtod(cells[11].c_str(), nullptr) == es.rms);      // rms_interp_error
   CHECK(std::strtod(cells[12].c_str(), nullptr) == peak);        // peak_phong
+  fs::remove_all(dir);
+}
+
+// ---------------------------------------------------------------- colour images (compose.hpp)
+
+TEST_CASE("colour difference PNG: 128 + gain (a - b) in sRGB codes, uncovered black", "[scene][image][colour]") {
+  const fs::path dir = temp_dir("colour_diff");
+  RgbImage a(64, 4), b(64, 4);
+  // Pixel (0, 0): codes (188, 0, 255) against (188, 3, 243) (test_compose.cpp): a - b = (0, -3, +12).
+  a.value[0] = {0.5, 0.0, 1.0};
+  b.value[0] = {0.5, 0.001, 0.9};
+  a.covered[0] = 1;
+  // Pixel (1, 0): covered, equal: grey 128. Every other pixel is covered by neither: black.
+  a.covered[1] = b.covered[1] = 1;
+  write_code_diff_png((dir / "d.png").string(), a, b, "A - B");
+  const Png png = read_png(dir / "d.png");
+  CHECK(png.w == 64);
+  CHECK(png.h > 4);  // the strip with the label and the range
+  // R = 12 codes, gain = floor(127 / 12) = 10.
+  CHECK(png.at(0, 0)[0] == 128);
+  CHECK(png.at(0, 0)[1] == 128 - 30);
+  CHECK(png.at(0, 0)[2] == 128 + 120);
+  for (int ch = 0; ch < 3; ++ch) {
+    CHECK(png.at(1, 0)[ch] == 128);
+    CHECK(png.at(5, 2)[ch] == 0);
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("render --colour: the three colour images and the sRGB-code columns", "[scene][cli][colour]") {
+  const fs::path dir = temp_dir("cli_colour");
+  std::string scene = kSmallScene;
+  const std::string ks = "\"ks\": 0.8}";
+  scene.replace(scene.find(ks), ks.size(), R"("ks": 0.8, "diffuse": [0.4, 0.2, 0.1], "specular": [0.5, 0.5, 0.4]})");
+  std::ofstream(dir / "ball.json") << scene;
+  const Run r = run_render("--scene " + (dir / "ball.json").string() + " --out-dir " + (dir / "img").string() +
+                               " --colour --csv-header",
+                           dir);
+  INFO(r.err);
+  REQUIRE(r.code == 0);
+  for (const char* suffix : {"_colour_device.png", "_colour_reference.png", "_colour_diff.png"}) {
+    const fs::path p = dir / "img" / (std::string("ball") + suffix);
+    REQUIRE(fs::exists(p));
+    CHECK(read_png(p).w == 48);
+  }
+  CHECK(read_png(dir / "img" / "ball_colour_device.png").h == 32);
+  CHECK_FALSE(fs::exists(dir / "img" / "ball_golden.png"));  // --golden was not given
+  CHECK_THAT(r.out, Contains(",colour_max_code_r,colour_max_code_g,colour_max_code_b,colour_mean_code_r,"
+                             "colour_mean_code_g,colour_mean_code_b,colour_ms\n"));
+  // The CSV's colour columns are the statistics of the two images as this process composes them.
+  std::vector<std::string> cells;
+  {
+    std::istringstream in(r.out.substr(r.out.find('\n') + 1));
+    std::string line, c;
+    std::getline(in, line);
+    std::istringstream cs(line);
+    while (std::getline(cs, c, ',')) cells.push_back(c);
+  }
+  REQUIRE(cells.size() == 17 + 7);
+  const Scene s = parse_scene(scene, "ball.json");
+  const Raster raster = rasterize(s);
+  const device::DeviceModel dm = load_device_model(device::Format{}, kCoefMinimaxHex, kCosHex);
+  const ColourErrorStats st = srgb_code_error(compose(s, raster, device_unit_specular(dm)).image,
+                                              compose(s, raster, reference_unit_specular(s)).image);
+  for (int ch = 0; ch < 3; ++ch) {
+    CHECK(std::stoi(cells[17 + static_cast<size_t>(ch)]) == st.max_abs[static_cast<size_t>(ch)]);
+    CHECK(std::strtod(cells[20 + static_cast<size_t>(ch)].c_str(), nullptr) == st.mean_abs[static_cast<size_t>(ch)]);
+  }
+  fs::remove_all(dir);
+}
+
+TEST_CASE("render --colour: a bad colour field exits with 2, names file and field, writes nothing", "[scene][cli][colour]") {
+  const fs::path dir = temp_dir("cli_colour_bad");
+  const fs::path out = dir / "img";
+  const struct {
+    std::string from, to, field, expected;
+  } cases[] = {
+      {"\"ks\": 0.8}", R"("ks": 0.8, "diffuse": [0.4, -0.2, 0.1]})", "materials[0].diffuse",
+       "an array of 3 finite numbers, each in [0, 1]"},
+      {"\"ks\": 0.8}", R"("ks": 0.8, "brdf": "phong"})", "materials[0].brdf", "one of \"blinn_phong\""},
+      {"\"intensity\": 1}", R"("intensity": 1, "color": [1, 1]})", "lights[0].color",
+       "an array of 3 finite numbers, each in [0, 1000]"},
+  };
+  for (const auto& c : cases) {
+    std::string bad = kSmallScene;
+    bad.replace(bad.find(c.from), c.from.size(), c.to);
+    std::ofstream(dir / "bad.json") << bad;
+    const Run r = run_render("--scene " + (dir / "bad.json").string() + " --out-dir " + out.string() + " --colour", dir);
+    INFO(c.field << ": " << r.err);
+    CHECK(r.code == 2);
+    CHECK_THAT(r.err, Contains((dir / "bad.json").string()));
+    CHECK_THAT(r.err, Contains("'" + c.field + "'"));
+    CHECK_THAT(r.err, Contains(c.expected));
+    CHECK_FALSE(fs::exists(out));
+  }
   fs::remove_all(dir);
 }

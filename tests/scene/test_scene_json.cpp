@@ -59,6 +59,62 @@ TEST_CASE("a valid scene parses into the values written in it", "[scene][json]")
   CHECK(s.meshes[0].positions.size() == 2u * 8 * 7 + 2);
 }
 
+TEST_CASE("colour fields: defaults keep the grey scene, given values are read", "[scene][json][colour]") {
+  // Without colour fields: diffuse and emission 0, specular colour [ks, ks, ks], blinn_phong,
+  // light colour [Is, Is, Is], ambient 0.
+  const Scene g = parse_scene(scene_text(), "grey.json");
+  CHECK(g.materials[0].diffuse == glm::dvec3(0.0));
+  CHECK(g.materials[0].emission == glm::dvec3(0.0));
+  CHECK_FALSE(g.materials[0].specular.has_value());
+  CHECK(g.materials[0].specular_colour() == glm::dvec3(0.5));
+  CHECK(g.materials[0].brdf.name == "blinn_phong");
+  CHECK(g.materials[0].brdf.model == Model::blinn);
+  CHECK_FALSE(g.materials[0].brdf.normalized);
+  CHECK(g.lights[0].colour() == glm::dvec3(0.75));
+  CHECK(g.ambient == glm::dvec3(0.0));
+
+  const Scene c = parse_scene(
+      scene_text(kImage, kCamera,
+                 R"("materials": [{"name": "m", "n": 20, "ks": 0.5, "diffuse": [0.5, 0.25, 0], "specular": [1, 0, 0.125],
+                                   "emission": [0, 0, 1000], "brdf": "f16"}])",
+                 R"("lights": [{"type": "directional", "direction": [0, 0, 1], "intensity": 0.75, "color": [0, 2, 1000]},
+                               {"type": "point", "position": [0, 0, 1], "intensity": 0.5, "color": [0, 0, 0]}])",
+                 kMeshes + R"(, "ambient": [0.25, 0.5, 0])"),
+      "colour.json");
+  CHECK(c.materials[0].diffuse == glm::dvec3(0.5, 0.25, 0.0));
+  CHECK(c.materials[0].specular_colour() == glm::dvec3(1.0, 0.0, 0.125));
+  CHECK(c.materials[0].ks == 0.5);  // the grey images keep ks
+  CHECK(c.materials[0].emission == glm::dvec3(0.0, 0.0, 1000.0));
+  CHECK(c.materials[0].brdf.model == Model::f16);
+  CHECK(c.materials[0].brdf.normalized);
+  CHECK(c.lights[0].colour() == glm::dvec3(0.0, 2.0, 1000.0));
+  CHECK(c.lights[0].intensity == 0.75);  // the grey images keep Is
+  CHECK(c.lights[1].colour() == glm::dvec3(0.0));
+  CHECK(c.ambient == glm::dvec3(0.25, 0.5, 0.0));
+}
+
+TEST_CASE("colour fields: every BRDF name parses into its shape of brdf.hpp", "[scene][json][colour]") {
+  const struct {
+    const char* name;
+    Model model;
+    bool normalized;
+  } want[] = {{"blinn_phong", Model::blinn, false},        {"blinn_phong_normalized", Model::blinn, true},
+              {"schlick", Model::schlick, false},           {"schlick_normalized", Model::schlick, true},
+              {"schlick_mod", Model::schlick_mod, false},   {"schlick_mod_normalized", Model::schlick_mod, true},
+              {"lyon", Model::lyon, false},                 {"lyon_normalized", Model::lyon, true},
+              {"f16", Model::f16, true}};
+  REQUIRE(brdf_choices().size() == std::size(want));
+  for (const auto& w : want) {
+    INFO(w.name);
+    const Scene s = parse_scene(
+        scene_text(kImage, kCamera, R"("materials": [{"name": "m", "n": 20, "ks": 0.5, "brdf": ")" + std::string(w.name) + "\"}]"),
+        "brdf.json");
+    CHECK(s.materials[0].brdf.name == w.name);
+    CHECK(s.materials[0].brdf.model == w.model);
+    CHECK(s.materials[0].brdf.normalized == w.normalized);
+  }
+}
+
 TEST_CASE("bad scene files: the message names file, field and expectation", "[scene][json]") {
   struct Case {
     std::string text, field, expected;
@@ -112,6 +168,37 @@ TEST_CASE("bad scene files: the message names file, field and expectation", "[sc
                   R"("meshes": [{"type": "triangles", "material": "m", "vertices": [[0,0,0],[1,0,0],[0,1,0]], "normals": [[0,0,1],[0,0,1]], "triangles": [[0,1,2]]}])"),
        "'meshes[0].normals'", "one normal per vertex"},
       {"[1, 2, 3]", "'(top level)'", "an object"},
+      // Colour (scenes/README.md#colour): negative, out of range, not three finite numbers, unknown BRDF.
+      {scene_text(kImage, kCamera, R"("materials": [{"name": "m", "n": 5, "ks": 0.5, "diffuse": [0.5, -0.1, 0.2]}])"),
+       "'materials[0].diffuse'", "an array of 3 finite numbers, each in [0, 1]"},
+      {scene_text(kImage, kCamera,
+                  R"("materials": [{"name": "a", "n": 5, "ks": 0.5}, {"name": "m", "n": 5, "ks": 0.5, "diffuse": [0.5, 0.2]}])"),
+       "'materials[1].diffuse'", "an array of 3 finite numbers, each in [0, 1]"},
+      {scene_text(kImage, kCamera, R"("materials": [{"name": "m", "n": 5, "ks": 0.5, "specular": [0.5, 0.2, 0.1, 0.0]}])"),
+       "'materials[0].specular'", "an array of 3 finite numbers, each in [0, 1]"},
+      {scene_text(kImage, kCamera, R"("materials": [{"name": "m", "n": 5, "ks": 0.5, "specular": [0.5, 1.5, 0.1]}])"),
+       "'materials[0].specular'", "an array of 3 finite numbers, each in [0, 1]"},
+      {scene_text(kImage, kCamera, R"("materials": [{"name": "m", "n": 5, "ks": 0.5, "emission": [0, "red", 0]}])"),
+       "'materials[0].emission'", "an array of 3 finite numbers, each in [0, 1000]"},
+      {scene_text(kImage, kCamera, R"("materials": [{"name": "m", "n": 5, "ks": 0.5, "emission": 0.5}])"),
+       "'materials[0].emission'", "an array of 3 finite numbers, each in [0, 1000]"},
+      {scene_text(kImage, kCamera, R"("materials": [{"name": "m", "n": 5, "ks": 0.5, "brdf": "cook_torrance"}])"),
+       "'materials[0].brdf'", "one of \"blinn_phong\", \"blinn_phong_normalized\", \"schlick\""},
+      {scene_text(kImage, kCamera, R"("materials": [{"name": "m", "n": 5, "ks": 0.5, "brdf": 3}])"),
+       "'materials[0].brdf'", "\"f16\""},
+      {scene_text(kImage, kCamera, kMaterials,
+                  R"("lights": [{"type": "directional", "direction": [0, 0, 1], "intensity": 1, "color": [1, -0.5, 1]}])"),
+       "'lights[0].color'", "an array of 3 finite numbers, each in [0, 1000]"},
+      {scene_text(kImage, kCamera, kMaterials,
+                  R"("lights": [{"type": "point", "position": [0, 0, 1], "intensity": 1, "color": [1, 2000, 1]}])"),
+       "'lights[0].color'", "an array of 3 finite numbers, each in [0, 1000]"},
+      {scene_text(kImage, kCamera, kMaterials,
+                  R"("lights": [{"type": "point", "position": [0, 0, 1], "intensity": 1, "colour": [1, 1, 1]}])"),
+       "'lights[0].colour'", "unknown field, expected no field 'colour' (allowed: type position intensity color)"},
+      {scene_text(kImage, kCamera, kMaterials, kLights, kMeshes + R"(, "ambient": [0.1, 0.1])"), "'ambient'",
+       "an array of 3 finite numbers, each in [0, 1000]"},
+      {scene_text(kImage, kCamera, kMaterials, kLights, kMeshes + R"(, "ambient": [0.1, 0.1, -1e-9])"), "'ambient'",
+       "an array of 3 finite numbers, each in [0, 1000]"},
   };
   for (const auto& c : cases) {
     INFO(c.text);
