@@ -37,6 +37,7 @@
 #include "phong_stage.hpp"
 #include "scene_stage.hpp"
 #include "stream_stage.hpp"
+#include "colour_stage.hpp"
 #include "system_stage.hpp"
 #include "system_blend.inc"  // SPECULAR_SYSTEM_BLEND (sim/CMakeLists.txt)
 
@@ -611,6 +612,16 @@ int main(int argc, char** argv) {
           break;
         }
     }
+    // Colour stage (colour_stage.hpp): every scene composed in colour around the default build's
+    // RTL intensities, against the composition around the material's BRDF.
+    std::vector<ColourStats> colours;
+    if (!scenes.empty() && want("default")) {
+      const auto& bc = specular::build_config("default");
+      StreamHarness<Vspecular_scene_default> ch("specular_stream",
+                                                specular::load_device_model(bc.f, bc.coef_hex(), bc.cos_hex()), 16);
+      for (const auto& ls : scenes) colours.push_back(run_colour_scene(ch, ls, bc.name, images_dir));
+      print_colour_table(colours);
+    }
     // Stream stage: random spans (default build). The scenes went through the stream in the
     // scene stage; their rows (first configuration) set the stream's clocks per pixel against
     // the register interface's l + L + 1 per line, L + 1 measured per line in the line stage.
@@ -720,6 +731,11 @@ int main(int argc, char** argv) {
       ok = ok && stream.ok();
       if (!stream.ok()) std::cout << "FAIL stream stage: see the stream summary\n";
     }
+    for (const auto& c : colours) {
+      ok = ok && c.ok();
+      if (!c.ok()) std::cout << "FAIL colour " << c.scene << ": " << c.mismatches << " mismatches, " << c.protocol_errors
+                             << " protocol errors\n";
+    }
     for (const auto& [name, bs] : blend_streams) {
       ok = ok && bs.ok();
       if (!bs.ok()) std::cout << "FAIL stream stage " << name << ": see its stream summary\n";
@@ -751,6 +767,7 @@ int main(int argc, char** argv) {
       }
       if (stream_spans > 0) j["stream"] = stream.to_json();
       for (const auto& [name, bs] : blend_streams) j["stream_by_config"][name] = bs.to_json();
+      for (const auto& c : colours) j["colour"][c.scene] = c.to_json();
       for (const auto& s : scene_streams) j["scenes_stream"][s.name] = s.to_json();
       // phong: the textbook form (n1000); phong_cross: the cancellation-free form (cross_n1000).
       for (const auto& s : phong_stats)
