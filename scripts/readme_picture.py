@@ -1,21 +1,22 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: Apache-2.0
-"""The README's picture: one scene rendered through the RTL beside its double reference.
+"""The README's picture: one scene rendered in colour through the RTL beside its reference.
 
-Runs `sim_regression` on one scene only (the scene stage of sim/README.md, section "Scene
-stage": spans of the rasterized scene through the batched setup into `specular_stream` under
-Verilator, every pixel checked against the golden model and the double references) and puts
-three of the images it writes side by side, pixel for pixel:
+Runs `sim_regression` on one scene only, the default build (its scene and colour stages,
+sim/README.md and docs/colour.md: spans of the rasterized scene through the batched setup into
+`specular_stream` under Verilator, every pixel checked against the golden model; the colour
+image composed around the RTL's intensities) and puts three of the images it writes side by side,
+pixel for pixel:
 
-  <scene>_rtl.png           the RTL's output (lights summed)
-  <scene>_float.png         C cos^n(psi_i) in double from the unquantized setup
-  <scene>_device_error.png  RTL - C cos^n(psi_i) of the loaded registers, with its scale
+  <scene>_colour_rtl.png        the RTL's intensities composed in colour (every light)
+  <scene>_colour_reference.png  the same composition around the material's BRDF in double
+  <scene>_colour_diff.png       their difference in 8-bit sRGB codes, amplified, with its range
 
-The two grey images share one exposure (sim/README.md, the table of images). Run from the
-repository root, so that the RTL's ROM paths resolve (rtl/README.md, "ROM files"):
+--grey draws the grey images instead (<scene>_rtl, _float, _device_error). Run from the repository
+root, so that the RTL's ROM paths resolve (rtl/README.md, "ROM files"):
 
-usage: scripts/readme_picture.py --sim build/bin/sim_regression [--scene scenes/torus_point.json]
-                                 [--out docs/img/readme_scene.png]
+usage: scripts/readme_picture.py --sim build/bin/sim_regression [--scene scenes/duck_colour.json]
+                                 [--grey] [--out docs/img/readme_scene.png]
 `make readme-picture` runs it.
 """
 import argparse
@@ -31,11 +32,14 @@ matplotlib.use("Agg")
 import matplotlib.image as mpimg  # noqa: E402
 import matplotlib.pyplot as plt  # noqa: E402
 
-PANELS = [
-    ("rtl", "RTL: specular_stream (Verilator)"),
-    ("float", "reference: C cos^n(psi), double"),
-    ("device_error", "RTL - C cos^n(psi) of its registers"),
-]
+PANELS = {
+    "colour": [("colour_rtl", "RTL: specular_stream (Verilator), composed"),
+               ("colour_reference", "reference: the material's BRDF, double"),
+               ("colour_diff", "RTL - reference, sRGB codes")],
+    "grey": [("rtl", "RTL: specular_stream (Verilator)"),
+             ("float", "reference: C cos^n(psi), double"),
+             ("device_error", "RTL - C cos^n(psi) of its registers")],
+}
 GAP = 8      # pixels between the panels
 TITLE = 22   # pixels of the title band above them
 BG = "#1c1f2b"
@@ -44,18 +48,20 @@ BG = "#1c1f2b"
 def main(argv):
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("--sim", required=True, help="the sim_regression binary")
-    ap.add_argument("--scene", default="scenes/torus_point.json", help="the scene (JSON, scenes/README.md)")
+    ap.add_argument("--scene", default="scenes/duck_colour.json", help="the scene (JSON, scenes/README.md)")
+    ap.add_argument("--grey", action="store_true", help="the grey images: RTL, C cos^n(psi), the device error")
     ap.add_argument("--out", default="docs/img/readme_scene.png", help="the PNG to write")
     a = ap.parse_args(argv)
 
     name = os.path.splitext(os.path.basename(a.scene))[0]
+    panels = PANELS["grey" if a.grey else "colour"]
     with tempfile.TemporaryDirectory() as tmp:
         scenes = os.path.join(tmp, "scenes")
         images = os.path.join(tmp, "images")
         os.makedirs(scenes)
         shutil.copy(a.scene, scenes)  # the scene alone (a model file path would need the original folder)
         # The smallest run that renders the scene: the default build only, no random lines,
-        # no stream or system stage.
+        # no stream or system stage (the colour stage runs with the scenes).
         cmd = [a.sim, "--config", "default", "--random", "0", "--stream-spans", "0", "--system-spans", "0",
                "--scenes-dir", scenes, "--images-dir", images]
         run = subprocess.run(cmd, capture_output=True, text=True)
@@ -63,14 +69,14 @@ def main(argv):
             sys.stderr.write(run.stdout[-3000:] + run.stderr[-3000:])
             print(f"readme_picture: {' '.join(cmd)} failed ({run.returncode})", file=sys.stderr)
             return 1
-        imgs = [mpimg.imread(os.path.join(images, f"{name}_{kind}.png")) for kind, _ in PANELS]
+        imgs = [mpimg.imread(os.path.join(images, f"{name}_{kind}.png")) for kind, _ in panels]
 
     width = sum(im.shape[1] for im in imgs) + GAP * (len(imgs) + 1)
     height = max(im.shape[0] for im in imgs) + TITLE + GAP
     dpi = 100
     fig = plt.figure(figsize=(width / dpi, height / dpi), dpi=dpi, facecolor=BG)
     x = GAP
-    for im, (_, title) in zip(imgs, PANELS):
+    for im, (_, title) in zip(imgs, panels):
         h, w = im.shape[:2]
         # axes in figure fractions, placed on whole pixels: one image pixel per PNG pixel
         ax = fig.add_axes([x / width, (height - TITLE - h) / height, w / width, h / height])

