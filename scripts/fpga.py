@@ -63,7 +63,8 @@ DEVICE_ALL = ["hx8k", "up5k", "ecp5"]
 # The setup and the system: hierarchical by default, and on the ECP5 too by default.
 BIG_TOPS = ("setup", "system")
 # Interface widths go to the harness (which passes them to the core); every other --param to the core.
-HARNESS_WIDTHS = ("CBits", "AngleBits", "NBits", "LenBits", "TagBits", "AddrWidth", "VecBits", "MulBits")
+# Channels too: it widens the harness's C and intensity (rtl/fpga/fpga_ooc.sv).
+HARNESS_WIDTHS = ("CBits", "AngleBits", "NBits", "LenBits", "TagBits", "AddrWidth", "VecBits", "MulBits", "Channels")
 # --record without --label may set only these: an entry is keyed by them (fpga_record.key).
 KEYED_PARAMS = ("MulTileBits", "TileBits", "SetupII")
 FILELISTS = ["rtl/specular.f", "rtl/competitors/phong/phong.f"]

@@ -782,7 +782,7 @@ int main(int argc, char** argv) {
           const nlohmann::json rj = {{"spans", r.spans}, {"pixels", r.pixels}, {"mismatches", r.mismatches},
                                      {"px_per_clock_fill", r.px_per_clock_fill()}, {"px_per_clock_steady", r.px_per_clock_steady()},
                                      {"setup_rel_epicenter", r.setup_rel}, {"setup_lsb", r.setup_lsb},
-                                     {"e2e_rel_epicenter", r.e2e_rel}, {"e2e_lsb", r.e2e_lsb}, {"ok", r.ok()}};
+                                     {"e2e_rel_epicenter", r.e2e_rel}, {"e2e_lsb", r.e2e_lsb}, {"e2e_worst", r.e2e_worst}, {"ok", r.ok()}};
           if (system.setup_ii == 1) j["system"][r.name] = rj;
           j["system_setup_ii"][std::to_string(system.setup_ii)][r.name] = rj;
         }

@@ -228,10 +228,24 @@ PixelTrace DeviceModel::trace(const Registers& raw, int i) const {
   } else if (t.overflow) {
     return t;
   }
-  // Multiplier 13, round half up back to the format of C.
-  const uint64_t p = static_cast<uint64_t>(r.c) * cosk;
-  t.intensity = static_cast<uint32_t>((p + (1ULL << (f_.cos_data_bits - 1))) >> f_.cos_data_bits);
+  t.intensity = mul13(r.c, cosk);
   return t;
+}
+
+uint32_t DeviceModel::mul13(uint32_t c, uint32_t cosk) const {
+  const uint64_t p = static_cast<uint64_t>(c) * cosk;
+  return static_cast<uint32_t>((p + (1ULL << (f_.cos_data_bits - 1))) >> f_.cos_data_bits);
+}
+
+RgbC DeviceModel::rgb_pixel(const Registers& r, const RgbC& c, int i) const {
+  const PixelTrace t = trace(r, i);
+  RgbC out{};
+  // The zero flags of trace(): past pi/2, an invalid n, or (one read) past ROM 12's domain.
+  if (t.far || t.bank < 0 || (!f_.blend && t.overflow)) return out;
+  const uint32_t cosk = f_.blend ? t.blended : t.cosk;
+  const uint32_t c_mask = static_cast<uint32_t>((1ULL << f_.c_bits) - 1);
+  for (size_t ch = 0; ch < out.size(); ++ch) out[ch] = mul13(c[ch] & c_mask, cosk);
+  return out;
 }
 
 DeviceModel::Read DeviceModel::read_cos(int bank, uint32_t coef, uint64_t abs_psi_t) const {

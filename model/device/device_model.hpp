@@ -37,6 +37,7 @@
 #include "scanline_setup.hpp"
 
 #include <algorithm>
+#include <array>
 #include <bit>
 #include <cstdint>
 #include <string>
@@ -188,6 +189,10 @@ struct StreamPixel {
   bool operator==(const StreamPixel&) const = default;
 };
 
+// The RGB core (specular_stream's Channels = 3, docs/interfaces.md): one C per channel, channel 0
+// first (the low bits of span_c_i and px_intensity_o).
+using RgbC = std::array<uint32_t, 3>;
+
 // The datapath of the header comment, integer arithmetic only.
 class DeviceModel {
  public:
@@ -206,6 +211,10 @@ class DeviceModel {
   // Blend mode: the second bank of first bank j (j + 1, the last bank for the last).
   int second_bank(int j) const { return std::min(j + 1, static_cast<int>(f_.banks.size()) - 1); }
   uint32_t pixel(const Registers& r, int i) const { return trace(r, i).intensity; }
+  // The RGB core's pixel i: the one cos^k (or blended value) of trace(r, i) through multiplier 13
+  // once per channel, C = c[ch] (each cut to c_bits); r.c is not used. Channel ch equals
+  // pixel() with r.c = c[ch].
+  RgbC rgb_pixel(const Registers& r, const RgbC& c, int i) const;
   PixelTrace trace(const Registers& r, int i) const;
   // The l + 1 = len + 1 intensities of one line in pixel order.
   std::vector<uint32_t> line(const Registers& r) const;
@@ -225,6 +234,8 @@ class DeviceModel {
     bool overflow = false;
   };
   Read read_cos(int bank, uint32_t coef, uint64_t abs_psi_t) const;
+  // Multiplier 13: c * cosk rounded half up back to the format of C.
+  uint32_t mul13(uint32_t c, uint32_t cosk) const;
   void check() const;
   Format f_;
   std::vector<uint32_t> coef_rom_, cos_rom_;

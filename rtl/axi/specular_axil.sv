@@ -119,6 +119,10 @@ module specular_axil #(
   if (Latency > 255) begin : gen_latency_check
     `SPEC_PARAM_ERROR("specular_axil: Latency does not fit BUILD_CORE[7:0]")
   end
+  // The register map has one SPAN_C register: an RGB span would need a map change.
+  if (Channels != 1) begin : gen_channels_check
+    `SPEC_PARAM_ERROR("specular_axil: Channels must be 1 (the register map has one SPAN_C; RGB spans: specular_axis)")
+  end
 
   // Byte lanes of WSTRB applied to a 32-bit register value.
   function automatic logic [31:0] strb_merge(input logic [31:0] old, input logic [31:0] data,

@@ -11,8 +11,9 @@
 //                           them through, an empty P to local signals awaddr, ...
 //
 // The AXI4-Stream pixel master of specular_axis and specular_axil
-// (docs/interfaces.md#axi4-stream-wrapper-specular_axis), CBits and TagBits wide:
-//   `SPECULAR_AXIS_PX_PORTS   m_axis_px_tdata (CBits rounded up to whole bytes), _tlast,
+// (docs/interfaces.md#axi4-stream-wrapper-specular_axis), of a module that names Channels,
+// CBits and TagBits:
+//   `SPECULAR_AXIS_PX_PORTS   m_axis_px_tdata (Channels * CBits rounded up to whole bytes), _tlast,
 //                             _tuser (the tag), _tvalid, _tready
 //   `SPECULAR_AXIS_PX_MAP(P)  their connections to P``tdata .. P``tready
 
@@ -62,7 +63,7 @@
   .s_axil_rready  (P``rready)
 
 `define SPECULAR_AXIS_PX_PORTS \
-  output logic [((CBits + 7) / 8) * 8-1:0] m_axis_px_tdata, \
+  output logic [((Channels * CBits + 7) / 8) * 8-1:0] m_axis_px_tdata, \
   output logic                             m_axis_px_tlast, \
   output logic [TagBits-1:0]               m_axis_px_tuser, \
   output logic                             m_axis_px_tvalid, \

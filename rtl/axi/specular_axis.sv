@@ -7,7 +7,9 @@
 // Span side (slave), one transfer per span descriptor:
 //   s_axis_span_tdata[SpanDataBits]  {len, n, dpsi, psi0, c}, c in the least significant
 //                                    bits, zero-padded to a whole number of bytes (the pad
-//                                    bits are ignored). Default widths (104 bits, 13 bytes):
+//                                    bits are ignored); c is Channels * CBits wide (channel
+//                                    0 lowest), the fields above it move up by as much.
+//                                    Default widths (104 bits, 13 bytes):
 //                                      [15:0]   c     CBits
 //                                      [47:16]  psi0  AngleBits
 //                                      [79:48]  dpsi  AngleBits
@@ -17,8 +19,9 @@
 //   s_axis_span_tuser[TagBits]       the span's tag (span_tag_i)
 //   s_axis_span_tvalid, s_axis_span_tready
 // Pixel side (master), one transfer per pixel:
-//   m_axis_px_tdata[PxDataBits]      the intensity (CBits) zero-extended to a whole number
-//                                    of bytes (16 bits with the defaults)
+//   m_axis_px_tdata[PxDataBits]      the intensity (Channels * CBits, channel 0 lowest)
+//                                    zero-extended to a whole number of bytes (16 bits with
+//                                    the defaults, 48 with Channels = 3)
 //   m_axis_px_tlast                  last pixel of its span (pixel len)
 //   m_axis_px_tuser[TagBits]         its span's tag
 //   m_axis_px_tvalid, m_axis_px_tready
@@ -39,7 +42,7 @@ module specular_axis #(
   input  logic clk_i,
   input  logic rst_ni,
 
-  input  logic [((CBits + 2 * AngleBits + NBits + LenBits + 7) / 8) * 8-1:0] s_axis_span_tdata,
+  input  logic [((Channels * CBits + 2 * AngleBits + NBits + LenBits + 7) / 8) * 8-1:0] s_axis_span_tdata,
   input  logic [TagBits-1:0] s_axis_span_tuser,
   input  logic               s_axis_span_tvalid,
   output logic               s_axis_span_tready,
@@ -48,21 +51,22 @@ module specular_axis #(
 );
 
   // Descriptor layout: bit offsets of each field in s_axis_span_tdata (read by testbenches).
-  localparam int SpanBits                        = CBits + 2 * AngleBits + NBits + LenBits;
+  localparam int CAllBits                        = Channels * CBits;  // c: every channel
+  localparam int SpanBits                        = CAllBits + 2 * AngleBits + NBits + LenBits;
   localparam int SpanDataBits /*verilator public*/ = ((SpanBits + 7) / 8) * 8;
-  localparam int PxDataBits /*verilator public*/   = ((CBits + 7) / 8) * 8;
+  localparam int PxDataBits /*verilator public*/   = ((CAllBits + 7) / 8) * 8;
   localparam int OffC /*verilator public*/         = 0;
-  localparam int OffPsi0 /*verilator public*/      = OffC + CBits;
+  localparam int OffPsi0 /*verilator public*/      = OffC + CAllBits;
   localparam int OffDpsi /*verilator public*/      = OffPsi0 + AngleBits;
   localparam int OffN /*verilator public*/         = OffDpsi + AngleBits;
   localparam int OffLen /*verilator public*/       = OffN + NBits;
 
-  logic [CBits-1:0]     span_c, px_intensity;
+  logic [CAllBits-1:0]  span_c, px_intensity;
   logic [AngleBits-1:0] span_psi0, span_dpsi;
   logic [NBits-1:0]     span_n;
   logic [LenBits-1:0]   span_len;
 
-  assign span_c    = s_axis_span_tdata[OffC +: CBits];
+  assign span_c    = s_axis_span_tdata[OffC +: CAllBits];
   assign span_psi0 = s_axis_span_tdata[OffPsi0 +: AngleBits];
   assign span_dpsi = s_axis_span_tdata[OffDpsi +: AngleBits];
   assign span_n    = s_axis_span_tdata[OffN +: NBits];

@@ -30,6 +30,14 @@
 //                          (ECP5); bit-exact and of equal latency in every style
 //                          (docs/pipeline.md#multiplier-styles). Not a Format field: the
 //                          arithmetic is the same.
+//   Channels               1, or 3 (RGB): a span carries Channels values of C (span_c_i
+//                          Channels*CBits wide, channel 0 in the low bits) and a pixel as
+//                          many intensities (px_intensity_o likewise): one cos^k per pixel
+//                          (multiplier 11, ROM 12, the blend) feeds one multiplier 13 per
+//                          channel, each rounding as the scalar one; same stage counts. Not
+//                          a Format field: each channel is the scalar device's pixel for its
+//                          C (DeviceModel::rgb_pixel). specular_stream and specular_axis
+//                          take 3; the register interfaces and the system refuse it.
 //   CoefRomFile, CosRomFile  the ROM files, read with $readmemh at elaboration, paths
 //                          relative to the working directory (formats: roms/README.md)
 // The numeric parameters are /*verilator public*/ (Verilator keeps the metacomment in a
@@ -62,6 +70,7 @@
   parameter bit Blend        /*verilator public*/ = 1'b0, \
   parameter int WeightBits   /*verilator public*/ = 12, \
   parameter int MulTileBits  /*verilator public*/ = 0, \
+  parameter int Channels     /*verilator public*/ = 1, \
   parameter     CoefRomFile = "roms/coef_minimax.hex", \
   parameter     CosRomFile  = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex"
 
@@ -86,6 +95,7 @@
   .Blend        (Blend), \
   .WeightBits   (WeightBits), \
   .MulTileBits  (MulTileBits), \
+  .Channels     (Channels), \
   .CoefRomFile  (CoefRomFile), \
   .CosRomFile   (CosRomFile)
 

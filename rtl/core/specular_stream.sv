@@ -12,13 +12,15 @@
 //   clk_i, rst_ni                clock; asynchronous reset, active low: drops every span and
 //                                pixel in flight, the core is empty afterwards
 //   span_valid_i, span_ready_o   span handshake
-//   span_c_i[16]                 C, unsigned, 15 fraction bits
+//   span_c_i[16]                 C, unsigned, 15 fraction bits (Channels of them, channel 0
+//                                in the low bits: 48 bits with Channels = 3)
 //   span_psi0_i[32], span_dpsi_i[32]  psi0 and dpsi, radians, signed, 28 fraction bits
 //   span_n_i[10]                 n, 1..1000 (0 or > 1000: every pixel of the span 0)
 //   span_len_i[11]               l: the span has l + 1 pixels
 //   span_tag_i[TagBits]          opaque, returned with every pixel of the span
 //   px_valid_o, px_ready_i       pixel handshake
 //   px_intensity_o[16]           pixel intensity, format of C; 0 while px_valid_o is low
+//                                (Channels of them, channel ch = round(C_ch * cos^k))
 //   px_last_o                    the pixel is pixel l of its span
 //   px_tag_o[TagBits]            the tag of the pixel's span
 //
@@ -68,6 +70,11 @@
 // two reads of ROM 12 (a second block RAM port), each 0 past its bank's domain, and blended
 // before multiplier 13. Same handshake and one pixel per clock; more stages.
 //
+// Channels = 3 (RGB): a span's C is a colour, one C register, 3C register and C delay line
+// per channel; the pixel's one cos^k (or blend) feeds one multiplier 13 per channel, side by
+// side, so the stage counts, the latency and one pixel per clock are those of Channels = 1,
+// and channel ch is the pixel of Channels = 1 with C = C_ch.
+//
 // Parameters: the core's list, written once in rtl/core/specular_params.svh (widths, ROM
 // files, decoder banks; defaults those of specular::device::Format), and TagBits.
 
@@ -81,8 +88,8 @@ module specular_stream #(
 ) (
   input  logic                 clk_i,
   input  logic                 rst_ni,
-  `SPECULAR_SPAN_PORTS(input, output, _i, _o),
-  `SPECULAR_PX_PORTS
+  `SPECULAR_SPAN_PORTS_CH(input, output, _i, _o, Channels),
+  `SPECULAR_PX_PORTS_CH(Channels)
 );
 
   // Stage counts of the blocks and of the whole pipeline: specular_pkg, their one
@@ -110,6 +117,9 @@ module specular_stream #(
   end
   if (TagBits < 1) begin : gen_tag_check
     `SPEC_PARAM_ERROR("specular_stream: TagBits must be >= 1")
+  end
+  if (Channels != 1 && Channels != 3) begin : gen_channels_check
+    `SPEC_PARAM_ERROR("specular_stream: Channels must be 1 (one C) or 3 (an RGB C per span)")
   end
 
   // ---------------------------------------------------------------------------------
@@ -141,14 +151,14 @@ module specular_stream #(
   // ---------------------------------------------------------------------------------
   // Stage 0: registers 1, 2, 4, the tag and counter 5 load with an accepted span
   // ---------------------------------------------------------------------------------
-  logic [CBits-1:0]     c0;
+  logic [Channels*CBits-1:0] c0;  // channel ch in bits [ch*CBits +: CBits]
   logic [AngleBits-1:0] dpsi0;
   logic [NBits-1:0]     n0;
   logic [TagBits-1:0]   tag0;
   logic [LenBits-1:0]   cnt0;
   logic                 unused_borrow, unused_cnt;
 
-  specular_reg #(.Width (CBits)) u_reg1_c (
+  specular_reg #(.Width (Channels * CBits)) u_reg1_c (
     .clk_i  (clk_i),
     .rst_ni (rst_ni),
     .we_i   (accept),
@@ -156,13 +166,17 @@ module specular_stream #(
     .q_o    (c0)
   );
 
-  // 3C for multiplier 13's radix-4 digits, computed once per span.
-  logic [CBits+1:0] c30;
-  specular_reg #(.Width (CBits + 2)) u_reg1_c3 (
+  // 3C for multiplier 13's radix-4 digits, computed once per span (per channel).
+  logic [Channels*(CBits+2)-1:0] c3_span, c30;
+  for (genvar ch = 0; ch < Channels; ch++) begin : gen_c3
+    assign c3_span[ch*(CBits+2) +: CBits+2] = (CBits + 2)'(span_c_i[ch*CBits +: CBits])
+                                             + ((CBits + 2)'(span_c_i[ch*CBits +: CBits]) << 1);
+  end
+  specular_reg #(.Width (Channels * (CBits + 2))) u_reg1_c3 (
     .clk_i  (clk_i),
     .rst_ni (rst_ni),
     .we_i   (accept),
-    .d_i    ((CBits + 2)'(span_c_i) + ((CBits + 2)'(span_c_i) << 1)),
+    .d_i    (c3_span),
     .q_o    (c30)
   );
 
@@ -257,8 +271,8 @@ module specular_stream #(
   // ROM 9's fields: a (a1 with the blend) in the top bits, then a2 and the weight w.
   logic [Reads*CoefBits-1:0] coef_fields0, coef1;  // at multiplier 11, beside psi1 (read r in field r)
   logic [Reads*NumBanks-1:0] bank_fields1, bank_rom; // at the ROM 12 read (read r in field r)
-  logic [CBits-1:0]    c_mul13;      // at multiplier 13
-  logic [CBits+1:0]    c3_mul13;     // 3 C (the radix-4 digits of multiplier 13)
+  logic [Channels*CBits-1:0]     c_mul13;   // at multiplier 13 (channel ch in field ch)
+  logic [Channels*(CBits+2)-1:0] c3_mul13;  // 3 C (the radix-4 digits of multiplier 13)
   logic [TagBits-1:0]  tag_out;      // at the output register
 
   if (Blend) begin : gen_blend_fields
@@ -276,8 +290,12 @@ module specular_stream #(
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (coef_fields0), .q_o (coef1));
   specular_delay #(.Width (Reads * NumBanks), .Depth (Mul11Stages)) u_bank_line (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (bank_fields1), .q_o (bank_rom));
-  specular_delay #(.Width (2 * CBits + 2), .Depth (AccStages - 1 + Mul11Stages + Rom12Stages + BlendStages)) u_c_line (
-    .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i ({c30, c0}), .q_o ({c3_mul13, c_mul13}));
+  for (genvar ch = 0; ch < Channels; ch++) begin : gen_c_line
+    specular_delay #(.Width (2 * CBits + 2), .Depth (AccStages - 1 + Mul11Stages + Rom12Stages + BlendStages)) u_c_line (
+      .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv),
+      .d_i ({c30[ch*(CBits+2) +: CBits+2], c0[ch*CBits +: CBits]}),
+      .q_o ({c3_mul13[ch*(CBits+2) +: CBits+2], c_mul13[ch*CBits +: CBits]}));
+  end
   specular_delay #(.Width (TagBits), .Depth (PipeDepth - 1)) u_tag_line (
     .clk_i (clk_i), .rst_ni (rst_ni), .en_i (adv), .d_i (tag0), .q_o (tag_out));
 
@@ -370,29 +388,32 @@ module specular_stream #(
     assign zero_mul13 = zero_cosk[0] | ~valid_mul13;
   end
 
-  logic [CBits-1:0] intensity;
+  // One multiplier 13 per channel, side by side on the pixel's one cos^k.
+  logic [Channels*CBits-1:0] intensity;
 
-  specular_intensity_mul #(
-    .CBits       (CBits),
-    .CosDataBits (CosDataBits),
-    .MulTileBits (MulTileBits)
-  ) u_mul13 (
-    .clk_i       (clk_i),
-    .rst_ni      (rst_ni),
-    .en_i        (adv),
-    .c_i         (c_mul13),
-    .c3_i        (c3_mul13),
-    .cosk_i      (cos_mul13),
-    .zero_i      (zero_mul13),
-    .intensity_o (intensity)
-  );
+  for (genvar ch = 0; ch < Channels; ch++) begin : gen_mul13
+    specular_intensity_mul #(
+      .CBits       (CBits),
+      .CosDataBits (CosDataBits),
+      .MulTileBits (MulTileBits)
+    ) u_mul13 (
+      .clk_i       (clk_i),
+      .rst_ni      (rst_ni),
+      .en_i        (adv),
+      .c_i         (c_mul13[ch*CBits +: CBits]),
+      .c3_i        (c3_mul13[ch*(CBits+2) +: CBits+2]),
+      .cosk_i      (cos_mul13),
+      .zero_i      (zero_mul13),
+      .intensity_o (intensity[ch*CBits +: CBits])
+    );
+  end
 
   // ---------------------------------------------------------------------------------
   // Output buffer: the pixel handshake; its registered room is the pipeline advance
   // ---------------------------------------------------------------------------------
   logic unused_adv_d;
   specular_out_buf #(
-    .Width (CBits + 1 + TagBits)
+    .Width (Channels * CBits + 1 + TagBits)
   ) u_out_buf (
     .clk_i      (clk_i),
     .rst_ni     (rst_ni),

@@ -91,6 +91,10 @@ module specular_unit #(
   if (specular_pkg::StartLatchStages != 1) begin : gen_pkg_check
     `SPEC_PARAM_ERROR("specular_unit: the start latch is one register (specular_pkg::StartLatchStages)")
   end
+  // The patent's register interface has one C register (register 1): colour is the stream's.
+  if (Channels != 1) begin : gen_channels_check
+    `SPEC_PARAM_ERROR("specular_unit: Channels must be 1 (one C register; RGB spans: specular_stream or specular_axis)")
+  end
 
   // ---------------------------------------------------------------------------------
   // Host registers 1-4 and the line length (inputs 15..24; writes only while idle)

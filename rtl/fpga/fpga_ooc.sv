@@ -14,7 +14,7 @@
 // levels here):
 //   unit    c_we, c[CBits], dpsi_we, dpsi[AngleBits], psi0_we, psi0[AngleBits], n_we,
 //           n[NBits], len_we, len[LenBits], start
-//   stream  span_valid, c[CBits], psi0[AngleBits], dpsi[AngleBits], n[NBits],
+//   stream  span_valid, c[Channels*CBits], psi0[AngleBits], dpsi[AngleBits], n[NBits],
 //           len[LenBits], tag[TagBits], px_ready
 //   axil    awvalid, awaddr[AddrWidth], awprot[3], wvalid, wdata[32], wstrb[4], bready,
 //           arvalid, araddr[AddrWidth], arprot[3], rready, m_axis_px_tready
@@ -37,7 +37,9 @@
 //
 // Parameters: the interface widths are passed through to the core (TagBits to the stream
 // and the AXI4-Lite core, AddrWidth to the latter only; specular_axil's registers are 32
-// bits wide whatever AngleBits, NBits and LenBits). Every other core parameter (ROM files,
+// bits wide whatever AngleBits, NBits and LenBits); Channels (the core's C values per span,
+// rtl/core/specular_params.svh) widens the stream's C and intensity and goes to the unit,
+// the stream, the AXI4-Lite core and the system (which refuse all but 1 themselves). Every other core parameter (ROM files,
 // CosAddrBits, ...) keeps the core's own default unless scripts/fpga.py sets it on the
 // core module by name (chparam), so a changed default in rtl/ is never shadowed by a stale
 // copy here.
@@ -52,6 +54,7 @@ module fpga_ooc #(
                                  // 3 phong_stream, 4 specular_setup, 5 specular_system,
                                  // 6 specular_pipe_mul
   parameter int CBits     = 16,
+  parameter int Channels  = 1,   // the core's Channels: C values per span (1, or 3 for RGB)
   parameter int AngleBits = 32,
   parameter int NBits     = 10,
   parameter int LenBits   = 11,
@@ -77,17 +80,23 @@ module fpga_ooc #(
 
   localparam int PxBits  = ((CBits + 7) / 8) * 8;   // AXI4-Stream TDATA: whole bytes
   localparam int InBits  = (Top == TopUnit)   ? 5 + CBits + 2 * AngleBits + NBits + LenBits + 1
-                         : (Top == TopStream) ? 2 + CBits + 2 * AngleBits + NBits + LenBits + TagBits
+                         : (Top == TopStream) ? 2 + Channels * CBits + 2 * AngleBits + NBits + LenBits + TagBits
                          : (Top == TopPhong || Top == TopSetup || Top == TopSystem)
                                               ? 2 + `SPECULAR_GEO_DATA_BITS
                          : (Top == TopMul)    ? 2 * MulBits
                          :                     2 * AddrWidth + 48;
   localparam int OutBits = (Top == TopUnit)   ? CBits + 2
-                         : (Top == TopStream || Top == TopPhong || Top == TopSystem)
+                         : (Top == TopStream) ? 3 + Channels * CBits + TagBits
+                         : (Top == TopPhong || Top == TopSystem)
                                               ? 3 + CBits + TagBits
                          : (Top == TopSetup)  ? 2 + CBits + 2 * AngleBits + NBits + LenBits + TagBits + 3
                          : (Top == TopMul)    ? 2 * MulBits
                          :                     41 + PxBits + 3 + TagBits;
+
+  // Channels reaches the cores that have it; the others have one C.
+  if (Channels != 1 && (Top == TopPhong || Top == TopSetup || Top == TopMul)) begin : gen_channels_check
+    `SPEC_PARAM_ERROR("fpga_ooc: Channels applies to the unit, stream, axil and system tops only")
+  end
 
   logic               core_rst_n;
   logic [InBits-1:0]  core_in;
@@ -120,6 +129,7 @@ module fpga_ooc #(
 
     specular_unit #(
       .CBits     (CBits),
+      .Channels  (Channels),
       .AngleBits (AngleBits),
       .NBits     (NBits),
       .LenBits   (LenBits)
@@ -143,7 +153,7 @@ module fpga_ooc #(
     );
   end else if (Top == TopStream) begin : gen_stream
     logic                 span_valid, span_ready, px_valid, px_ready, px_last;
-    logic [CBits-1:0]     span_c, px_intensity;
+    logic [Channels*CBits-1:0] span_c, px_intensity;
     logic [AngleBits-1:0] span_psi0, span_dpsi;
     logic [NBits-1:0]     span_n;
     logic [LenBits-1:0]   span_len;
@@ -154,6 +164,7 @@ module fpga_ooc #(
 
     specular_stream #(
       .CBits     (CBits),
+      .Channels  (Channels),
       .AngleBits (AngleBits),
       .NBits     (NBits),
       .LenBits   (LenBits),
@@ -183,6 +194,7 @@ module fpga_ooc #(
 
     specular_axil #(
       .CBits     (CBits),
+      .Channels  (Channels),
       .AngleBits (AngleBits),
       .NBits     (NBits),
       .LenBits   (LenBits),
@@ -264,6 +276,7 @@ module fpga_ooc #(
       end else begin : gen_system
         specular_system #(
           .CBits     (CBits),
+          .Channels  (Channels),
           .AngleBits (AngleBits),
           .NBits     (NBits),
           .LenBits   (LenBits),

@@ -49,6 +49,10 @@ module specular_system #(
     `SPEC_PARAM_ERROR("specular_system: the register formats must be the defaults (C 16/15, angles 32/28, n 10, l 11)")
   end
   // specular_setup checks its own SetupII (1, or from specular_setup_pkg::MinFoldII on).
+  // The setup produces one C per span (geo_scale_i).
+  if (Channels != 1) begin : gen_channels_check
+    `SPEC_PARAM_ERROR("specular_system: Channels must be 1 (specular_setup produces one C per span)")
+  end
 
   localparam int SpanW = CBits + 2 * AngleBits + NBits + LenBits + TagBits;
 

@@ -28,6 +28,9 @@
   parameter int CosFracBits  = 1, \
   parameter int NumBanks     = 2, \
   parameter logic [NumBanks*NBits-1:0] BankMaxN = {4'd15, 4'd1}, \
+  parameter bit Blend        = 1'b0, \
+  parameter int WeightBits   = 12, \
+  parameter int Channels     = 1, \
   parameter int MulTileBits  = 0, \
   parameter     CoefRomFile  = "rtl/core/formal/coef_fv.hex", \
   parameter     CosRomFile   = "rtl/core/formal/cos_k_fv.hex", \
