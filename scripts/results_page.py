@@ -180,8 +180,9 @@ def section_colour(sim, flip, rel_sim, rel_flip):
     """Per scene: the colour stage of the run (sim/colour_stage.hpp) and the mean FLIP of its images."""
     p = provenance(flip, rel_flip)
     out = ["### Colour", "",
-           "Every scene composed in colour around the default build's RTL intensities against the composition "
-           "around the material's BRDF in double ([colour.md](colour.md)); 8-bit sRGB codes over the covered pixels "
+           "Every scene through the RGB core (`Channels = 3`, the default build's widths) with each span's specular "
+           "colour, composed on the host, against the composition around the material's BRDF in double "
+           "([colour.md](colour.md)); 8-bit sRGB codes over the covered pixels "
            f"([`{os.path.basename(rel_sim)}`]({os.path.relpath(rel_sim, 'docs')}), the run above); mean FLIP over "
            "the whole image at 67 pixels per degree, black background included: " + run_line(p, rel_flip)]
     rows = []
@@ -190,9 +191,11 @@ def section_colour(sim, flip, rel_sim, rel_flip):
         if f is None:
             raise SourceError(f"{rel_flip} has no FLIP of scene {name}: run scripts/colour_flip.py on {rel_sim}")
         rows.append([f"`{name}`", num(c["spans"]), num(c["pixels"]), num(c["mismatches"] + c["protocol_errors"]),
+                     num(c["saturated_spans"]),
                      "/".join(str(x) for x in c["srgb8_max"]), "/".join(f"{x:.3f}" for x in c["srgb8_mean"]),
                      f"{f['mean_flip']:.5f}"])
-    out += table(["scene", "spans", "pixels", "mismatches", "worst R/G/B (codes)", "mean R/G/B (codes)",
+    out += table(["scene", "spans", "pixels", "mismatches", "spans with C clamped", "worst R/G/B (codes)",
+                  "mean R/G/B (codes)",
                   "mean FLIP"], rows)
     return out
 
@@ -832,9 +835,10 @@ def region_picture(data):
     if c is None or f is None:
         raise SourceError(f"{SOURCES['sim']} or {SOURCES['flip']} has no colour figures of {PICTURE_SCENE}")
     return [f"`scenes/{PICTURE_SCENE}.json` (the COLLADA duck of Debian's `assimp-testmodels` under three coloured "
-            "lights) rasterized into spans, set up on the host, every span of every light streamed through "
-            "`specular_stream` (the default build, budget B1) in Verilator and composed in colour on the host "
-            "(left, [colour.md](docs/colour.md)); the same composition around the material's BRDF in double "
+            "lights) rasterized into spans, set up on the host, every span of every light streamed with its specular "
+            "colour through `specular_stream` with `Channels = 3` (the default build's widths, budget B1) in Verilator, "
+            "the channels added on the host (left, [colour.md](docs/colour.md)); the same composition around the "
+            "material's BRDF in double "
             "(middle); their difference in 8-bit sRGB codes, amplified (right). Worst difference "
             f"{'/'.join(str(x) for x in c['srgb8_max'])} codes (R/G/B), mean "
             f"{'/'.join(f'{x:.3f}' for x in c['srgb8_mean'])}, mean FLIP {f['mean_flip']:.4f}; "

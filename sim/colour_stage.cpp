@@ -4,54 +4,71 @@
 
 #include "setup_batch.hpp"
 
+#include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <stdexcept>
+#include <unordered_map>
 
 namespace specular::sim {
 
-std::vector<device::Span> unit_spans(const Raster& raster, const device::Format& f, uint64_t tag_mask) {
-  std::vector<device::Span> out;
-  out.reserve(raster.spans.size());
-  for (size_t j = 0; j < raster.spans.size(); ++j) {
-    ScanlineInput in = raster.spans[j].setup_in;
+std::vector<RgbSpan> rgb_spans(const LoadedScene& ls, const device::Format& f, uint64_t tag_mask, uint64_t& saturated) {
+  std::vector<RgbSpan> out;
+  out.reserve(ls.raster.spans.size());
+  const double top = std::ldexp(1.0, f.c_bits) - 1.0;
+  for (size_t j = 0; j < ls.raster.spans.size(); ++j) {
+    const Span& s = ls.raster.spans[j];
+    ScanlineInput in = s.setup_in;
     in.is = in.ks = in.norm = 1.0;  // C = A^n: the device's unit intensity (device_unit_specular)
-    out.push_back({host::span_registers(in, f), static_cast<uint32_t>(j & tag_mask)});
+    RgbSpan r{{host::span_registers(in, f), static_cast<uint32_t>(j & tag_mask)}, {}};
+    const glm::dvec3 colour = span_specular_colour(ls.scene, s);
+    bool sat = false;
+    for (int ch = 0; ch < 3; ++ch) {
+      const double c = std::round(static_cast<double>(r.span.reg.c) * colour[ch]);
+      sat = sat || c > top;
+      r.c[ch] = static_cast<uint32_t>(std::clamp(c, 0.0, top));
+    }
+    saturated += sat ? 1 : 0;
+    out.push_back(r);
   }
   return out;
 }
 
-ColourStats finish_colour(const LoadedScene& ls, const device::DeviceModel& dm, const std::vector<device::Span>& spans,
-                          const StreamRun& run, const std::string& config, const std::string& images_dir) {
+ColourStats finish_colour(const LoadedScene& ls, const device::DeviceModel& dm, const std::vector<RgbSpan>& spans,
+                          const RgbRun& run, const std::string& config, const std::string& images_dir) {
   const auto t0 = std::chrono::steady_clock::now();
   ColourStats st;
   st.scene = ls.scene.name;
   st.config = config;
   st.spans = spans.size();
-  st.pixels = run.pixels;
-  // Every recorded pixel against the golden model's stream of the same spans.
+  st.pixels = run.px.size();
+  st.protocol_errors = run.protocol_errors;
+  // Every returned pixel against the golden model, channel by channel, with its tag and last flag.
   std::unordered_map<const Span*, uint64_t> first;  // raster span -> its first pixel in the run
-  std::vector<device::StreamPixel> golden;
+  uint64_t k = 0;
   for (size_t j = 0; j < spans.size(); ++j) {
-    first[&ls.raster.spans[j]] = golden.size();
-    dm.stream_span(spans[j], golden);
+    first[&ls.raster.spans[j]] = k;
+    const device::Registers& r = spans[j].span.reg;
+    for (uint32_t i = 0; i <= r.len; ++i, ++k) {
+      if (k >= run.px.size()) continue;  // counted as a protocol error
+      if (run.px[k] != dm.rgb_pixel(r, spans[j].c, static_cast<int>(i)) || run.tag[k] != spans[j].span.tag ||
+          (run.last[k] != 0) != (i == r.len))
+        ++st.mismatches;
+    }
   }
-  for (uint64_t k = 0; k < golden.size(); ++k)
-    if (k >= run.pixels || run.intensity[k] != golden[k].intensity || run.tag[k] != golden[k].tag ||
-        (run.last[k] != 0) != golden[k].last)
-      ++st.mismatches;
-  if (run.pixels != golden.size()) st.mismatches += run.pixels > golden.size() ? run.pixels - golden.size() : 0;
-  // The RTL's intensities as the composition's S_j (what device_unit_specular gives from the golden model).
-  const Evaluator rtl = [&](const Span& s, std::span<double> out) {
+  // The returned channels as the composition's specular term of each span.
+  const SpecularEvaluator rtl = [&](const Span& s, std::span<glm::dvec3> out) {
     const auto it = first.find(&s);
     if (it == first.end()) throw std::logic_error("colour stage: a span outside the raster");
     for (size_t i = 0; i < out.size(); ++i) {
-      const uint64_t k = it->second + i;
-      out[i] = k < run.pixels ? device::c_value(run.intensity[k], dm.format()) : 0.0;
+      const uint64_t p = it->second + i;
+      if (p >= run.px.size()) continue;
+      for (int ch = 0; ch < 3; ++ch) out[i][ch] = device::c_value(run.px[p][ch], dm.format());
     }
   };
-  const ColourLayers got = compose(ls.scene, ls.raster, rtl);
+  const ColourLayers got = compose_specular(ls.scene, ls.raster, rtl);
   const ColourLayers ref = compose(ls.scene, ls.raster, reference_unit_specular(ls.scene));
   st.err = srgb_code_error(got.image, ref.image);
   if (!images_dir.empty()) {
@@ -72,6 +89,7 @@ nlohmann::json ColourStats::to_json() const {
           {"pixels", pixels},
           {"mismatches", mismatches},
           {"protocol_errors", protocol_errors},
+          {"saturated_spans", saturated_spans},
           {"covered_pixels", err.pixels},
           {"srgb8_max", err.max_abs},
           {"srgb8_mean", err.mean_abs},
@@ -80,19 +98,20 @@ nlohmann::json ColourStats::to_json() const {
 }
 
 void print_colour_table(const std::vector<ColourStats>& rows) {
-  std::printf("\nColour (every span once more through specular_stream at unit C, composed on the host: emission, ambient,\n"
-              "Lambert diffuse + specular colour x light colour x the RTL's intensity per light; against the same\n"
+  std::printf("\nColour (every span through specular_stream with Channels = 3, C = its specular colour x A^n; the returned\n"
+              "channels summed per light on the host beside emission, ambient and Lambert diffuse; against the same\n"
               "composition around the material's BRDF in double; 8-bit sRGB codes over the covered pixels):\n");
-  std::printf("| %-14s | %-8s | %7s | %8s | %10s | %-14s | %-20s | %-6s |\n", "scene", "config", "spans", "pixels",
-              "mismatches", "worst R/G/B", "mean R/G/B", "result");
-  std::printf("|----------------|----------|---------|----------|------------|----------------|----------------------|--------|\n");
+  std::printf("| %-14s | %-11s | %7s | %8s | %10s | %8s | %-14s | %-20s | %-6s |\n", "scene", "config", "spans", "pixels",
+              "mismatches", "C sat.", "worst R/G/B", "mean R/G/B", "result");
+  std::printf("|----------------|-------------|---------|----------|------------|----------|----------------|----------------------|--------|\n");
   for (const auto& r : rows) {
     char worst[32], mean[48];
     std::snprintf(worst, sizeof worst, "%d/%d/%d", r.err.max_abs[0], r.err.max_abs[1], r.err.max_abs[2]);
     std::snprintf(mean, sizeof mean, "%.3f/%.3f/%.3f", r.err.mean_abs[0], r.err.mean_abs[1], r.err.mean_abs[2]);
-    std::printf("| %-14s | %-8s | %7llu | %8llu | %10llu | %-14s | %-20s | %-6s |\n", r.scene.c_str(), r.config.c_str(),
-                (unsigned long long)r.spans, (unsigned long long)r.pixels,
-                (unsigned long long)(r.mismatches + r.protocol_errors), worst, mean, r.ok() ? "PASS" : "FAIL");
+    std::printf("| %-14s | %-11s | %7llu | %8llu | %10llu | %8llu | %-14s | %-20s | %-6s |\n", r.scene.c_str(),
+                r.config.c_str(), (unsigned long long)r.spans, (unsigned long long)r.pixels,
+                (unsigned long long)(r.mismatches + r.protocol_errors), (unsigned long long)r.saturated_spans, worst, mean,
+                r.ok() ? "PASS" : "FAIL");
   }
 }
 

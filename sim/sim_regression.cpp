@@ -37,6 +37,8 @@
 #include "phong_stage.hpp"
 #include "scene_stage.hpp"
 #include "stream_stage.hpp"
+#include "Vspecular_scene_rgb.h"
+#include "Vspecular_scene_rgb_specular_stream.h"
 #include "colour_stage.hpp"
 #include "system_stage.hpp"
 #include "system_blend.inc"  // SPECULAR_SYSTEM_BLEND (sim/CMakeLists.txt)
@@ -612,14 +614,16 @@ int main(int argc, char** argv) {
           break;
         }
     }
-    // Colour stage (colour_stage.hpp): every scene composed in colour around the default build's
-    // RTL intensities, against the composition around the material's BRDF.
+    // Colour stage (colour_stage.hpp): every scene composed in colour by the RGB core (the default
+    // build with Channels = 3), against the composition around the material's BRDF.
     std::vector<ColourStats> colours;
     if (!scenes.empty() && want("default")) {
       const auto& bc = specular::build_config("default");
-      StreamHarness<Vspecular_scene_default> ch("specular_stream",
-                                                specular::load_device_model(bc.f, bc.coef_hex(), bc.cos_hex()), 16);
-      for (const auto& ls : scenes) colours.push_back(run_colour_scene(ch, ls, bc.name, images_dir));
+      const specular::device::DeviceModel dm = specular::load_device_model(bc.f, bc.coef_hex(), bc.cos_hex());
+      if (std::string why_rgb; !format_matches_rtl<Vspecular_scene_rgb_specular_stream>(bc.f, why_rgb))
+        throw std::runtime_error("the RGB core's parameters differ from device::Format: " + why_rgb);
+      for (const auto& ls : scenes)
+        colours.push_back(run_colour_scene<Vspecular_scene_rgb>(ls, dm, bc.name + " rgb", images_dir));
       print_colour_table(colours);
     }
     // Stream stage: random spans (default build). The scenes went through the stream in the

@@ -55,26 +55,39 @@ Evaluator reference_unit_specular(const Scene& scene) {
   };
 }
 
+dvec3 span_specular_colour(const Scene& scene, const Span& s) {
+  const Material& m = scene.materials[s.material];
+  return m.specular_colour() * scene.lights[s.light].colour() * specular_gain(m);
+}
+
 ColourLayers compose(const Scene& scene, const Raster& raster, const Evaluator& unit_specular) {
+  std::vector<double> s_unit;
+  return compose_specular(scene, raster, [&](const Span& s, std::span<dvec3> out) {
+    s_unit.assign(out.size(), 0.0);
+    unit_specular(s, std::span<double>(s_unit));
+    const dvec3 specular = span_specular_colour(scene, s);
+    for (size_t i = 0; i < out.size(); ++i) out[i] = specular * s_unit[i];
+  });
+}
+
+ColourLayers compose_specular(const Scene& scene, const Raster& raster, const SpecularEvaluator& specular) {
   ColourLayers c{RgbImage(raster.width, raster.height), RgbImage(raster.width, raster.height),
                  RgbImage(raster.width, raster.height)};
-  std::vector<double> s_unit;
+  std::vector<dvec3> spec;
   for (const Span& s : raster.spans) {
     const Material& m = scene.materials[s.material];
     const Light& light = scene.lights[s.light];
-    const dvec3 e = light.colour();
-    const dvec3 diffuse = m.diffuse * e;
-    const dvec3 specular = m.specular_colour() * e * specular_gain(m);
+    const dvec3 diffuse = m.diffuse * light.colour();
     // Every visible run has one span per light: its light-independent terms come with light 0.
     const dvec3 constant = s.light == 0 ? m.emission + scene.ambient * m.diffuse : dvec3(0.0);
-    s_unit.assign(static_cast<size_t>(s.pixels()), 0.0);
-    unit_specular(s, std::span<double>(s_unit));
+    spec.assign(static_cast<size_t>(s.pixels()), dvec3(0.0));
+    specular(s, std::span<dvec3>(spec));
     const size_t row = static_cast<size_t>(s.y) * raster.width + s.x_start;
     for (int i = 0; i < s.pixels(); ++i) {
       const dvec3 n = pixel_normal(s, i);
       const double n_l = n == dvec3(0.0) ? 0.0 : std::max(glm::dot(n, light.to_light(span_point(s, i))), 0.0);
       c.primary.value[row + i] += constant + diffuse * n_l;
-      c.secondary.value[row + i] += specular * s_unit[static_cast<size_t>(i)];
+      c.secondary.value[row + i] += spec[static_cast<size_t>(i)];
       c.primary.covered[row + i] = c.secondary.covered[row + i] = c.image.covered[row + i] = 1;
     }
   }

@@ -25,6 +25,8 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -62,6 +64,13 @@ Evaluator reference_unit_specular(const Scene& scene);
 
 // The composition above over every span of `raster` (made from `scene`).
 ColourLayers compose(const Scene& scene, const Raster& raster, const Evaluator& unit_specular);
+
+// The same with the specular term coloured elsewhere (an RGB core multiplies the colour in):
+// `specular(s, out)` writes each pixel's specular_colour(s) * S of span s, summed over the lights
+// and saturated here as above; span_specular_colour is the factor specular E_j g of span s.
+using SpecularEvaluator = std::function<void(const Span& span, std::span<glm::dvec3> out)>;
+ColourLayers compose_specular(const Scene& scene, const Raster& raster, const SpecularEvaluator& specular);
+glm::dvec3 span_specular_colour(const Scene& scene, const Span& s);
 
 // The sRGB transfer function of IEC 61966-2-1, on [0, 1] (arguments are clamped to it):
 //   encode(v) = 12.92 v for v <= 0.0031308, 1.055 v^(1/2.4) - 0.055 above;
