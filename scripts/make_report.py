@@ -319,6 +319,16 @@ class Report:
             return {}
         data = json.load(open(path))
         data["exit_code"] = rc
+        # The mean FLIP of the colour images the run wrote (docs/colour.md#flip; installs the pinned
+        # flip-evaluator into the project's venv on first use).
+        if data.get("colour"):
+            flip = os.path.join(self.out, "colour_flip.json")
+            frc, _ = run([sys.executable, os.path.join(ROOT, "scripts", "colour_flip.py"), "--sim-json", path,
+                          "--json", flip], os.path.join(self.logs, "colour_flip.log"))
+            if frc == 0 and os.path.exists(flip):
+                data["colour_flip"] = json.load(open(flip))["scenes"]
+            else:
+                self.missing.append(f"scripts/colour_flip.py failed (exit {frc}), see logs/colour_flip.log: no FLIP")
         return data
 
     def scene_bench(self):
@@ -844,6 +854,19 @@ class Report:
                         w(f"| {sname} | {pname} | {p.get('spans', 'n/a')} | {p.get('pixels')} | {p.get('mismatches')} | "
                           f"{fnum(p.get('max_device_error_abs')):.3g} | {fmt_err(p.get('max_device_rel_epicenter'))} | "
                           f"{fnum(p.get('max_interp_error_abs')):.3g} | {fnum(p.get('simulated_pixels_per_second')):.3g} |")
+            colour = sim.get("colour", {})
+            if colour:
+                flip = sim.get("colour_flip", {})
+                w("\nColour (`docs/colour.md`): every scene through the RGB core with its specular colours, composed on "
+                  "the host, against the composition around the material's BRDF in double; images "
+                  "`scenes/<scene>_colour_{rtl,reference,diff}.png` beside this report:\n")
+                w("| scene | mismatches | worst R/G/B (sRGB codes) | mean R/G/B | mean FLIP |")
+                w("|---|---|---|---|---|")
+                for sname, c in sorted(colour.items()):
+                    mf = flip.get(sname, {}).get("mean_flip")
+                    w(f"| {sname} | {c.get('mismatches')} | {'/'.join(str(x) for x in c.get('srgb8_max', []))} | "
+                      f"{'/'.join(f'{x:.3f}' for x in c.get('srgb8_mean', []))} | "
+                      f"{'n/a' if mf is None else f'{mf:.5f}'} |")
             st = sim.get("stream")
             if st:
                 w("\nStreaming core (`specular_stream`, default build): random spans with random gaps, random `px_ready_i` "

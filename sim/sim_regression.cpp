@@ -659,11 +659,14 @@ int main(int argc, char** argv) {
     // on their scene models (specular_stream at the build's parameters; the line stage ran them
     // with the RTL's assertions live).
     std::vector<std::pair<std::string, StreamStats>> blend_streams;
+    // At least 20,000 spans (or all of them): the throughput bursts need enough spans to carry
+    // the fill latency within their 0.99 pixels per clock.
+    const uint64_t blend_spans = std::max(stream_spans / 10, std::min<uint64_t>(stream_spans, 20000));
 #define SPECULAR_BLEND_STREAM(id, cfg_name)                                                                     \
   if (bc.f.blend && bc.name == cfg_name) {                                                                     \
     StreamHarness<Vspecular_scene_##id> bh("specular_stream", specular::load_device_model(bc.f, bc.coef_hex(), \
                                                                                           bc.cos_hex()), 16);  \
-    blend_streams.emplace_back(bc.name, run_stream_stage(bh, seed, std::max<uint64_t>(stream_spans / 10, 1)));  \
+    blend_streams.emplace_back(bc.name, run_stream_stage(bh, seed, blend_spans));  \
   }
     if (stream_spans > 0)
       for (const auto& bc : specular::build_configs())

@@ -121,13 +121,23 @@ module specular_blend #(
   // difference stays in [2^D, 3 2^D] and cos_b, between them, at most 1.0. No reset here:
   // checked from the first enabled edge on and on known values (a bubble's may be X).
 `ifndef SYNTHESIS
+  // The registers hold power-up values until the first enabled edges have filled them: the
+  // input register after one, the output after every stage (fill_q, a shift of enabled edges).
+  localparam int Fill = specular_pkg::BlendInStages + specular_pkg::BlendDiffStages + MulStages
+                        + specular_pkg::BlendOutStages;
   `SPEC_PRIMED(primed_q, clk_i, en_i)
+  logic [Fill-1:0] fill_q = '0;
+  always_ff @(posedge clk_i) begin
+    if (en_i) begin
+      fill_q <= {fill_q[Fill-2:0], 1'b1};
+    end
+  end
   logic in_known, out_known;
   assign in_known  = `SPEC_KNOWN({c1_q, c2_q});
   assign out_known = `SPEC_KNOWN(cosb_q);
   `SPEC_ASSERT_IF(ReadsAtMostOne_A, en_i && in_known,
                   c1_q <= (D + 1)'(1) << D && c2_q <= (D + 1)'(1) << D, clk_i, primed_q)
-  `SPEC_ASSERT_IF(CosbAtMostOne_A, out_known, cosb_q <= (D + 1)'(1) << D, clk_i, primed_q)
+  `SPEC_ASSERT_IF(CosbAtMostOne_A, out_known, cosb_q <= (D + 1)'(1) << D, clk_i, fill_q[Fill-1])
 `endif
 
 endmodule

@@ -362,6 +362,8 @@ module specular_stream #(
   assign valid_mul13 = stage_valid[AccStages - 1 + Mul11Stages + Rom12Stages + BlendStages];
 
   if (Blend) begin : gen_blend
+    logic valid_rom;   // the pixel at the blend's input
+    assign valid_rom = stage_valid[AccStages - 1 + Mul11Stages + Rom12Stages];
     // The weight w of the second read, beside the pixel from ROM 9 to the blend.
     logic [WeightBits-1:0] w_blend;
     specular_delay #(.Width (WeightBits), .Depth (AccStages - 1 + Mul11Stages + Rom12Stages), .Reset (1'b0)) u_w_line (
@@ -376,8 +378,8 @@ module specular_stream #(
       .en_i    (adv),
       .c1_i    (cosk[0 +: CosDataBits + 1]),
       .c2_i    (cosk[CosDataBits + 1 +: CosDataBits + 1]),
-      .zero1_i (zero_cosk[0]),
-      .zero2_i (zero_cosk[1]),
+      .zero1_i (zero_cosk[0] | ~valid_rom),   // a bubble's reads are 0 (its pixel is 0 anyway)
+      .zero2_i (zero_cosk[1] | ~valid_rom),
       .w_i     (w_blend),
       .cosb_o  (cos_mul13)
     );
