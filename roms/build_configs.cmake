@@ -3,24 +3,31 @@
 # do not edit (docs/pipeline.md#build-configurations). The ctest roms_up_to_date checks it.
 # SPECULAR_BUILD_CONFIGS: the identifiers (the name with - as _); <ID>_NAME: the name;
 # <ID>_RTL_ARGS: the -G flags of specular_unit / specular_stream (parameters that differ
-# from the first configuration's, which are the RTL defaults); <ID>_PIPELINE_ARGS: those
+# from the first configuration's, which are the RTL defaults); <ID>_ROM_BITS: ROM 9 and ROM 12
+# together (Format::coef_word_bits, cos_word_bits); <ID>_PIPELINE_ARGS: those
 # of sim/specular_pipeline.sv (the widths the stage counts depend on).
 set(SPECULAR_BUILD_CONFIGS default patent banks4_interp interp128 blend_b2 blend_b4)
 set(SPECULAR_BUILD_CONFIG_default_NAME default)
 set(SPECULAR_BUILD_CONFIG_default_RTL_ARGS)
+set(SPECULAR_BUILD_CONFIG_default_ROM_BITS 84992)
 set(SPECULAR_BUILD_CONFIG_default_PIPELINE_ARGS "-GPsiMulFrac=20" "-GCosDataBits=18" "-GCosDeltaBits=12" "-GBlend=1'b0")
 set(SPECULAR_BUILD_CONFIG_patent_NAME patent)
 set(SPECULAR_BUILD_CONFIG_patent_RTL_ARGS "-GCoefBits=18" "-GCoefFrac=15" "-GCosInterp=0" "-GCosAddrBits=12" "-GCosDataBits=16" "-GNumBanks=4" "-GBankMaxN=40'hfa00600801" "-GCoefRomFile=\"roms/patent/coef_maclaurin.hex\"" "-GCosRomFile=\"roms/patent/cos_k_1_2_4_16.hex\"")
+set(SPECULAR_BUILD_CONFIG_patent_ROM_BITS 280576)
 set(SPECULAR_BUILD_CONFIG_patent_PIPELINE_ARGS "-GPsiMulFrac=20" "-GCosDataBits=16" "-GCosDeltaBits=12" "-GBlend=1'b0")
 set(SPECULAR_BUILD_CONFIG_banks4_interp_NAME banks4-interp)
 set(SPECULAR_BUILD_CONFIG_banks4_interp_RTL_ARGS "-GNumBanks=4" "-GBankMaxN=40'hfa00600801" "-GCoefRomFile=\"roms/variants/banks4-interp/coef_minimax.hex\"" "-GCosRomFile=\"roms/variants/banks4-interp/cos_k_1_2_4_16_interp256.hex\"")
+set(SPECULAR_BUILD_CONFIG_banks4_interp_ROM_BITS 53248)
 set(SPECULAR_BUILD_CONFIG_banks4_interp_PIPELINE_ARGS "-GPsiMulFrac=20" "-GCosDataBits=18" "-GCosDeltaBits=12" "-GBlend=1'b0")
 set(SPECULAR_BUILD_CONFIG_interp128_NAME interp128)
 set(SPECULAR_BUILD_CONFIG_interp128_RTL_ARGS "-GCosAddrBits=7" "-GCosDeltaBits=13" "-GCoefRomFile=\"roms/variants/interp128/coef_minimax.hex\"" "-GCosRomFile=\"roms/variants/interp128/cos_k_1_2_3_4_6_8_12_16_interp128.hex\"")
+set(SPECULAR_BUILD_CONFIG_interp128_ROM_BITS 54272)
 set(SPECULAR_BUILD_CONFIG_interp128_PIPELINE_ARGS "-GPsiMulFrac=20" "-GCosDataBits=18" "-GCosDeltaBits=13" "-GBlend=1'b0")
 set(SPECULAR_BUILD_CONFIG_blend_b2_NAME blend-b2)
 set(SPECULAR_BUILD_CONFIG_blend_b2_RTL_ARGS "-GCoefBits=13" "-GCoefFrac=9" "-GPsiMulFrac=15" "-GCosAddrBits=7" "-GCosDataBits=12" "-GCosDeltaBits=7" "-GCosFracBits=7" "-GNumBanks=4" "-GBankMaxN=40'hfa00700c01" "-GBlend=1'b1" "-GWeightBits=10" "-GCoefRomFile=\"roms/blend/b2/coef_blend.hex\"" "-GCosRomFile=\"roms/blend/b2/cos_k_1_2_4_8_interp128.hex\"")
+set(SPECULAR_BUILD_CONFIG_blend_b2_ROM_BITS 47104)
 set(SPECULAR_BUILD_CONFIG_blend_b2_PIPELINE_ARGS "-GPsiMulFrac=15" "-GCosDataBits=12" "-GCosDeltaBits=7" "-GBlend=1'b1")
 set(SPECULAR_BUILD_CONFIG_blend_b4_NAME blend-b4)
 set(SPECULAR_BUILD_CONFIG_blend_b4_RTL_ARGS "-GCoefBits=15" "-GCoefFrac=12" "-GPsiMulFrac=19" "-GCosAddrBits=7" "-GCosDataBits=14" "-GCosDeltaBits=9" "-GCosFracBits=10" "-GNumBanks=6" "-GBankMaxN=60'hfa00f01c0300801" "-GBlend=1'b1" "-GWeightBits=9" "-GCoefRomFile=\"roms/blend/b4/coef_blend.hex\"" "-GCosRomFile=\"roms/blend/b4/cos_k_1_2_3_4_8_16_interp128.hex\"")
+set(SPECULAR_BUILD_CONFIG_blend_b4_ROM_BITS 58368)
 set(SPECULAR_BUILD_CONFIG_blend_b4_PIPELINE_ARGS "-GPsiMulFrac=19" "-GCosDataBits=14" "-GCosDeltaBits=9" "-GBlend=1'b1")

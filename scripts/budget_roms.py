@@ -54,7 +54,10 @@ def build_blend_configs(root):
     for m in re.finditer(r'^set\(SPECULAR_BUILD_CONFIG_(\w+)_RTL_ARGS(.*)\)$', text, re.M):
         args = dict(re.findall(r'"-G(\w+)=(.*?)"(?= |$)', m.group(2).replace('\\"', "")))
         if args.get("Blend") == "1'b1":
-            out[m.group(1)] = args
+            bits = re.search(rf'^set\(SPECULAR_BUILD_CONFIG_{m.group(1)}_ROM_BITS (\d+)\)$', text, re.M)
+            if not bits:
+                raise KeyError(f"{BUILD_CONFIGS} has no ROM_BITS of {m.group(1)}: run `make roms`")
+            out[m.group(1)] = dict(args, rom_bits=int(bits.group(1)))
     return out
 
 
@@ -97,11 +100,8 @@ def blend_configurations(root, runs):
                                            "BankMaxN")] + [f"Blend={a['Blend']}", f"WeightBits={a['WeightBits']}",
                                                            f"CoefRomFile={a['CoefRomFile']}",
                                                            f"CosRomFile={a['CosRomFile']}"]
-        # ROM bits of the build: ROM 9's 2^NBits words of {a1, a2, w}, ROM 12's {v, d} words.
-        rom_bits = (1 << N_BITS) * (2 * int(a["CoefBits"]) + int(a["WeightBits"])) + \
-            nb * (1 << int(a["CosAddrBits"])) * (int(a["CosDataBits"]) + 1 + int(a["CosDeltaBits"]))
         out.append({"budget": r["budget"], "n_max": [r["n_max"]], "best": b, "key": key, "policy": "blend", "build": name,
-                    "params": params, "rom_bits": rom_bits, "dir": os.path.dirname(a["CoefRomFile"])})
+                    "params": params, "rom_bits": a["rom_bits"], "dir": os.path.dirname(a["CoefRomFile"])})
     for c in out:
         c["n_max"].sort()
         c["label"] = f"device_{c['budget']}_n{c['n_max'][-1]}"

@@ -56,6 +56,8 @@ SOURCES = {
     "setup_sweep": "docs/measured/setup_sweep.json",
     "cli": "docs/measured/specular_cli.json",
     "flip": "docs/measured/colour_flip.json",
+    "sweep_b2": "docs/measured/blend_sweep_b2.json",
+    "sweep_b4": "docs/measured/blend_sweep_b4.json",
 }
 
 
@@ -659,6 +661,13 @@ def region_results(data):
          f"setup in hardware {ratio(row[8]['hw_ratio'])} on spans of 8 pixels, {ratio(row[16]['hw_ratio'])} on spans "
          f"of 16 ({ratio(row[16]['hw_ratio_at_clock'])} at each core's clock), {ratio(row[64]['hw_ratio'])} on "
          f"spans of 64 or more ({ratio(row[64]['hw_ratio_at_clock'])})", "`make fpga`, `make report`"],
+        ["the display-exact builds (two banks blended per `n`, [display_exact.md](docs/display_exact.md)), "
+         "every `n <= 1000` on a dense sweep: worst error as a share of B2 (`2^-9 C`) and of B4 (`2^-11 C`); pixels "
+         "per clock per part (setup on a host) over the best Phong core at that budget",
+         f"{data['sweep_b2']['budget_used']:.3f} of B2, {data['sweep_b4']['budget_used']:.3f} of B4; "
+         f"{ratio(res['b2'][0]['host_ratio'])} (`{res['b2'][0]['phong']['name'].split()[1]}`) and "
+         f"{ratio(res['b4'][0]['host_ratio'])} (`{res['b4'][0]['phong']['name'].split()[1]}`)",
+         "`device_search --sweep`, `make fpga`"],
         ["software: the device method with its setup against per-pixel Phong (SLEEF), per scene",
          f"{min(speed):.2f} to {max(speed):.2f} x as fast", "`scene_bench`"],
     ]

@@ -143,7 +143,8 @@ std::string build_configs_cmake() {
        "# do not edit (docs/pipeline.md#build-configurations). The ctest roms_up_to_date checks it.\n"
        "# SPECULAR_BUILD_CONFIGS: the identifiers (the name with - as _); <ID>_NAME: the name;\n"
        "# <ID>_RTL_ARGS: the -G flags of specular_unit / specular_stream (parameters that differ\n"
-       "# from the first configuration's, which are the RTL defaults); <ID>_PIPELINE_ARGS: those\n"
+       "# from the first configuration's, which are the RTL defaults); <ID>_ROM_BITS: ROM 9 and ROM 12\n"
+       "# together (Format::coef_word_bits, cos_word_bits); <ID>_PIPELINE_ARGS: those\n"
        "# of sim/specular_pipeline.sv (the widths the stage counts depend on).\n";
   const auto& configs = build_configs();
   o << "set(SPECULAR_BUILD_CONFIGS";
@@ -158,6 +159,9 @@ std::string build_configs_cmake() {
     for (size_t j = 0; j < ps.size(); ++j)
       if (!(ps[j] == base[j])) o << " " << flag(ps[j]);
     o << ")\n";
+    const auto& f = bc.f;
+    o << "set(" << key << "_ROM_BITS "
+      << int64_t{f.coef_rom_depth()} * f.coef_word_bits() + int64_t{f.cos_rom_depth()} * f.cos_word_bits() << ")\n";
     o << "set(" << key << "_PIPELINE_ARGS";
     for (const auto& p : ps)
       if (p.name == "PsiMulFrac" || p.name == "CosDeltaBits" || p.name == "CosDataBits" || p.name == "Blend")
