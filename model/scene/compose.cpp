@@ -4,14 +4,12 @@
 
 #include "brdf.hpp"
 
-#include <stb_image_write.h>  // the implementation is compiled in image.cpp
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <cstdlib>
 #include <stdexcept>
 
@@ -132,15 +130,6 @@ ColourErrorStats srgb_code_error(const RgbImage& a, const RgbImage& b) {
   return st;
 }
 
-namespace {
-
-void write_rgb_png(const std::string& path, int w, int h, const std::vector<uint8_t>& rgb) {
-  if (!stbi_write_png(path.c_str(), w, h, 3, rgb.data(), w * 3))
-    throw std::runtime_error(path + ": cannot write the PNG file");
-}
-
-}  // namespace
-
 void write_srgb_png(const std::string& path, const RgbImage& img) {
   std::vector<uint8_t> rgb(img.value.size() * 3);
   for (size_t k = 0; k < img.value.size(); ++k)
@@ -155,10 +144,7 @@ void write_code_diff_png(const std::string& path, const RgbImage& a, const RgbIm
   auto level = [gain](int d) { return static_cast<uint8_t>(std::clamp(128 + gain * d, 0, 255)); };
 
   const int W = a.width;
-  const int scale = W >= 400 ? 2 : 1;  // text size
-  const int pad = 4 * scale, text_h = 7 * scale, bar_h = 10 * scale;
-  const int strip = pad + text_h + pad + bar_h + pad / 2 + text_h + pad;
-  const int H = a.height + strip;
+  const int H = a.height + legend_height(W);
   std::vector<uint8_t> rgb(static_cast<size_t>(W) * H * 3, 0);
   for (size_t k = 0; k < a.value.size(); ++k) {
     if (!(a.covered[k] | b.covered[k])) continue;  // black
@@ -167,30 +153,19 @@ void write_code_diff_png(const std::string& path, const RgbImage& a, const RgbIm
           level(int(srgb_code(a.value[k][ch])) - int(srgb_code(b.value[k][ch])));
   }
   // Strip: label and gain, a grey bar from -R to +R, its range in codes.
-  const std::array<uint8_t, 3> ink{235, 235, 235};
-  int y = a.height + pad;
-  std::string title = label + ", SRGB CODES X" + std::to_string(gain);
-  if (text_width(title, scale) > W - 2 * pad) title = label + " X" + std::to_string(gain);
-  draw_text(rgb, W, H, pad, y, title, scale, ink);
-  y += text_h + pad;
-  const int x0 = pad, x1 = W - pad;
-  for (int x = x0; x < x1; ++x) {
-    const double u = x1 - x0 > 1 ? -1.0 + 2.0 * (x - x0) / (x1 - x0 - 1) : 0.0;
-    const uint8_t g = level(static_cast<int>(std::lround(u * R)));
-    for (int dy = 0; dy < bar_h; ++dy) {
-      uint8_t* p = &rgb[(static_cast<size_t>(y + dy) * W + x) * 3];
-      p[0] = p[1] = p[2] = g;
-    }
-  }
-  y += bar_h + pad / 2;
-  char lo[16] = "0", hi[16] = "0";
+  std::string lo = "0", hi = "0";
   if (R > 0) {
-    std::snprintf(lo, sizeof lo, "%d", -R);
-    std::snprintf(hi, sizeof hi, "%+d", R);
+    lo = std::to_string(-R);
+    hi = std::to_string(R);
+    hi.insert(hi.begin(), '+');
   }
-  draw_text(rgb, W, H, x0, y, lo, scale, ink);
-  draw_text(rgb, W, H, (x0 + x1 - text_width("0", scale)) / 2, y, "0", scale, ink);
-  draw_text(rgb, W, H, x1 - text_width(hi, scale), y, hi, scale, ink);
+  draw_legend(rgb, W, a.height, {0, 0, 0}, label + ", SRGB CODES X" + std::to_string(gain),
+              label + " X" + std::to_string(gain),
+              [&](double u) {
+                const uint8_t g = level(static_cast<int>(std::lround(u * R)));
+                return std::array<uint8_t, 3>{g, g, g};
+              },
+              lo, hi);
   write_rgb_png(path, W, H, rgb);
 }
 

@@ -192,11 +192,6 @@ constexpr std::array<uint8_t, 3> kBackground{28, 30, 38};
 
 uint8_t to_byte(double v) { return static_cast<uint8_t>(std::lround(std::clamp(v, 0.0, 1.0) * 255.0)); }
 
-void write_rgb(const std::string& path, int w, int h, const std::vector<uint8_t>& rgb) {
-  if (!stbi_write_png(path.c_str(), w, h, 3, rgb.data(), w * 3))
-    throw std::runtime_error(path + ": cannot write the PNG file");
-}
-
 // Diverging map on u in [-1, 1]: blue -> white -> red.
 std::array<uint8_t, 3> diverging(double u) {
   u = std::clamp(u, -1.0, 1.0);
@@ -227,7 +222,47 @@ void write_png(const std::string& path, const Image& img, double scale) {
       p[0] = p[1] = p[2] = to_byte(img.at(x, y) * scale);
     }
   }
-  write_rgb(path, img.width, img.height, rgb);
+  write_rgb_png(path, img.width, img.height, rgb);
+}
+
+void write_rgb_png(const std::string& path, int w, int h, const std::vector<uint8_t>& rgb) {
+  if (!stbi_write_png(path.c_str(), w, h, 3, rgb.data(), w * 3))
+    throw std::runtime_error(path + ": cannot write the PNG file");
+}
+
+namespace {
+// The legend's metrics at image width w: text size, padding, text and bar heights.
+struct LegendMetrics {
+  int scale, pad, text_h, bar_h;
+  explicit LegendMetrics(int w) : scale(w >= 400 ? 2 : 1), pad(4 * scale), text_h(7 * scale), bar_h(10 * scale) {}
+  int height() const { return pad + text_h + pad + bar_h + pad / 2 + text_h + pad; }
+};
+}  // namespace
+
+int legend_height(int w) { return LegendMetrics(w).height(); }
+
+void draw_legend(std::vector<uint8_t>& rgb, int w, int top, const std::array<uint8_t, 3>& background,
+                 const std::string& title, const std::string& short_title,
+                 const std::function<std::array<uint8_t, 3>(double)>& bar, const std::string& lo,
+                 const std::string& hi) {
+  const LegendMetrics m(w);
+  const int h = top + m.height();
+  for (int y = top; y < h; ++y)
+    for (int x = 0; x < w; ++x) std::copy(background.begin(), background.end(), &rgb[(static_cast<size_t>(y) * w + x) * 3]);
+  const std::array<uint8_t, 3> ink{235, 235, 235};
+  int y = top + m.pad;
+  draw_text(rgb, w, h, m.pad, y, text_width(title, m.scale) > w - 2 * m.pad ? short_title : title, m.scale, ink);
+  y += m.text_h + m.pad;
+  const int x0 = m.pad, x1 = w - m.pad;  // the bar spans [x0, x1)
+  for (int x = x0; x < x1; ++x) {
+    const double u = x1 - x0 > 1 ? -1.0 + 2.0 * (x - x0) / (x1 - x0 - 1) : 0.0;
+    const auto c = bar(u);
+    for (int dy = 0; dy < m.bar_h; ++dy) std::copy(c.begin(), c.end(), &rgb[(static_cast<size_t>(y + dy) * w + x) * 3]);
+  }
+  y += m.bar_h + m.pad / 2;
+  draw_text(rgb, w, h, x0, y, lo, m.scale, ink);
+  draw_text(rgb, w, h, (x0 + x1 - text_width("0", m.scale)) / 2, y, "0", m.scale, ink);
+  draw_text(rgb, w, h, x1 - text_width(hi, m.scale), y, hi, m.scale, ink);
 }
 
 void write_heatmap_png(const std::string& path, const Image& err, const std::string& label, double range) {
@@ -237,12 +272,8 @@ void write_heatmap_png(const std::string& path, const Image& err, const std::str
   if (all_zero) R = 1.0;  // any colour scale works; the labels say 0
 
   const int W = err.width;
-  const int scale = W >= 400 ? 2 : 1;  // text size
-  const int pad = 4 * scale, text_h = 7 * scale, bar_h = 10 * scale;
-  const int strip = pad + text_h + pad + bar_h + pad / 2 + text_h + pad;
-  const int H = err.height + strip;
+  const int H = err.height + legend_height(W);
   std::vector<uint8_t> rgb(static_cast<size_t>(W) * H * 3, 0);
-
   for (int y = 0; y < err.height; ++y) {
     for (int x = 0; x < W; ++x) {
       uint8_t* p = &rgb[(static_cast<size_t>(y) * W + x) * 3];
@@ -251,26 +282,9 @@ void write_heatmap_png(const std::string& path, const Image& err, const std::str
     }
   }
   // Strip: label, colour bar, numeric range.
-  const std::array<uint8_t, 3> ink{235, 235, 235};
-  for (int y = err.height; y < H; ++y)
-    for (int x = 0; x < W; ++x) std::copy(kBackground.begin(), kBackground.end(), &rgb[(static_cast<size_t>(y) * W + x) * 3]);
-  int y = err.height + pad;
-  std::string title = label + "  MAX|E| " + sci(st.max_abs, false);
-  if (text_width(title, scale) > W - 2 * pad) title = label;
-  draw_text(rgb, W, H, pad, y, title, scale, ink);
-  y += text_h + pad;
-  const int x0 = pad, x1 = W - pad;  // bar spans [x0, x1)
-  for (int x = x0; x < x1; ++x) {
-    const double u = x1 - x0 > 1 ? -1.0 + 2.0 * (x - x0) / (x1 - x0 - 1) : 0.0;
-    const auto c = diverging(u);
-    for (int dy = 0; dy < bar_h; ++dy) std::copy(c.begin(), c.end(), &rgb[(static_cast<size_t>(y + dy) * W + x) * 3]);
-  }
-  y += bar_h + pad / 2;
-  const std::string lo = all_zero ? "0" : sci(-R, true), hi = all_zero ? "0" : sci(R, true);
-  draw_text(rgb, W, H, x0, y, lo, scale, ink);
-  draw_text(rgb, W, H, (x0 + x1 - text_width("0", scale)) / 2, y, "0", scale, ink);
-  draw_text(rgb, W, H, x1 - text_width(hi, scale), y, hi, scale, ink);
-  write_rgb(path, W, H, rgb);
+  draw_legend(rgb, W, err.height, kBackground, label + "  MAX|E| " + sci(st.max_abs, false), label, diverging,
+              all_zero ? "0" : sci(-R, true), all_zero ? "0" : sci(R, true));
+  write_rgb_png(path, W, H, rgb);
 }
 
 }  // namespace specular

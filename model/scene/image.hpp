@@ -71,6 +71,20 @@ void write_png(const std::string& path, const Image& img, double scale = 1.0);
 // `label`, the colour bar and its numeric range (-R, 0, +R) in a built-in bitmap font.
 void write_heatmap_png(const std::string& path, const Image& err, const std::string& label, double range = 0.0);
 
+// An RGB PNG of w x h pixels (3 bytes a pixel, row-major). Throws std::runtime_error naming the
+// path when the file cannot be written.
+void write_rgb_png(const std::string& path, int w, int h, const std::vector<uint8_t>& rgb);
+
+// The legend strip under a difference image (write_heatmap_png; compose.hpp's
+// write_code_diff_png): legend_height(w) rows that draw_legend fills from row `top` of the
+// w-wide buffer `rgb` (background first): `title` (`short_title` when it does not fit), a bar
+// from -1 to +1 coloured by bar(u), and the labels lo, 0 and hi under its ends and its middle.
+int legend_height(int w);
+void draw_legend(std::vector<uint8_t>& rgb, int w, int top, const std::array<uint8_t, 3>& background,
+                 const std::string& title, const std::string& short_title,
+                 const std::function<std::array<uint8_t, 3>(double)>& bar, const std::string& lo,
+                 const std::string& hi);
+
 // Text rendering with the built-in 5x7 font (digits, A-Z, a few signs; lower case
 // drawn as upper case). Exposed for tests and other tools. RGB buffer, stride = 3*w.
 void draw_text(std::vector<uint8_t>& rgb, int w, int h, int x, int y, const std::string& text, int scale,
