@@ -46,12 +46,12 @@ BUILD_CONFIGS = "roms/build_configs.cmake"
 
 def build_blend_configs(root):
     """{name: {param: value}} of the blend builds of roms/build_configs.cmake (romgen --all writes
-    it from build_configs() in model/device/rom_image.cpp), defaults filled in from the first one's."""
+    it from build_configs() in model/device/rom_image.cpp): every parameter (<ID>_ALL_ARGS)."""
     import re
     with open(os.path.join(root, BUILD_CONFIGS)) as f:
         text = f.read()
     out = {}
-    for m in re.finditer(r'^set\(SPECULAR_BUILD_CONFIG_(\w+)_RTL_ARGS(.*)\)$', text, re.M):
+    for m in re.finditer(r'^set\(SPECULAR_BUILD_CONFIG_(\w+)_ALL_ARGS(.*)\)$', text, re.M):
         args = dict(re.findall(r'"-G(\w+)=(.*?)"(?= |$)', m.group(2).replace('\\"', "")))
         if args.get("Blend") == "1'b1":
             bits = re.search(rf'^set\(SPECULAR_BUILD_CONFIG_{m.group(1)}_ROM_BITS (\d+)\)$', text, re.M)

@@ -88,7 +88,7 @@ using namespace specular::sim;
 // (those that differ from the RTL defaults), which must be its Format: the golden model, the
 // ROM generator and this harness all take their widths from Format. The parameters are
 // /*verilator public*/, so the check reads them from the verilated model; for the default
-// configuration it checks the RTL's parameter defaults against Format{}.
+// configuration (no flags) it checks the RTL's parameter defaults against its Format.
 template <typename Root>
 bool format_matches_rtl(const Format& f, std::string& why) {
   struct Item { const char* name; int model, rtl; };
@@ -395,7 +395,7 @@ void print_table(const std::vector<PolicyStats>& all) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  const Format f;
+  const Format& f = specular::build_config("default").f;
   uint64_t seed = 20260522;
   int random_lines = 100000;
   std::string config = "all", vcd_dir, json_path, scenes_dir = "scenes", images_dir = "build/scenes";
@@ -493,11 +493,12 @@ int main(int argc, char** argv) {
 #endif
   }
 
-  // The RTL defaults are the default configuration: Format{} (the others are checked as
-  // they run, against their own Format).
+  // The RTL defaults are the default configuration's Format (the others are checked as they
+  // run, against their own).
   std::string why;
   if (!format_matches_rtl<Vspecular_unit_default_specular_unit>(f, why)) {
-    std::cerr << "sim_regression: the RTL parameter defaults differ from device::Format: " << why << "\n";
+    std::cerr << "sim_regression: the RTL parameter defaults differ from the default configuration's Format: " << why
+              << "\n";
     return 1;
   }
   if (!corrupt.empty()) {
@@ -655,7 +656,7 @@ int main(int argc, char** argv) {
       stream = run_stream_stage(sh, seed, stream_spans);
     }
     if (stream_spans > 0 || !scene_streams.empty()) print_stream_summary(stream, scene_streams);
-    // The blend builds (docs/display_exact.md) under the same random stream, a tenth of its spans,
+    // The other blend builds (docs/display_exact.md) under the same random stream, a tenth of its spans,
     // on their scene models (specular_stream at the build's parameters; the line stage ran them
     // with the RTL's assertions live).
     std::vector<std::pair<std::string, StreamStats>> blend_streams;
@@ -663,7 +664,7 @@ int main(int argc, char** argv) {
     // the fill latency within their 0.99 pixels per clock.
     const uint64_t blend_spans = std::max(stream_spans / 10, std::min<uint64_t>(stream_spans, 20000));
 #define SPECULAR_BLEND_STREAM(id, cfg_name)                                                                     \
-  if (bc.f.blend && bc.name == cfg_name) {                                                                     \
+  if (bc.f.blend && bc.name == cfg_name && bc.name != "default") {                                             \
     StreamHarness<Vspecular_scene_##id> bh("specular_stream", specular::load_device_model(bc.f, bc.coef_hex(), \
                                                                                           bc.cos_hex()), 16);  \
     blend_streams.emplace_back(bc.name, run_stream_stage(bh, seed, blend_spans));  \

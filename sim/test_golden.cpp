@@ -237,7 +237,7 @@ TEST_CASE("ROM 12 image (patent, direct) matches cos^k closed forms", "[rom]") {
   CHECK(img[2731] == static_cast<uint32_t>(std::lround(std::cos(std::numbers::pi / 2 * 2731 / 4096) * 65536)));
 }
 
-TEST_CASE("ROM 12 image (default, interpolated) matches cos^k closed forms", "[rom]") {
+TEST_CASE("ROM 12 image (single-bank build, interpolated) matches cos^k closed forms", "[rom]") {
   const Format f;
   const auto img = cos_rom_image(f);
   REQUIRE(img.size() == 8u * 256u);
@@ -314,14 +314,14 @@ TEST_CASE("committed ROMs load into the golden model", "[rom]") {
   CHECK_THROWS_WITH(load_device_model(Format{}, kCoefMinimaxHex, kPatentCosHex),
                     Catch::Matchers::Contains(kPatentCosHex));
   CHECK_THROWS_WITH(load_device_model(Format{}, kPatentCoefHex, kCosHex), Catch::Matchers::Contains(kPatentCoefHex));
-  // The default build: n = 2 is bank k = 2 with a = 1 (minimax of cos^2 for cos^2 is exact).
+  // The single-bank build: n = 2 is bank k = 2 with a = 1 (minimax of cos^2 for cos^2 is exact).
   const Format d;
   const auto md = load_device_model(d, kCoefMinimaxHex, kCosHex);
   r.psi0 = device::quantize_angle(std::numbers::pi / 4, d);
   CHECK(md.pixel(r, 0) == 16384u);
 }
 
-TEST_CASE("the default decoder table is the one derived from its bank set", "[golden]") {
+TEST_CASE("the single-bank decoder table is the one derived from its bank set", "[golden]") {
   const Format f;
   CHECK(f.bank_max_n == derive_bank_max_n(f.banks, parse_coef_spec("minimax")));
   const Format p = Format::patent();

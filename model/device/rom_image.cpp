@@ -39,9 +39,21 @@ std::string BuildConfig::cos_hex() const { return dir + "/" + cos_rom_file_name(
 const std::vector<BuildConfig>& build_configs() {
   static const std::vector<BuildConfig> configs = [] {
     std::vector<BuildConfig> v;
-    v.push_back({"default", device::Format{}, "minimax", "roms", {0.0010, 0.01, 4.0}});
+    // The default build (docs/display_exact.md): the blend of banks {1, 2, 4, 8} that meets B2
+    // (|err| <= 2^-9 C, an 8-bit display) for every n <= 1000, the cheapest blend device_search
+    // found ("best_blend" of docs/measured/device_search.json, which scripts/budget_roms.py checks
+    // these fields against) with one more ROM 12 data bit (and the step field it needs): the dense
+    // sweep (device_search --sweep) puts the search's widths at 1.057 of B2, one bit more at 0.96.
+    // Absolute budget only: the relative one of the epicenter is the single-bank builds'
+    // (sim/README.md).
+    device::Format b2 = blend_format(device::Format{}, {1, 2, 4, 8});
+    b2.coef_bits = 13, b2.coef_frac = 9, b2.psi_mul_frac = 15, b2.weight_bits = 10;
+    b2.cos_addr_bits = 7, b2.cos_data_bits = 12, b2.cos_delta_bits = 7, b2.cos_frac_bits = 7;
+    v.push_back({"default", b2, "blend", "roms/blend/b2", {1.0, std::ldexp(1.0, -9), 0.0}});
     v.push_back({"patent", device::Format::patent(), "maclaurin", "roms/patent", {0.012, 0.025, 0.0}});
-    // The default datapath with the patent's bank set: what the bank set buys.
+    // The single-bank build (Format{}, the default until the blend met B2): B1 for every n.
+    v.push_back({"single", device::Format{}, "minimax", "roms", {0.0010, 0.01, 4.0}});
+    // The single-bank datapath with the patent's bank set: what the bank set buys.
     device::Format p4;
     p4.banks = {1, 2, 4, 16};
     p4.bank_max_n = derive_bank_max_n(p4.banks, parse_coef_spec("minimax"));
@@ -51,16 +63,8 @@ const std::vector<BuildConfig>& build_configs() {
     i128.cos_addr_bits = 7;
     i128.cos_delta_bits = 13;
     v.push_back({"interp128", i128, "minimax", "roms/variants/interp128", {0.0010, 0.01, 4.0}, false});
-    // The display-exact devices (docs/display_exact.md): the cheapest blends device_search found
-    // for B2 and B4 over n <= 1000 ("best_blend" of docs/measured/device_search.json, which
-    // scripts/budget_roms.py checks these fields against) with one more ROM 12 data bit each (and
-    // the step field it needs): the dense sweep (device_search --sweep) puts the search's widths at
-    // 1.057 and 1.038 of their budgets, one bit more at 0.96 and 0.90. Absolute budgets only: the
-    // relative one of the epicenter is the single-bank builds' (sim/README.md).
-    device::Format b2 = blend_format(device::Format{}, {1, 2, 4, 8});
-    b2.coef_bits = 13, b2.coef_frac = 9, b2.psi_mul_frac = 15, b2.weight_bits = 10;
-    b2.cos_addr_bits = 7, b2.cos_data_bits = 12, b2.cos_delta_bits = 7, b2.cos_frac_bits = 7;
-    v.push_back({"blend-b2", b2, "blend", "roms/blend/b2", {1.0, std::ldexp(1.0, -9), 0.0}});
+    // The blend that meets B4 (|err| <= 2^-11 C, a 10-bit display), chosen as the default's: the
+    // search's widths at 1.038 of B4, one ROM 12 data bit more at 0.90.
     device::Format b4 = blend_format(device::Format{}, {1, 2, 3, 4, 8, 16});
     b4.coef_bits = 15, b4.coef_frac = 12, b4.psi_mul_frac = 19, b4.weight_bits = 9;
     b4.cos_addr_bits = 7, b4.cos_data_bits = 14, b4.cos_delta_bits = 9, b4.cos_frac_bits = 10;
@@ -143,7 +147,8 @@ std::string build_configs_cmake() {
        "# do not edit (docs/pipeline.md#build-configurations). The ctest roms_up_to_date checks it.\n"
        "# SPECULAR_BUILD_CONFIGS: the identifiers (the name with - as _); <ID>_NAME: the name;\n"
        "# <ID>_RTL_ARGS: the -G flags of specular_unit / specular_stream (parameters that differ\n"
-       "# from the first configuration's, which are the RTL defaults); <ID>_ROM_BITS: ROM 9 and ROM 12\n"
+       "# from the first configuration's, which are the RTL defaults); <ID>_ALL_ARGS: every parameter's\n"
+       "# flag; <ID>_ROM_BITS: ROM 9 and ROM 12\n"
        "# together (Format::coef_word_bits, cos_word_bits); <ID>_PIPELINE_ARGS: those\n"
        "# of sim/specular_pipeline.sv (the widths the stage counts depend on).\n";
   const auto& configs = build_configs();
@@ -158,6 +163,9 @@ std::string build_configs_cmake() {
     const std::vector<RtlParameter> ps = rtl_parameters(bc);
     for (size_t j = 0; j < ps.size(); ++j)
       if (!(ps[j] == base[j])) o << " " << flag(ps[j]);
+    o << ")\n";
+    o << "set(" << key << "_ALL_ARGS";
+    for (const auto& p : ps) o << " " << flag(p);
     o << ")\n";
     const auto& f = bc.f;
     o << "set(" << key << "_ROM_BITS "

@@ -25,8 +25,9 @@
 
 namespace specular {
 
-// Default file names (relative to the repository root), used by rtl/ defaults, romgen and sim/.
-// Default build (Format{}): minimax ROM 9, interpolated ROM 12 of banks {1,2,3,4,6,8,12,16}.
+// File names (relative to the repository root) of the single-bank build "single" (Format{}):
+// minimax ROM 9, interpolated ROM 12 of banks {1,2,3,4,6,8,12,16}. The default build's are
+// build_config("default").coef_hex() and cos_hex().
 inline constexpr const char* kCoefMinimaxHex = "roms/coef_minimax.hex";
 inline constexpr const char* kCosHex = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex";
 // The patent's build (Format::patent()): maclaurin ROM 9, direct ROM 12 of banks {1,2,4,16}.
@@ -35,8 +36,9 @@ inline constexpr const char* kPatentCosHex = "roms/patent/cos_k_1_2_4_16.hex";
 
 // The hardware configurations this repository builds, simulates (sim_regression verilates
 // each with its parameters) and reports: name, formats, ROM 9 policy, and where romgen
-// writes their ROM files (`romgen --all`). The first is the RTL default, the second the
-// patent's own configuration.
+// writes their ROM files (`romgen --all`). The first, "default", is the RTL default (the blend
+// that meets B2, docs/display_exact.md), the second the patent's own configuration, the third
+// "single" the single-bank build of Format{}.
 // The device error a configuration must meet (the regression's check (c), sim/README.md):
 // |err| <= rel_epicenter * ref + 1 LSB in the epicenter, |err| <= abs_lobe * C + 1 LSB over
 // the lobe; n = 1 is held to the relative budget where ref >= n1_min_ref_lsb output LSBs

@@ -342,7 +342,7 @@ int main(int argc, char** argv) {
   if (!sweep.empty()) return run_sweep(sweep, n_max, sweep_points, json_out);
   const auto t_start = std::chrono::steady_clock::now();
   const PixelBudget b = PixelBudget::named(budget);
-  const specular::BuildConfig& start = specular::build_config("default");
+  const specular::BuildConfig& start = specular::build_config("single");
   const specular::CoefSpec spec = specular::parse_coef_spec(start.policy);
   const int coef_int = start.f.coef_bits - start.f.coef_frac;
 

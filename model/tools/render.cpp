@@ -46,7 +46,7 @@ int main(int argc, char** argv) {
   bool csv_header = false;
   bool golden = false;
   bool colour = false;
-  std::string coef_rom = specular::kCoefMinimaxHex, cos_rom = specular::kCosHex;
+  std::string config = "default", coef_rom, cos_rom;
   app.add_option("--scene", scene_path, "scene JSON file (format: scenes/README.md)")->required();
   app.add_option("--out-dir", out_dir, "directory for the PNG images (created if missing)")->required();
   app.add_option("--scale", scale, "intensity multiplier for the grey images, (0, 1000]; default: 1 / peak of the Phong image");
@@ -55,9 +55,11 @@ int main(int argc, char** argv) {
   app.add_flag("--colour", colour,
                "also compose the colour images with the golden device model and the reference "
                "(<scene>_colour_device/_reference/_diff.png) and print their sRGB-code errors");
-  app.add_option("--coef-rom", coef_rom, "ROM 9 hex file for --golden and --colour (coefficient policy)")
+  app.add_option("--config", config, "build configuration of the device model for --golden and --colour "
+                                      "(its format and ROM files; rom_image.hpp build_configs())")
       ->capture_default_str();
-  app.add_option("--cos-rom", cos_rom, "ROM 12 hex file for --golden and --colour")->capture_default_str();
+  app.add_option("--coef-rom", coef_rom, "ROM 9 hex file instead of the configuration's (same format)");
+  app.add_option("--cos-rom", cos_rom, "ROM 12 hex file instead of the configuration's (same format)");
   if (const auto exit_code = specular::parse_command_line(app, argc, argv, "render")) return *exit_code;
   if (app.count("--scale") && !(scale > 0.0 && scale <= 1000.0)) {
     std::cerr << "render: --scale must be in (0, 1000], got " << scale << "\n";
@@ -74,11 +76,20 @@ int main(int argc, char** argv) {
 
   std::optional<specular::device::DeviceModel> dm;
   if (golden || colour) {
+    const specular::BuildConfig* bc = nullptr;
     try {
-      dm.emplace(specular::load_device_model(specular::device::Format{}, coef_rom, cos_rom));
+      bc = &specular::build_config(config);
+    } catch (const std::invalid_argument& e) {
+      std::cerr << "render: --config: " << e.what() << "\n";
+      return 2;
+    }
+    if (coef_rom.empty()) coef_rom = bc->coef_hex();
+    if (cos_rom.empty()) cos_rom = bc->cos_hex();
+    try {
+      dm.emplace(specular::load_device_model(bc->f, coef_rom, cos_rom));
     } catch (const std::exception& e) {
       std::cerr << "render: --coef-rom " << coef_rom << " / --cos-rom " << cos_rom
-                << ": expected readable ROM hex files of the default device format: " << e.what() << "\n";
+                << ": expected readable ROM hex files of configuration " << config << "'s format: " << e.what() << "\n";
       return 2;
     }
   }

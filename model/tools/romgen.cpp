@@ -1,6 +1,6 @@
 // SPDX-License-Identifier: Apache-2.0
 // romgen: writes the device ROMs (docs/device.md) from the golden-model formats.
-//   romgen --out-dir roms                  the default build: coef_minimax.hex and
+//   romgen --out-dir roms                  the single-bank build: coef_minimax.hex and
 //                                          cos_k_1_2_3_4_6_8_12_16_interp256.hex
 //   romgen --config patent --out-dir roms/patent    coef_maclaurin.hex, cos_k_1_2_4_16.hex
 //   romgen --all --out-dir roms            every configuration of build_configs() and the CMake
@@ -45,7 +45,7 @@ struct Job {
 
 int main(int argc, char** argv) {
   using specular::device::Format;
-  std::string config = "default";
+  std::string config = "single";
   std::string out_dir = "roms";
   std::vector<std::string> policies;
   std::vector<int> banks, bank_max_n;
@@ -55,12 +55,13 @@ int main(int argc, char** argv) {
       cos_frac_bits = -1;
 
   CLI::App app{"Generate the coefficient ROM (ROM 9) and the cos^k ROM (ROM 12) hex files"};
-  app.add_option("--config", config, "base configuration: default (interpolated, 8 banks, minimax) or patent "
-                                      "(direct table, {1,2,4,16}, maclaurin)")
-      ->check(CLI::IsMember({"default", "patent"}))
+  app.add_option("--config", config, "base configuration: single (the single-bank build: interpolated, 8 banks, "
+                                      "minimax) or patent (direct table, {1,2,4,16}, maclaurin); the default build "
+                                      "(a blend) is written by --all")
+      ->check(CLI::IsMember({"single", "patent"}))
       ->capture_default_str();
   app.add_flag("--all", all, "write every build configuration (rom_image.hpp build_configs) under OUT_DIR: "
-                             "the default into OUT_DIR, the others into their subdirectories");
+                             "each into its directory under OUT_DIR (build_configs' dir less its leading roms/)");
   app.add_option("--out-dir", out_dir, "output directory (created if missing)")->capture_default_str();
   app.add_option("--policy", policies, "coefficient policies: maclaurin, minimax, kutlog[:Q] (repeatable; "
                                        "default: minimax, maclaurin for --config patent)");

@@ -119,7 +119,7 @@ package specular_axil_reg_pkg;
 
   // BUILD_CORE (0x40, RO)
   localparam logic [BlockAw-1:0] BuildCoreOffset = 8'h40;
-  localparam logic [31:0] BuildCoreReset = 32'h0110_0416;
+  localparam logic [31:0] BuildCoreReset = 32'h0110_041A;
   localparam int BuildCoreLatencyLsb = 0;
   localparam int BuildCoreLatencyWidth = 8;
   localparam int BuildCoreFifoDepthLsb = 8;
@@ -131,7 +131,7 @@ package specular_axil_reg_pkg;
 
   // BUILD_ROM (0x44, RO)
   localparam logic [BlockAw-1:0] BuildRomOffset = 8'h44;
-  localparam logic [31:0] BuildRomReset = 32'h001F_0808;
+  localparam logic [31:0] BuildRomReset = 32'h0014_0704;
   localparam int BuildRomNumBanksLsb = 0;
   localparam int BuildRomNumBanksWidth = 8;
   localparam int BuildRomCosAddrBitsLsb = 8;
@@ -141,7 +141,7 @@ package specular_axil_reg_pkg;
 
   // BUILD_ROM_BITS (0x48, RO)
   localparam logic [BlockAw-1:0] BuildRomBitsOffset = 8'h48;
-  localparam logic [31:0] BuildRomBitsReset = 32'h0000_F800;
+  localparam logic [31:0] BuildRomBitsReset = 32'h0000_2800;
   localparam int BuildRomBitsBitsLsb = 0;
   localparam int BuildRomBitsBitsWidth = 32;
 

@@ -5,8 +5,10 @@
 // the core they wrap with `SPECULAR_CORE_PARAM_MAP; the formal harnesses hand their reduced
 // values on with the same map. A parameter added here reaches every top level at once.
 //
-// Defaults: those of struct specular::device::Format (model/device/device_model.hpp), the
-// configuration "default" of roms/build_configs.cmake. What each parameter is:
+// Defaults: the configuration "default" of build_configs() (model/device/rom_image.cpp; its
+// -G flags in roms/build_configs.cmake are empty), the blend that meets B2
+// (docs/display_exact.md); sim_regression and the block tests refuse a model whose parameters
+// differ from that configuration's Format. What each parameter is:
 //   CBits, CFrac           C and the intensity: bits, fraction bits (CFrac documentary)
 //                          (Format::c_bits, c_frac)
 //   AngleBits, AngleFrac   psi0 and dpsi: bits, fraction bits (angle_bits, angle_frac)
@@ -56,23 +58,23 @@
   parameter int AccBits      /*verilator public*/ = 44, \
   parameter int NBits        /*verilator public*/ = 10, \
   parameter int LenBits      /*verilator public*/ = 11, \
-  parameter int CoefBits     /*verilator public*/ = 21, \
-  parameter int CoefFrac     /*verilator public*/ = 18, \
-  parameter int PsiMulFrac   /*verilator public*/ = 20, \
+  parameter int CoefBits     /*verilator public*/ = 13, \
+  parameter int CoefFrac     /*verilator public*/ = 9, \
+  parameter int PsiMulFrac   /*verilator public*/ = 15, \
   parameter bit CosInterp    /*verilator public*/ = 1'b1, \
-  parameter int CosAddrBits  /*verilator public*/ = 8, \
-  parameter int CosDataBits  /*verilator public*/ = 18, \
-  parameter int CosDeltaBits /*verilator public*/ = 12, \
-  parameter int CosFracBits  /*verilator public*/ = 12, \
-  parameter int NumBanks     /*verilator public*/ = 8, \
+  parameter int CosAddrBits  /*verilator public*/ = 7, \
+  parameter int CosDataBits  /*verilator public*/ = 12, \
+  parameter int CosDeltaBits /*verilator public*/ = 7, \
+  parameter int CosFracBits  /*verilator public*/ = 7, \
+  parameter int NumBanks     /*verilator public*/ = 4, \
   parameter logic [NumBanks*NBits-1:0] BankMaxN /*verilator public*/ = \
-      {10'd1000, 10'd13, 10'd9, 10'd6, 10'd4, 10'd3, 10'd2, 10'd1}, \
-  parameter bit Blend        /*verilator public*/ = 1'b0, \
-  parameter int WeightBits   /*verilator public*/ = 12, \
+      {10'd1000, 10'd7, 10'd3, 10'd1}, \
+  parameter bit Blend        /*verilator public*/ = 1'b1, \
+  parameter int WeightBits   /*verilator public*/ = 10, \
   parameter int MulTileBits  /*verilator public*/ = 0, \
   parameter int Channels     /*verilator public*/ = 1, \
-  parameter     CoefRomFile = "roms/coef_minimax.hex", \
-  parameter     CosRomFile  = "roms/cos_k_1_2_3_4_6_8_12_16_interp256.hex"
+  parameter     CoefRomFile = "roms/blend/b2/coef_blend.hex", \
+  parameter     CosRomFile  = "roms/blend/b2/cos_k_1_2_4_8_interp128.hex"
 
 `define SPECULAR_CORE_PARAM_MAP \
   .CBits        (CBits), \

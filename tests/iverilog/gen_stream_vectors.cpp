@@ -125,10 +125,10 @@ int main(int argc, char** argv) {
     return app.exit(e) == 0 ? 0 : 2;
   }
 
-  const Format f;  // the RTL's default parameters
+  const specular::BuildConfig& bc = specular::build_config("default");  // the RTL's default parameters
+  const Format& f = bc.f;
   try {
-    const auto model = specular::load_device_model(f, root + "/" + specular::kCoefMinimaxHex,
-                                                   root + "/" + specular::kCosHex);
+    const auto model = specular::load_device_model(f, root + "/" + bc.coef_hex(), root + "/" + bc.cos_hex());
     std::vector<Span> spans = corner_spans(f);
     for (uint32_t i = 0; i < spans.size(); ++i) spans[i].tag = (0xc000 + i) & kTagMask;
     std::mt19937_64 rng(seed);

@@ -91,12 +91,12 @@ struct RegSpec {
 uint32_t ones(int bits) { return bits >= 32 ? 0xffffffffu : (1u << bits) - 1; }
 
 // What each register must hold, for a model with the default core parameters: access types
-// and constants as docs/interfaces.md states them, the build registers' values from
-// device::Format (independent of the RTL's parameters), placed at the header's offsets and
-// field positions.
+// and constants as docs/interfaces.md states them, the build registers' values from the
+// default build's Format (build_configs(), independent of the RTL's parameters), placed at the
+// header's offsets and field positions.
 template <class R>
 std::map<uint32_t, RegSpec> expected_map() {
-  const dev::Format f;
+  const dev::Format& f = specular::build_config("default").f;
   const int tag_bits = static_cast<int>(R::TagBits);
   const int fifo = static_cast<int>(R::FifoDepth);
   const uint32_t word_bits = static_cast<uint32_t>(f.cos_interp ? f.cos_data_bits + 1 + f.cos_delta_bits : f.cos_data_bits);
@@ -205,7 +205,8 @@ dev::Span to_model(const BusSpan& s, int tag_bits) {
 
 const dev::DeviceModel& golden() {
   static const dev::DeviceModel m =
-      specular::load_device_model(dev::Format{}, specular::kCoefMinimaxHex, specular::kCosHex);
+      specular::load_device_model(specular::build_config("default").f, specular::build_config("default").coef_hex(),
+                                  specular::build_config("default").cos_hex());
   return m;
 }
 
@@ -286,7 +287,7 @@ void sweep_map(Bench<V>& b) {
 
 TEST_CASE("specular_axil parameters: the core's defaults, AddrWidth 8, FifoDepth 4", "[rtl][axil]") {
   using R = Vaxil_specular_axil;
-  const dev::Format f;
+  const dev::Format& f = specular::build_config("default").f;
   CHECK(static_cast<int>(R::CBits) == f.c_bits);
   CHECK(static_cast<int>(R::AngleBits) == f.angle_bits);
   CHECK(static_cast<int>(R::NBits) == f.n_bits);
@@ -324,7 +325,7 @@ TEST_CASE("specular_axil_regs.h: the map's reset values and widths are the defau
   CHECK(SPECULAR_AXIL__SPAN_N__N_bm == m.at(kSpanN).mask);
   CHECK(SPECULAR_AXIL__SPAN_LEN__LEN_bm == m.at(kSpanLen).mask);
   CHECK(SPECULAR_AXIL__SPAN_TAG__TAG_bm == m.at(kSpanTag).mask);
-  CHECK(SPECULAR_AXIL__BANK_MAX_N__MAX_N_bw == dev::Format{}.n_bits);
+  CHECK(SPECULAR_AXIL__BANK_MAX_N__MAX_N_bw == specular::build_config("default").f.n_bits);
   CHECK(kBankMaxNCount == 16);
   // The window: every register below 0x100 (AddrWidth 8).
   CHECK(sizeof(specular_axil_t) <= 0x100);

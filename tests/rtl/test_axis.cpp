@@ -69,7 +69,8 @@ TEST_CASE("specular_axis layout: TDATA widths and field offsets", "[rtl][axis]")
 TEST_CASE("specular_axis equals specular_stream in lock step, bit-exact against the golden model", "[rtl][axis]") {
   const double ready_p = GENERATE(1.0, 0.6);
   const double offer_p = GENERATE(1.0, 0.5);
-  const auto model = specular::load_device_model(dev::Format{}, specular::kCoefMinimaxHex, specular::kCosHex);
+  const specular::BuildConfig& bc = specular::build_config("default");
+  const auto model = specular::load_device_model(bc.f, bc.coef_hex(), bc.cos_hex());
   Vaxis ax;
   Vstream st;
   PixelSink<Vaxis> sink(ax, 5);

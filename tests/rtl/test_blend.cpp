@@ -9,7 +9,7 @@
 #include "Vblend_b2_t18.h"
 #include "Vblend_b4_t16.h"
 #include "Vcos_k_rom_blend_b2.h"
-#include "Vpipeline_blend_b2_specular_pipeline.h"
+#include "Vpipeline_default_specular_pipeline.h"
 #include "Vpipeline_blend_b4_specular_pipeline.h"
 #include "pipe_stream.hpp"
 #include "rtl_harness.hpp"
@@ -101,7 +101,7 @@ int run_blend(M& dut, int latency, int d_bits, int w_bits, const std::vector<Ble
   return run_stream(dut, latency, items, apply, garbage, check, any, en);
 }
 
-using P2 = Vpipeline_blend_b2_specular_pipeline;
+using P2 = Vpipeline_default_specular_pipeline;
 using P4 = Vpipeline_blend_b4_specular_pipeline;
 
 }  // namespace
@@ -126,7 +126,7 @@ TEST_CASE("blend in DSP tiles (ECP5 18, B2 widths; UP5K 16, B4 widths): same val
 }
 
 TEST_CASE("ROM 12 with two reads (B2 build): each read is its own bank, entry and weight", "[rtl][rom][blend]") {
-  const specular::BuildConfig& bc = specular::build_config("blend-b2");
+  const specular::BuildConfig& bc = specular::build_config("default");
   const specular::device::Format& f = bc.f;
   REQUIRE(f.blend);
   const std::vector<uint32_t> image = specular::read_hex(bc.cos_hex(), f.cos_word_bits(), f.cos_rom_depth());

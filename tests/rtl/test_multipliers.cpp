@@ -24,8 +24,8 @@
 #include "Vpipe_mul_6x6.h"
 #include "Vpipe_mul_7x5.h"
 #include "Vpipe_mul_6x9_t5.h"
-#include "Vpipeline_default.h"
-#include "Vpipeline_default_specular_pipeline.h"
+#include "Vpipeline_single.h"
+#include "Vpipeline_single_specular_pipeline.h"
 #include "Vpipeline_patent.h"
 #include "Vpipeline_patent_specular_pipeline.h"
 #include "phong_mul_widths.inc"
@@ -132,7 +132,7 @@ std::vector<MulItem> every_pair(int a_bits, int b_bits) {
 
 // specular_pkg::pipe_mul_stages(b), from sim/specular_pipeline.sv's table.
 int tree_stages(int b) {
-  using P = Vpipeline_default_specular_pipeline;
+  using P = Vpipeline_single_specular_pipeline;
   const int bit = 8 * b;
   return static_cast<int>((P::TreeStagesTable[bit / 32] >> (bit % 32)) & 0xffu);
 }
@@ -233,7 +233,7 @@ constexpr long double kPi = std::numbers::pi_v<long double>;
 constexpr int kAccBits = 44;
 constexpr uint64_t kAccMask = (uint64_t{1} << kAccBits) - 1;
 // Latencies: the configurations' stage counts (sim/specular_pipeline.sv).
-constexpr int kMul11Latency = static_cast<int>(Vpipeline_default_specular_pipeline::Mul11Stages);
+constexpr int kMul11Latency = static_cast<int>(Vpipeline_single_specular_pipeline::Mul11Stages);
 constexpr int kMul11PatentLatency = static_cast<int>(Vpipeline_patent_specular_pipeline::Mul11Stages);
 constexpr int64_t kHalfPiCode = 421657429;             // ceil(pi/2 * 2^28)
 
@@ -464,7 +464,7 @@ TEST_CASE("multiplier 11, patent build: rounded 12-bit address, zero at 4096", "
 namespace {
 
 // 6: radix-4 tree over the 19 bits of cos^k (a row register + 4 adder levels), output.
-constexpr int kMul13Latency = static_cast<int>(Vpipeline_default_specular_pipeline::Mul13Stages);
+constexpr int kMul13Latency = static_cast<int>(Vpipeline_single_specular_pipeline::Mul13Stages);
 constexpr uint32_t kCosOne = 1u << 18;             // cos^k = 1.0
 
 struct IntensityItem {

@@ -10,7 +10,7 @@
 #include "Vcoef_rom_minimax.h"
 #include "Vcos_k_rom.h"
 #include "Vcos_k_rom_patent.h"
-#include "Vpipeline_default_specular_pipeline.h"
+#include "Vpipeline_single_specular_pipeline.h"
 #include "Vpipeline_patent_specular_pipeline.h"
 #include "pipe_stream.hpp"
 #include "rtl_harness.hpp"
@@ -104,7 +104,7 @@ TEST_CASE("ROM 9 (maclaurin, patent build, 18 bits) matches the generator at all
 }
 
 // ------------------------------------------------------------------------------------
-// ROM 12, interpolated (default build): 8 banks x 256 words {v (19 bits), d (12 bits)}
+// ROM 12, interpolated (single-bank build): 8 banks x 256 words {v (19 bits), d (12 bits)}
 // ------------------------------------------------------------------------------------
 namespace {
 
@@ -112,7 +112,7 @@ constexpr int kBanks[] = {1, 2, 3, 4, 6, 8, 12, 16};  // k of each bank, bank 0 
 constexpr int kEntries = 256;
 constexpr long double kOne = 262144.0L;                // 2^18: cos^k = 1.0
 // The configuration's stage count (sim/specular_pipeline.sv).
-constexpr int kRom12Latency = static_cast<int>(Vpipeline_default_specular_pipeline::Rom12Stages);
+constexpr int kRom12Latency = static_cast<int>(Vpipeline_single_specular_pipeline::Rom12Stages);
 
 // True cos^k at entry i of bank b, in units of 2^-18 (h = pi/2 / 256).
 long double cos_k_true(int bank, int i) {

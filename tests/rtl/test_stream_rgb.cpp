@@ -4,8 +4,8 @@
 // docs/interfaces.md#stream-interface-specular_stream). A span carries three values of C
 // (span_c_i, channel 0 in the low CBits) and every pixel three intensities (px_intensity_o
 // likewise), one multiplier 13 per channel on the pixel's one cos^k. Verilated at the default
-// widths (Vstream_rgb) and at the blend-b2 build (Vstream_rgb_b2, the -G flags of
-// roms/build_configs.cmake), each checked:
+// build, the blend (Vstream_rgb), and at the single-bank build (Vstream_rgb_single, the -G flags
+// of roms/build_configs.cmake), each checked:
 //   - against the golden model's per-channel function (DeviceModel::rgb_pixel), every pixel of
 //     every channel bit-exactly, with its tag and last flag, under random span gaps, random
 //     px_ready_i backpressure, garbage on the span bus while span_valid_i is low and a reset
@@ -25,11 +25,11 @@
 #pragma GCC diagnostic ignored "-Wpedantic"  // anonymous structs in Verilator's public-parameter headers
 #include "Vaxis_rgb.h"
 #include "Vaxis_rgb_specular_axis.h"
-#include "Vpipeline_rgb_b2_specular_pipeline.h"
 #include "Vpipeline_rgb_default_specular_pipeline.h"
+#include "Vpipeline_rgb_single_specular_pipeline.h"
 #include "Vstream_rgb.h"
-#include "Vstream_rgb_b2.h"
-#include "Vstream_rgb_b2_specular_stream.h"
+#include "Vstream_rgb_single.h"
+#include "Vstream_rgb_single_specular_stream.h"
 #include "Vstream_rgb_specular_stream.h"
 #pragma GCC diagnostic pop
 
@@ -383,24 +383,24 @@ void rgb_stream_tests(const dev::DeviceModel& model, const std::string& build) {
 
 }  // namespace
 
-TEST_CASE("specular_stream Channels = 3, default widths: every channel bit-exact, 1 pixel per clock",
+TEST_CASE("specular_stream Channels = 3, default build: every channel bit-exact, 1 pixel per clock",
           "[rtl][stream][rgb]") {
-  const auto model = specular::load_device_model(dev::Format{}, specular::kCoefMinimaxHex, specular::kCosHex);
+  const specular::BuildConfig& bc = specular::build_config("default");
+  const auto model = specular::load_device_model(bc.f, bc.coef_hex(), bc.cos_hex());
   rgb_stream_tests<Vstream_rgb, Vstream_rgb_specular_stream, Vpipeline_rgb_default_specular_pipeline>(model,
                                                                                                       "default");
 }
 
-TEST_CASE("specular_stream Channels = 3, blend-b2 build: every channel bit-exact, 1 pixel per clock",
+TEST_CASE("specular_stream Channels = 3, single-bank build: every channel bit-exact, 1 pixel per clock",
           "[rtl][stream][rgb]") {
-  const specular::BuildConfig& bc = specular::build_config("blend-b2");
-  const auto model = specular::load_device_model(bc.f, bc.coef_hex(), bc.cos_hex());
-  rgb_stream_tests<Vstream_rgb_b2, Vstream_rgb_b2_specular_stream, Vpipeline_rgb_b2_specular_pipeline>(model,
-                                                                                                      "blend-b2");
+  const auto model = specular::load_device_model(dev::Format{}, specular::kCoefMinimaxHex, specular::kCosHex);
+  rgb_stream_tests<Vstream_rgb_single, Vstream_rgb_single_specular_stream, Vpipeline_rgb_single_specular_pipeline>(
+      model, "single");
 }
 
 TEST_CASE("rgb_pixel: the scalar pixel per channel, C = 0 gives 0, the largest C within the format",
           "[model][rgb]") {
-  for (const char* name : {"default", "blend-b2"}) {
+  for (const char* name : {"default", "single"}) {
     const specular::BuildConfig& bc = specular::build_config(name);
     const auto model = specular::load_device_model(bc.f, bc.coef_hex(), bc.cos_hex());
     const uint32_t c_max = (1u << bc.f.c_bits) - 1;
@@ -439,7 +439,8 @@ TEST_CASE("specular_axis Channels = 3 equals specular_stream Channels = 3 in loc
   CHECK(static_cast<int>(RA::OffN) == 112);
   CHECK(static_cast<int>(RA::OffLen) == 122);
 
-  const auto model = specular::load_device_model(dev::Format{}, specular::kCoefMinimaxHex, specular::kCosHex);
+  const specular::BuildConfig& bc = specular::build_config("default");
+  const auto model = specular::load_device_model(bc.f, bc.coef_hex(), bc.cos_hex());
   const int cb = model.format().c_bits;
   Vaxis_rgb ax;
   Vstream_rgb st;

@@ -2,14 +2,15 @@
 // Top level specular_unit: the protocol of docs/interfaces.md as fixed for the RTL
 // (latency L = specular_pkg::unit_latency, docs/pipeline.md#stage-counts; one pixel per
 // clock, busy through the last pixel, l + L + 1 clocks per line), zero conditions, writes
-// and starts while busy, asynchronous reset, the RTL parameter defaults against
-// specular::device::Format, the pixels against C cos^k(a psi) in long double within the
+// and starts while busy, asynchronous reset, at the single-bank build (roms/build_configs.cmake
+// "single", specular::device::Format{}; the default build, a blend, runs in sim_regression and
+// test_blend.cpp): its parameters against Format{}, the pixels against C cos^k(a psi) in long double within the
 // interpolated ROM 12's error bound, and against the golden model bit for bit.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wpedantic"  // anonymous structs in Verilator's public-parameter header
 #include "Vunit.h"
 #include "Vunit_specular_unit.h"
-#include "Vpipeline_default_specular_pipeline.h"
+#include "Vpipeline_single_specular_pipeline.h"
 #pragma GCC diagnostic pop
 #include "rtl_harness.hpp"
 
@@ -35,7 +36,7 @@ using R = Vunit_specular_unit;  // public parameters (/*verilator public*/)
 // Start in cycle s -> first valid pixel in s + L: the start latch, register 8 and the block
 // latencies and the stream's output buffer, as rtl/prim/specular_pkg.sv defines them (read through
 // sim/specular_pipeline.sv, not from the model under test); the tests measure it.
-using P = Vpipeline_default_specular_pipeline;
+using P = Vpipeline_single_specular_pipeline;
 constexpr int kLatency = static_cast<int>(P::UnitLatency);
 constexpr int kBlockLatency = static_cast<int>(P::StartLatchStages + P::AccStages + P::Mul11Stages + P::Rom12Stages +
                                                P::Mul13Stages + P::OutBufStages);
@@ -129,7 +130,7 @@ uint32_t param_bit(const W& w, size_t b) {
 // C * cos^k(0): cos^k(0) = 1 is exact in the interpolated ROM 12, so the peak is C itself.
 uint32_t peak_intensity(uint32_t c) { return c; }
 
-// Decoder 10 of the default build, written out by hand: banks k = 1, 2, 3, 4, 6, 8, 12, 16
+// Decoder 10 of the single-bank build, written out by hand: banks k = 1, 2, 3, 4, 6, 8, 12, 16
 // serve n = 1 | 2 | 3 | 4 | 5..6 | 7..9 | 10..13 | 14..1000.
 int k_of(uint32_t n) {
   if (n <= 4) return static_cast<int>(n);
@@ -141,7 +142,7 @@ int k_of(uint32_t n) {
 
 }  // namespace
 
-TEST_CASE("specular_unit parameter defaults equal device::Format", "[rtl][unit]") {
+TEST_CASE("specular_unit at the single build's flags equals device::Format{}", "[rtl][unit]") {
   const specular::device::Format f;
   auto i = [](auto v) { return static_cast<int>(v); };
   CHECK(i(R::CBits) == f.c_bits);
@@ -161,7 +162,7 @@ TEST_CASE("specular_unit parameter defaults equal device::Format", "[rtl][unit]"
   CHECK(i(R::CosFracBits) == f.cos_frac_bits);
   CHECK(i(R::NumBanks) == static_cast<int>(f.banks.size()));
   // BankMaxN: NumBanks fields of NBits, bank 0 in the least significant bits; 80 bits wide
-  // with the defaults, so Verilator holds it as a VlWide of 32-bit words.
+  // in this build, so Verilator holds it as a VlWide of 32-bit words.
   REQUIRE(f.bank_max_n.size() * f.n_bits <= 96);
   auto bit = [](size_t b) { return param_bit(R::BankMaxN, b); };
   for (size_t j = 0; j < f.bank_max_n.size(); ++j) {
@@ -170,7 +171,7 @@ TEST_CASE("specular_unit parameter defaults equal device::Format", "[rtl][unit]"
     INFO("bank " << j);
     CHECK(field == static_cast<uint32_t>(f.bank_max_n[j]));
   }
-  // The default decoder table, by hand: 1, 2, 3, 4, 6, 9, 13, 1000.
+  // The single build's decoder table, by hand: 1, 2, 3, 4, 6, 9, 13, 1000.
   CHECK(f.bank_max_n == std::vector<int>{1, 2, 3, 4, 6, 9, 13, 1000});
 }
 
