@@ -364,13 +364,13 @@ class Report:
         return max(sel) if sel else None
 
     def error_rows(self, data):
-        """name -> {n, rel, abs} for float evaluators and the two default device configs."""
+        """name -> {n, rel, abs} for float evaluators and the two single-bank device builds."""
         rows = {}
         for e in data.get("evaluators", []):
             rows[e["name"]] = {"n": e["n"], "rel": [fnum(v) for v in e["max_rel_epicenter"]],
                                "abs": [fnum(v) for v in e["max_abs_lobe"]]}
         for h in data.get("hardware", []):
-            key = {"patent": "device", "default": "device_minimax"}.get(h["name"])
+            key = {"patent": "device", "single": "device_minimax"}.get(h["name"])
             if key:
                 rows[key] = {"n": h["n"], "rel": [fnum(v) for v in h["max_rel_epicenter"]],
                              "abs": [fnum(v) for v in h["max_abs_lobe"]]}

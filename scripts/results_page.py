@@ -625,24 +625,37 @@ def region_results(data):
             else "lines and pixels per configuration in the results")
     ss = sim["scenes_stream"].values()
     px = sum(s["pixels"] for s in ss)
-    d, p = cfgs["default"], cfgs["patent"]
+    d, p, one = cfgs["default"], cfgs["patent"], cfgs["single"]
     patent_n3 = cli_rows(data, CLI_RUNS[0])[0]["max_rel_epicenter"]
     hx, up = pnr(data, "specular_stream", "HX8K"), pnr(data, "specular_stream", "UP5K")
     _, res = verdict_rows(data)
-    b1 = res["b1"]
-    row = {r["mean"]: r for r in b1}
-    if any(row[m][k] is None for m in (1, 8, 16, 64) for k in ("host_ratio", "hw_ratio")):
-        raise SourceError(f"{SOURCES['fpga']}: the verdict at B1 lacks a design on one side")
-    phong = row[1]["phong"]["name"].split()[1]
+
+    def budget_row(b):
+        row = {r["mean"]: r for r in res[b]}
+        if any(row[m][k] is None for m in (1, 8, 16, 64) for k in ("host_ratio", "hw_ratio")):
+            raise SourceError(f"{SOURCES['fpga']}: the verdict at {b.upper()} lacks a design on one side")
+        return row, row[1]["phong"]["name"].split()[1]
+
+    def hw_text(row):
+        return (f"{ratio(row[1]['host_ratio'])} ({ratio(row[1]['host_ratio_at_clock'])} at each core's clock); with "
+                f"the setup in hardware {ratio(row[8]['hw_ratio'])} on spans of 8 pixels, {ratio(row[16]['hw_ratio'])} "
+                f"on spans of 16 ({ratio(row[16]['hw_ratio_at_clock'])} at each core's clock), "
+                f"{ratio(row[64]['hw_ratio'])} on spans of 64 or more ({ratio(row[64]['hw_ratio_at_clock'])})")
+    b2, phong2 = budget_row("b2")
+    b1, phong1 = budget_row("b1")
     speed = [s["best_isa"]["speedup"] for s in bench["scenes"]]
     rows = [
         [f"RTL against the golden model, every configuration ({each}) and the scenes",
          f"{num(total('mismatches'))} mismatches, {num(total('protocol_errors'))} protocol errors", "`make sim`"],
-        ["worst device error against `C cos^n(psi)` (1-LSB allowance), default build",
-         f"{sig(100 * d['rel_epicenter_with_lsb']['value'])} % relative in the epicenter, "
-         f"{sig(d['abs_lobe_with_lsb']['value'])} C over the lobe", "`make sim`"],
-        ["the same, patent build", f"{sig(100 * p['rel_epicenter_with_lsb']['value'])} % and "
-                                   f"{sig(p['abs_lobe_with_lsb']['value'])} C", "`make sim`"],
+        ["worst device error against `C cos^n(psi)` (1-LSB allowance), the default build (two banks blended per "
+         "`n`, [display_exact.md](docs/display_exact.md)); its dense sweep of every `n <= 1000` as a share of B2 "
+         "(`2^-9 C`, no allowance)",
+         f"{sig(d['abs_lobe_with_lsb']['value'])} C over the lobe; {data['sweep_b2']['budget_used']:.3f} of B2",
+         "`make sim`, `device_search --sweep default`"],
+        ["the same, single-bank build (`single`, B1) and patent build",
+         f"{sig(100 * one['rel_epicenter_with_lsb']['value'])} % relative in the epicenter, "
+         f"{sig(one['abs_lobe_with_lsb']['value'])} C over the lobe; {sig(100 * p['rel_epicenter_with_lsb']['value'])} "
+         f"% and {sig(p['abs_lobe_with_lsb']['value'])} C", "`make sim`"],
         ["the patent's method with its own coefficients at `n = 3`, floating point (the patent claims at most 1 %)",
          f"{sig(100 * patent_n3)} %", "`specular errors`"],
         ["`specular_stream`, spans of `l = 0..3` back to back, after the fill",
@@ -650,24 +663,19 @@ def region_results(data):
         ["the scenes of `scenes/`: clocks per pixel through `specular_stream` / `specular_unit`",
          f"{sum(s['stream_cycles'] for s in ss) / px:.4f} / {sum(s['register_cycles'] for s in ss) / px:.2f}",
          "`make sim`"],
-        ["`specular_stream` on the iCE40-HX8K, out of context",
+        ["`specular_stream` (default build) on the iCE40-HX8K, out of context",
          f"{num(hx['sb_lut4'])} SB_LUT4, {num(hx['lcs'])} of {num(hx['lcs_available'])} logic cells, "
          f"{num(hx['brams'])} block RAMs, {hx['fmax_mhz']:.2f} MHz", "`make fpga`"],
-        ["`specular_stream` on the iCE40-UP5K",
+        ["`specular_stream` (default build) on the iCE40-UP5K",
          f"{num(up['lcs'])} of {num(up['lcs_available'])} logic cells, {up['fmax_mhz']:.2f} MHz", "`make fpga`"],
-        ["hardware, ECP5 with MULT18X18D tiles on both sides, `n <= 1000` at the device's budget (B1): pixels per "
-         f"clock per LFE5U-85F of the device (setup on a host) over the best per-pixel Phong core (`{phong}`)",
-         f"{ratio(row[1]['host_ratio'])} ({ratio(row[1]['host_ratio_at_clock'])} at each core's clock); with the "
-         f"setup in hardware {ratio(row[8]['hw_ratio'])} on spans of 8 pixels, {ratio(row[16]['hw_ratio'])} on spans "
-         f"of 16 ({ratio(row[16]['hw_ratio_at_clock'])} at each core's clock), {ratio(row[64]['hw_ratio'])} on "
-         f"spans of 64 or more ({ratio(row[64]['hw_ratio_at_clock'])})", "`make fpga`, `make report`"],
-        ["the display-exact builds (two banks blended per `n`, [display_exact.md](docs/display_exact.md)), "
-         "every `n <= 1000` on a dense sweep: worst error as a share of B2 (`2^-9 C`) and of B4 (`2^-11 C`); pixels "
-         "per clock per part (setup on a host) over the best Phong core at that budget",
-         f"{data['sweep_b2']['budget_used']:.3f} of B2, {data['sweep_b4']['budget_used']:.3f} of B4; "
-         f"{ratio(res['b2'][0]['host_ratio'])} (`{res['b2'][0]['phong']['name'].split()[1]}`) and "
-         f"{ratio(res['b4'][0]['host_ratio'])} (`{res['b4'][0]['phong']['name'].split()[1]}`)",
-         "`device_search --sweep`, `make fpga`"],
+        ["hardware, ECP5 with MULT18X18D tiles on both sides, `n <= 1000` at B2 (the default build's budget): pixels "
+         f"per clock per LFE5U-85F of the device (setup on a host) over the best per-pixel Phong core (`{phong2}`)",
+         hw_text(b2), "`make fpga`, `make report`"],
+        [f"the same at B1 (the single-bank builds) against `{phong1}`", hw_text(b1), "`make fpga`, `make report`"],
+        ["the blend at B4 (`blend-b4`), dense sweep of every `n <= 1000` as a share of B4 (`2^-11 C`); pixels per "
+         "clock per part (setup on a host) over the best Phong core at B4",
+         f"{data['sweep_b4']['budget_used']:.3f} of B4; {ratio(res['b4'][0]['host_ratio'])} "
+         f"(`{res['b4'][0]['phong']['name'].split()[1]}`)", "`device_search --sweep blend-b4`, `make fpga`"],
         ["software: the device method with its setup against per-pixel Phong (SLEEF), per scene",
          f"{min(speed):.2f} to {max(speed):.2f} x as fast", "`scene_bench`"],
     ]
@@ -845,11 +853,13 @@ def region_picture(data):
         raise SourceError(f"{SOURCES['sim']} or {SOURCES['flip']} has no colour figures of {PICTURE_SCENE}")
     return [f"`scenes/{PICTURE_SCENE}.json` (the COLLADA duck of Debian's `assimp-testmodels` under three coloured "
             "lights) rasterized into spans, set up on the host, every span of every light streamed with its specular "
-            "colour through `specular_stream` with `Channels = 3` (the default build's widths, budget B1) in Verilator, "
+            "colour through `specular_stream` with `Channels = 3` (the default build, budget B2) in Verilator, "
             "the channels added on the host (left, [colour.md](docs/colour.md)); the same composition around the "
             "material's BRDF in double "
             "(middle); their difference in 8-bit sRGB codes, amplified (right). Worst difference "
-            f"{'/'.join(str(x) for x in c['srgb8_max'])} codes (R/G/B), mean "
+            f"{'/'.join(f'{x:.2e}' for x in c['linear_max'])} of full scale in linear value (R/G/B; "
+            f"{max(c['linear_max']) / 2 ** -9:.2f} of `2^-9`), "
+            f"{'/'.join(str(x) for x in c['srgb8_max'])} codes, mean "
             f"{'/'.join(f'{x:.3f}' for x in c['srgb8_mean'])}, mean FLIP {f['mean_flip']:.4f}; "
             f"{num(c['mismatches'])} mismatches against the golden model. `make readme-picture` draws it again "
             "([`scripts/readme_picture.py`](scripts/readme_picture.py)); every scene's figures: "

@@ -198,10 +198,10 @@ def device_errors(data, search):
     there), a labelled budget configuration from the device search that found it
     (docs/measured/device_search.json: the run of its bank set at its widths)."""
     out = {}
-    default = next((h for h in data.get("hardware", []) if h.get("name") == "default"), None)
-    if default:
-        out[None] = {"rel_lsb": max(default["max_rel_epicenter_lsb"]), "abs_lsb": max(default["max_abs_lobe"]),
-                     "abs_raw": None}
+    for name, label in BUILDS:
+        h = next((h for h in data.get("hardware", []) if h.get("name") == name), None)
+        if h:
+            out[label] = {"rel_lsb": max(h["max_rel_epicenter_lsb"]), "abs_lsb": max(h["max_abs_lobe"]), "abs_raw": None}
     for r in (search or {}).get("runs", []):
         best = r.get("best")
         if not best or r.get("n_max") != 1000:
@@ -255,6 +255,12 @@ def worst_errors(phong_json, n_max=1000):
 
 # The budgets a configuration built for one meets: B1's bounds are B3's or tighter, B4's B2's.
 IMPLIED = {"b1": ["b1", "b3"], "b2": ["b2"], "b3": ["b3"], "b4": ["b2", "b4"]}
+# The build configurations of model/device/rom_image.cpp with entries of their own in the record
+# (report_data name, record label) and the budget each was built for: the default build (no
+# label), the blend that meets B2 (its dense sweep, docs/display_exact.md#search), and the
+# single-bank build (label "single"), which meets B1 (docs/device.md).
+BUILDS = (("default", None), ("single", "single"))
+BUILT_FOR = {None: "b2", "single": "b1"}
 
 
 def labelled_device_budgets(figs):
@@ -267,15 +273,17 @@ def labelled_device_budgets(figs):
 
 
 def device_budgets(data, figs):
-    """Config label -> the budgets a device stream configuration meets: the default build (label
-    None) by this run's measured errors (report_data's hardware section, n <= 1000), B1 and B3 only
-    (B2 bounds the raw error, which report_data does not give; docs/device.md#configurations-per-budget
-    records that no device configuration meets it); the labelled ones by labelled_device_budgets."""
+    """Config label -> the budgets a device stream configuration meets: the builds of BUILDS by
+    this run's measured errors (report_data's hardware section, n <= 1000) at B1 and B3 (B2 and B4
+    bound the raw error, which report_data does not give: the default build meets B2 by its dense
+    sweep, a ctest), the labelled ones by labelled_device_budgets."""
     out = {}
-    default = next((h for h in data.get("hardware", []) if h.get("name") == "default"), None)
-    if default:
-        err = {"rel_lsb": max(default["max_rel_epicenter_lsb"]), "abs_lsb": max(default["max_abs_lobe"])}
-        out[None] = [b for b in ("b1", "b3") if budget_error(err, b) <= 1.0]
+    for name, label in BUILDS:
+        h = next((h for h in data.get("hardware", []) if h.get("name") == name), None)
+        if h:
+            err = {"rel_lsb": max(h["max_rel_epicenter_lsb"]), "abs_lsb": max(h["max_abs_lobe"])}
+            met = [b for b in ("b1", "b3") if budget_error(err, b) <= 1.0]
+            out[label] = sorted(set(met) | ({"b2"} if BUILT_FOR[label] == "b2" else set()))
     out.update(labelled_device_budgets(figs))
     return out
 
@@ -431,11 +439,12 @@ def plot(points, out_dir, plt):
 
 def record_points(figs, configs):
     """The points of the record alone, each configuration at the budget it was built for (no error
-    measured): the device's default build (B1) and labelled runs, and the Phong configurations
+    measured): the device's builds (BUILT_FOR) and labelled runs, and the Phong configurations
     for n <= 1000 of configs (name -> budget, hw_plane.phong_configs())."""
     phong = {c: IMPLIED[b] for c, b in configs.items() if c.endswith("n1000")}
     dev = labelled_device_budgets(figs)
-    dev[None] = IMPLIED["b1"]  # the default build meets B1 (docs/device.md)
+    for label, b in BUILT_FOR.items():
+        dev[label] = IMPLIED[b]
     pts = load_points(figs, {}, dev, list(phong))
     for p in pts:
         if p["kind"] == "phong":

@@ -93,6 +93,7 @@ nlohmann::json ColourStats::to_json() const {
           {"covered_pixels", err.pixels},
           {"srgb8_max", err.max_abs},
           {"srgb8_mean", err.mean_abs},
+          {"linear_max", err.max_linear},
           {"images", images},
           {"ok", ok()}};
 }

@@ -114,7 +114,7 @@ std::vector<RtlParameter> rtl_parameters(const BuildConfig& bc) {
           {"CoefBits", i(f.coef_bits)},
           {"CoefFrac", i(f.coef_frac)},
           {"PsiMulFrac", i(f.psi_mul_frac)},
-          {"CosInterp", f.cos_interp ? "1" : "0"},
+          {"CosInterp", f.cos_interp ? "1'b1" : "1'b0"},
           {"CosAddrBits", i(f.cos_addr_bits)},
           {"CosDataBits", i(f.cos_data_bits)},
           {"CosDeltaBits", i(f.cos_delta_bits)},

@@ -118,6 +118,8 @@ ColourErrorStats srgb_code_error(const RgbImage& a, const RgbImage& b) {
     ++st.pixels;
     for (int ch = 0; ch < 3; ++ch) {
       const int d = std::abs(int(srgb_code(a.value[k][ch])) - int(srgb_code(b.value[k][ch])));
+      const double lin = std::abs(std::clamp(a.value[k][ch], 0.0, 1.0) - std::clamp(b.value[k][ch], 0.0, 1.0));
+      st.max_linear[ch] = std::max(st.max_linear[ch], lin);
       sum[ch] += d;
       st.max_abs[ch] = std::max(st.max_abs[ch], d);
       if (d > worst) {

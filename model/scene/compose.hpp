@@ -84,6 +84,9 @@ uint8_t srgb_code(double linear);
 struct ColourErrorStats {
   std::array<int, 3> max_abs{};      // per channel r, g, b: worst |a - b| in codes
   std::array<double, 3> mean_abs{};  // mean |a - b| in codes
+  // Worst |clamp(a) - clamp(b)| in linear value, clamped to [0, 1] as the codes are: a fraction of
+  // full scale (an 8-bit display's half step is 2^-9 of it).
+  std::array<double, 3> max_linear{};
   std::array<int, 2> argmax{-1, -1};  // x, y of the worst pixel over the three channels
   size_t pixels = 0;
 };

@@ -245,12 +245,17 @@ TEST_CASE("sRGB-code error: worst and mean per channel over the covered pixels",
   CHECK(st.max_abs == std::array<int, 3>{0, 3, 12});
   CHECK(st.mean_abs == std::array<double, 3>{0.0, 3.0, 12.0});
   CHECK(st.argmax == std::array<int, 2>{0, 0});
+  // Linear: |0.5 - 0.5|, |0 - 0.001|, |1 - 0.9|.
+  CHECK_THAT(st.max_linear[0], WithinAbs(0.0, 1e-15));
+  CHECK_THAT(st.max_linear[1], WithinAbs(0.001, 1e-15));
+  CHECK_THAT(st.max_linear[2], WithinAbs(0.1, 1e-15));
   b.covered[1] = 1;  // now counted: |1 - 0| = 255 codes in every channel, means over two pixels
   const ColourErrorStats st2 = srgb_code_error(a, b);
   CHECK(st2.pixels == 2);
   CHECK(st2.max_abs == std::array<int, 3>{255, 255, 255});
   CHECK(st2.mean_abs == std::array<double, 3>{127.5, 129.0, 133.5});
   CHECK(st2.argmax == std::array<int, 2>{1, 0});
+  CHECK(st2.max_linear == std::array<double, 3>{1.0, 1.0, 1.0});
 }
 
 TEST_CASE("bunny_colour.json, duck_colour.json: the grey scenes' geometry in colour, device within a few codes", "[scene][colour][repo]") {
