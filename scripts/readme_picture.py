@@ -8,9 +8,12 @@ sim/README.md and docs/colour.md: spans of the rasterized scene through the batc
 image composed around the RTL's intensities) and puts three of the images it writes side by side,
 pixel for pixel:
 
-  <scene>_colour_rtl.png        the RTL's intensities composed in colour (every light)
-  <scene>_colour_reference.png  the same composition around the material's BRDF in double
-  <scene>_colour_diff.png       their difference in 8-bit sRGB codes, amplified, with its range
+  <scene>_colour_rtl.png          the RTL's intensities composed in colour (every light)
+  <scene>_colour_registers.png    the same composition around C cos^n(psi) of the RTL's own
+                                  registers in double (what the device's budget bounds)
+  <scene>_colour_device_diff.png  their difference in 8-bit sRGB codes, amplified, with its range
+(the composition around the material's BRDF, which adds the setup's error, is
+<scene>_colour_reference.png; the caption gives both differences)
 
 --grey draws the grey images instead (<scene>_rtl, _float, _device_error). Run from the repository
 root, so that the RTL's ROM paths resolve (rtl/README.md, "ROM files"):
@@ -34,8 +37,8 @@ import matplotlib.pyplot as plt  # noqa: E402
 
 PANELS = {
     "colour": [("colour_rtl", "RTL: specular_stream (Verilator), composed"),
-               ("colour_reference", "reference: the material's BRDF, double"),
-               ("colour_diff", "RTL - reference, sRGB codes")],
+               ("colour_registers", "C cos^n(psi) of its registers, double"),
+               ("colour_device_diff", "RTL - C cos^n(psi), sRGB codes")],
     "grey": [("rtl", "RTL: specular_stream (Verilator)"),
              ("float", "reference: C cos^n(psi), double"),
              ("device_error", "RTL - C cos^n(psi) of its registers")],

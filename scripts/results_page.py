@@ -182,9 +182,10 @@ def section_colour(sim, flip, rel_sim, rel_flip):
     """Per scene: the colour stage of the run (sim/colour_stage.hpp) and the mean FLIP of its images."""
     p = provenance(flip, rel_flip)
     out = ["### Colour", "",
-           "Every scene through the RGB core (`Channels = 3`, the default build's widths) with each span's specular "
+           "Every scene through the RGB core (`Channels = 3`, the default build) with each span's specular "
            "colour, composed on the host, against the composition around the material's BRDF in double "
-           "([colour.md](colour.md)); 8-bit sRGB codes over the covered pixels "
+           "([colour.md](colour.md)); 8-bit sRGB codes over the covered pixels; the device alone: against the "
+           "composition around `C cos^n(psi)` of its registers, of full scale "
            f"([`{os.path.basename(rel_sim)}`]({os.path.relpath(rel_sim, 'docs')}), the run above); mean FLIP over "
            "the whole image at 67 pixels per degree, black background included: " + run_line(p, rel_flip)]
     rows = []
@@ -195,10 +196,10 @@ def section_colour(sim, flip, rel_sim, rel_flip):
         rows.append([f"`{name}`", num(c["spans"]), num(c["pixels"]), num(c["mismatches"] + c["protocol_errors"]),
                      num(c["saturated_spans"]),
                      "/".join(str(x) for x in c["srgb8_max"]), "/".join(f"{x:.3f}" for x in c["srgb8_mean"]),
-                     f"{f['mean_flip']:.5f}"])
+                     f"{f['mean_flip']:.5f}", f"{max(c['device_linear_max']):.2e}"])
     out += table(["scene", "spans", "pixels", "mismatches", "spans with C clamped", "worst R/G/B (codes)",
                   "mean R/G/B (codes)",
-                  "mean FLIP"], rows)
+                  "mean FLIP", "the device alone: worst linear difference"], rows)
     return out
 
 
@@ -641,6 +642,10 @@ def region_results(data):
                 f"the setup in hardware {ratio(row[8]['hw_ratio'])} on spans of 8 pixels, {ratio(row[16]['hw_ratio'])} "
                 f"on spans of 16 ({ratio(row[16]['hw_ratio_at_clock'])} at each core's clock), "
                 f"{ratio(row[64]['hw_ratio'])} on spans of 64 or more ({ratio(row[64]['hw_ratio_at_clock'])})")
+    for key, build in (("sweep_b2", "default"), ("sweep_b4", "blend-b4")):
+        if data[key].get("config") != build:
+            raise SourceError(f"{SOURCES[key]} sweeps {data[key].get('config')}, not the build {build}: run "
+                              f"device_search --sweep {build} --json {SOURCES[key]}")
     b2, phong2 = budget_row("b2")
     b1, phong1 = budget_row("b1")
     speed = [s["best_isa"]["speedup"] for s in bench["scenes"]]
@@ -851,14 +856,16 @@ def region_picture(data):
     f = data["flip"]["scenes"].get(PICTURE_SCENE)
     if c is None or f is None:
         raise SourceError(f"{SOURCES['sim']} or {SOURCES['flip']} has no colour figures of {PICTURE_SCENE}")
+    dev = max(c["device_linear_max"])
     return [f"`scenes/{PICTURE_SCENE}.json` (the COLLADA duck of Debian's `assimp-testmodels` under three coloured "
             "lights) rasterized into spans, set up on the host, every span of every light streamed with its specular "
             "colour through `specular_stream` with `Channels = 3` (the default build, budget B2) in Verilator, "
-            "the channels added on the host (left, [colour.md](docs/colour.md)); the same composition around the "
-            "material's BRDF in double "
-            "(middle); their difference in 8-bit sRGB codes, amplified (right). Worst difference "
-            f"{'/'.join(f'{x:.2e}' for x in c['linear_max'])} of full scale in linear value (R/G/B; "
-            f"{max(c['linear_max']) / 2 ** -9:.2f} of `2^-9`), "
+            "the channels added on the host (left, [colour.md](docs/colour.md)); the same composition around "
+            "`C cos^n(psi)` of the RTL's own registers in double (middle); their difference in 8-bit sRGB codes, "
+            f"amplified (right): at most {dev:.2e} of full scale in linear value ({dev / 2 ** -9:.2f} of `2^-9`), "
+            f"{'/'.join(str(x) for x in c['device_srgb8_max'])} codes (R/G/B). Against the composition around the "
+            "material's BRDF in double, which adds the setup's error: "
+            f"{'/'.join(f'{x:.2e}' for x in c['linear_max'])} of full scale, "
             f"{'/'.join(str(x) for x in c['srgb8_max'])} codes, mean "
             f"{'/'.join(f'{x:.3f}' for x in c['srgb8_mean'])}, mean FLIP {f['mean_flip']:.4f}; "
             f"{num(c['mismatches'])} mismatches against the golden model. `make readme-picture` draws it again "

@@ -29,6 +29,9 @@ struct ColourStats {
   uint64_t spans = 0, pixels = 0, mismatches = 0, protocol_errors = 0;
   uint64_t saturated_spans = 0;  // a channel's C clamped to register 1's largest code
   ColourErrorStats err;  // the RTL's image against the reference, sRGB codes
+  // The RTL's image against the same composition around C_ch cos^n(psi_i) of its own registers in
+  // double: the device's error alone (what its budget bounds), without the setup's.
+  ColourErrorStats device_err;
   std::vector<std::string> images;
   double seconds = 0.0;
   bool ok() const { return pixels > 0 && mismatches == 0 && protocol_errors == 0; }

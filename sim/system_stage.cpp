@@ -258,25 +258,24 @@ bool system_setup_ii_built(int setup_ii) {
 
 SystemStats run_system_stage(const std::vector<LoadedScene>& scenes, const BuildConfig& bc, uint64_t seed,
                              uint64_t random_spans, int setup_ii) {
+  if (bc.name == "default") {
 #if SPECULAR_SYSTEM_SETUP_II
-  if (setup_ii == 8) return run_all<Vspecular_system_ii8>(scenes, bc, seed, random_spans, setup_ii);
-  if (setup_ii == 32) return run_all<Vspecular_system_ii32>(scenes, bc, seed, random_spans, setup_ii);
-  if (setup_ii == 64) return run_all<Vspecular_system_ii64>(scenes, bc, seed, random_spans, setup_ii);
+    if (setup_ii == 8) return run_all<Vspecular_system_ii8>(scenes, bc, seed, random_spans, setup_ii);
+    if (setup_ii == 32) return run_all<Vspecular_system_ii32>(scenes, bc, seed, random_spans, setup_ii);
+    if (setup_ii == 64) return run_all<Vspecular_system_ii64>(scenes, bc, seed, random_spans, setup_ii);
 #endif
-  if (bc.f.blend) {
-    // The blend builds' systems are verilated at SetupII 16 only, with their own parameters.
+    if (setup_ii == 16) return run_all<Vspecular_system_ii16>(scenes, bc, seed, random_spans, setup_ii);
+    if (setup_ii != 1) throw std::invalid_argument("specular_system at SetupII " + std::to_string(setup_ii) + " is not built");
+    return run_all<Vspecular_system>(scenes, bc, seed, random_spans, setup_ii);
+  }
+  // The other blend builds' systems are verilated at SetupII 16 only, with their own parameters.
 #define SPECULAR_BLEND_SYSTEM(id, cfg_name) \
   if (bc.name == cfg_name && setup_ii == 16) return run_all<Vspecular_system_ii16_##id>(scenes, bc, seed, random_spans, setup_ii);
-    SPECULAR_SYSTEM_BLEND(SPECULAR_BLEND_SYSTEM)
+  SPECULAR_SYSTEM_BLEND(SPECULAR_BLEND_SYSTEM)
 #undef SPECULAR_BLEND_SYSTEM
-    throw std::invalid_argument("specular_system at " + bc.name + " is built at SetupII 16 only, and for every blend "
-                                "build in the configurations verilated");
-  }
-  if (bc.name != "default")
-    throw std::invalid_argument("specular_system is built for the default and the blend builds, not " + bc.name);
-  if (setup_ii == 16) return run_all<Vspecular_system_ii16>(scenes, bc, seed, random_spans, setup_ii);
-  if (setup_ii != 1) throw std::invalid_argument("specular_system at SetupII " + std::to_string(setup_ii) + " is not built");
-  return run_all<Vspecular_system>(scenes, bc, seed, random_spans, setup_ii);
+  throw std::invalid_argument("specular_system is built for the default build (SetupII 1 and 16, 8, 32 and 64 with the "
+                              "option) and for the other blend builds at SetupII 16, not " + bc.name + " at SetupII " +
+                              std::to_string(setup_ii));
 }
 
 void print_system_summary(const SystemStats& s) {
