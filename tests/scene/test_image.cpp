@@ -354,7 +354,8 @@ TEST_CASE("render --colour: the three colour images and the sRGB-code columns", 
   REQUIRE(cells.size() == 17 + 7);
   const Scene s = parse_scene(scene, "ball.json");
   const Raster raster = rasterize(s);
-  const device::DeviceModel dm = load_device_model(device::Format{}, kCoefMinimaxHex, kCosHex);
+  const BuildConfig& bc = build_config("default");  // render's --config default
+  const device::DeviceModel dm = load_device_model(bc.f, bc.coef_hex(), bc.cos_hex());
   const ColourErrorStats st = srgb_code_error(compose(s, raster, device_unit_specular(dm)).image,
                                               compose(s, raster, reference_unit_specular(s)).image);
   for (int ch = 0; ch < 3; ++ch) {
