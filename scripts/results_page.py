@@ -184,8 +184,8 @@ def section_colour(sim, flip, rel_sim, rel_flip):
     out = ["### Colour", "",
            "Every scene through the RGB core (`Channels = 3`, the default build) with each span's specular "
            "colour, composed on the host, against the composition around the material's BRDF in double "
-           "([colour.md](colour.md)); 8-bit sRGB codes over the covered pixels; the device alone: against the "
-           "composition around `C cos^n(psi)` of its registers, of full scale "
+           "([colour.md](colour.md)); 8-bit sRGB codes over the covered pixels; last column: against "
+           "`C cos^n(psi)` of its registers, linear "
            f"([`{os.path.basename(rel_sim)}`]({os.path.relpath(rel_sim, 'docs')}), the run above); mean FLIP over "
            "the whole image at 67 pixels per degree, black background included: " + run_line(p, rel_flip)]
     rows = []
@@ -199,7 +199,7 @@ def section_colour(sim, flip, rel_sim, rel_flip):
                      f"{f['mean_flip']:.5f}", f"{max(c['device_linear_max']):.2e}"])
     out += table(["scene", "spans", "pixels", "mismatches", "spans with C clamped", "worst R/G/B (codes)",
                   "mean R/G/B (codes)",
-                  "mean FLIP", "the device alone: worst linear difference"], rows)
+                  "mean FLIP", "device alone"], rows)
     return out
 
 
