@@ -1,7 +1,8 @@
 #!/usr/bin/python3
 # SPDX-License-Identifier: Apache-2.0
 """The size cap of the design documents: every page of docs/ (docs/*.md) but the generated
-docs/results.md, and every README.md of the tree, at most PAGE_CAP bytes; the pages of docs/
+docs/results.md, and every README.md of the tree, at most PAGE_CAP bytes, the top-level README.md
+(a newcomer's first page) at most README_CAP; the pages of docs/
 together, docs/results.md included, at most TOTAL_CAP bytes. A design page states what, why, the
 contract, the error analysis and the decision; history is in git and measured figures are on
 docs/results.md, so a page over the cap holds something that belongs elsewhere.
@@ -14,6 +15,7 @@ import sys
 import tempfile
 
 PAGE_CAP = 30 * 1024    # bytes, a page of docs/ or a README.md
+README_CAP = 8 * 1024   # bytes, the top-level README.md: results and design belong in docs/
 TOTAL_CAP = 150 * 1024  # bytes, docs/*.md together
 GENERATED = "docs/results.md"
 
@@ -41,6 +43,9 @@ def check(root):
         if p != GENERATED and size[p] > PAGE_CAP:
             errors.append(f"{p}: {size[p]:,} bytes, over the cap of {PAGE_CAP:,} bytes (30 KB) a page; "
                           f"move history to git and measured figures to docs/results.md")
+    if size.get("README.md", 0) > README_CAP:
+        errors.append(f"README.md: {size['README.md']:,} bytes, over the cap of {README_CAP:,} bytes (8 KB) of the "
+                      f"top-level README; move results to docs/results.md and design to docs/")
     total = sum(size[p] for p in pages)
     if total > TOTAL_CAP:
         errors.append(f"docs/*.md: {total:,} bytes together ({len(pages)} pages, {GENERATED} included), over the "
@@ -63,11 +68,13 @@ def self_test():
     big = {os.path.join("docs", f"p{i}.md"): 30000 for i in range(6)}
     cases = [
         # (what, files and sizes, text every failure message must contain; None: must pass)
-        ("a tree within the caps", {page: PAGE_CAP, readme: 100, GENERATED: 40000,
+        ("a tree within the caps", {page: PAGE_CAP, readme: README_CAP, GENERATED: 40000,
                                     os.path.join("build", "x", "README.md"): PAGE_CAP + 1,
                                     os.path.join("build", "CMakeCache.txt"): 1}, None),
         ("a docs page over the cap", {page: PAGE_CAP + 1, readme: 100}, f"{page}: {PAGE_CAP + 1:,} bytes"),
         ("a folder README over the cap", {page: 10, sim_readme: 40000}, f"{sim_readme}: 40,000 bytes"),
+        ("the top-level README over its cap", {page: 10, readme: README_CAP + 1},
+         f"README.md: {README_CAP + 1:,} bytes, over the cap of {README_CAP:,}"),
         ("docs/ over the total", big, "docs/*.md: 180,000 bytes together"),
         ("the generated page counts in the total", dict(list(big.items())[:4], **{GENERATED: 40000}),
          "docs/*.md: 160,000 bytes together"),
